@@ -1,0 +1,22 @@
+#pragma once
+// The kinematic state of one ball at one instant.
+#include <string_view>
+
+#include "vec.h"
+
+namespace bsim {
+
+enum class Motion { stationary, sliding, rolling, spinning, falling, pocketed };
+
+/// The name used in trajectory.csv: "stationary", "sliding", ...
+std::string_view to_string(Motion motion);
+
+struct BallState {
+  Vec3 position{0, 0, 0};  ///< m, centre
+  Vec3 velocity{0, 0, 0};  ///< m/s
+  Vec3 spin{0, 0, 0};      ///< rad/s, angular velocity
+  Quat orientation = Quat::Identity();
+  Motion motion = Motion::stationary;
+};
+
+}  // namespace bsim

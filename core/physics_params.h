@@ -1,0 +1,36 @@
+#pragma once
+// Physical constants of a scene, overridable with `param <name> <value>`. SI units.
+#include <optional>
+#include <string_view>
+
+namespace bsim {
+
+struct PhysicsParams {
+  double ball_radius = 0.028575;  ///< m (2 1/4 in pool ball)
+  double ball_mass = 0.170097;    ///< kg (6 oz)
+  double g = 9.81;                ///< m/s^2
+  double mu_slide = 0.2;          ///< ball-cloth sliding friction (pooltool, Marlow)
+  double mu_roll = 0.01;          ///< rolling resistance: a rolling ball decelerates at mu_roll*g
+  double mu_spin = 0.0127;        ///< spin about z decays at 5*mu_spin*g/(2R) rad/s^2 (pooltool)
+  double e_ball = 0.95;           ///< ball-ball restitution (pooltool)
+  double mu_ball = 0.05;          ///< ball-ball friction: spin transfer and throw (pooltool)
+  double e_rail = 0.85;           ///< ball-cushion restitution (pooltool)
+  double mu_rail = 0.2;           ///< ball-cushion friction (pooltool)
+
+  /// Deceleration of a rolling ball, m/s^2.
+  double roll_decel() const { return mu_roll * g; }
+  /// Angular deceleration of spin about the vertical axis, rad/s^2.
+  double spin_decel() const { return 5.0 * mu_spin * g / (2.0 * ball_radius); }
+};
+
+/// What a `param` name does to PhysicsParams; nullopt for an unknown name.
+struct ParamSpec {
+  std::string_view name;
+  std::string_view unit;
+  std::string_view meaning;
+  double min;            ///< smallest physical value (inclusive unless min_exclusive)
+  bool min_exclusive;
+  double max;            ///< largest physical value (inclusive)
+};
+
+}  // namespace bsim

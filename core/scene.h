@@ -1,0 +1,76 @@
+#pragma once
+// The parsed scene: plain values in SI units with every default filled in. Each entity keeps the
+// source location of its tokens so that checks made after simulation can still cite the file.
+#include <string>
+#include <vector>
+
+#include "physics_params.h"
+#include "source_loc.h"
+#include "vec.h"
+
+namespace bsim {
+
+struct Ball {
+  int number = 0;         ///< painted number, 0 (cue ball) to 15
+  Vec3 position{0, 0, 0};  ///< m, centre; z = ball radius on the bed
+  Vec3 velocity{0, 0, 0};  ///< m/s, given to the ball at the cue impact
+  Vec3 spin{0, 0, 0};      ///< rad/s, angular velocity given at the cue impact (`spin` extension)
+  Quat orientation = Quat::Identity();  ///< normalised
+  SourceLoc loc;           ///< the `ball` keyword
+};
+
+/// A cushion's nose line, clockwise seen from above: the playing side is on the right from a to b.
+struct Rail {
+  Vec3 a{0, 0, 0};  ///< m; z is the nose height above the bed
+  Vec3 b{0, 0, 0};
+  SourceLoc loc;
+};
+
+struct Pocket {
+  Vec3 center{0, 0, 0};  ///< m, on the bed plane
+  double radius = 0;     ///< m
+  SourceLoc loc;
+};
+
+struct Cue {
+  int target = 0;           ///< file-order index of the struck ball
+  double heading_deg = 0;   ///< direction the stick pushes, counter-clockwise from +x
+  SourceLoc loc;            ///< the `cue` keyword
+  SourceLoc target_loc;
+  SourceLoc heading_loc;
+};
+
+enum class CameraMode { hover, look, follow };
+
+/// One `event N pre post <mode> ...` line of the camera script.
+struct CameraShot {
+  static constexpr int kLastEvent = 65535;  ///< the seed's magic number for "the last event"
+  int event = 0;              ///< event number, or kLastEvent
+  double pre = 0;             ///< fraction of the span from the previous listed event, [0, 1]
+  double post = 0;            ///< fraction of the span to the next listed event, [0, 1]
+  CameraMode mode = CameraMode::hover;
+  Vec3 location{0, 0, 0};     ///< hover/look: world position; follow: offset in the ball's frame
+  Vec3 target{0, 0, 0};       ///< hover: the point looked at
+  int ball = -1;              ///< look/follow: file-order index of the ball
+  SourceLoc loc;              ///< the `event` keyword
+  SourceLoc event_loc;        ///< the event number token
+  SourceLoc ball_loc;         ///< the ball index token (look/follow)
+};
+
+struct Scene {
+  std::string name = "scene";   ///< file stem, used for the default output directory
+  Cue cue;
+  std::vector<Ball> balls;      ///< file order
+  std::vector<Rail> rails;      ///< file order, or the standard table's six cushions
+  std::vector<Pocket> pockets;  ///< file order, or the standard table's six pockets
+  std::vector<CameraShot> camera;
+  SourceLoc camera_loc;         ///< the `camera` keyword
+  PhysicsParams physics;
+};
+
+/// The standard 9-foot table's cushions and pockets (the spec's numbering).
+std::vector<Rail> standard_rails();
+std::vector<Pocket> standard_pockets();
+constexpr double kStandardNoseHeight = 0.0363;  ///< m above the bed
+
+}  // namespace bsim

@@ -1,0 +1,21 @@
+#include "shot.h"
+
+namespace bsim {
+
+ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options) {
+  ShotResult result;
+  ParseResult parsed = parse_scene(text, name, options);
+  result.diagnostics = std::move(parsed.diagnostics);
+  if (!parsed.scene || has_errors(result.diagnostics)) return result;
+
+  auto shot = std::make_unique<Shot>();
+  shot->scene = std::move(*parsed.scene);
+  shot->timeline = simulate(shot->scene);
+  shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
+  if (!shot->camera || has_errors(result.diagnostics)) return result;
+  shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
+  result.shot = std::move(shot);
+  return result;
+}
+
+}  // namespace bsim

@@ -1,0 +1,33 @@
+#pragma once
+// Everything downstream of one scene text, built together so the pieces' references stay valid:
+// scene -> timeline -> camera script -> cue script. Both front ends start here.
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "camera_script.h"
+#include "cue_script.h"
+#include "diagnostics.h"
+#include "scene.h"
+#include "scene_parse.h"
+#include "timeline.h"
+
+namespace bsim {
+
+struct Shot {
+  Scene scene;
+  Timeline timeline;
+  std::optional<CameraScript> camera;  ///< always set in a loaded shot
+  std::optional<CueScript> cue;        ///< always set in a loaded shot
+};
+
+struct ShotResult {
+  std::unique_ptr<Shot> shot;            ///< null when there is an error
+  std::vector<Diagnostic> diagnostics;   ///< parse and post-simulation errors and warnings
+};
+
+/// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics.
+ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options = {});
+
+}  // namespace bsim

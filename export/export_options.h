@@ -1,0 +1,33 @@
+#pragma once
+// The command line of billiards-export (see README and --help).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bsim {
+
+enum class Quality { draft, final };
+
+struct ExportOptions {
+  std::optional<std::string> scene_path;  ///< none: the built-in break
+  std::optional<std::string> out_dir;     ///< none: out/<scene name>
+  bool events_only = false;
+  bool no_render = false;
+  int fps = 30;
+  int width = 1280;
+  int height = 720;
+  Quality quality = Quality::final;
+  int jobs = 0;                 ///< 0: one per core
+  double audio_lead = 0.0;      ///< s; set to the documented default by the parser
+  std::string music_path;
+  bool strict = false;
+};
+
+enum class CommandLineOutcome { run, exit_success, exit_usage };
+
+/// Parses argv[1..]. On exit_success (--help, --version) `message` is what to print on stdout;
+/// on exit_usage `message` is the one-line reason for stderr (exit 2).
+CommandLineOutcome parse_export_options(const std::vector<std::string>& args, ExportOptions& options,
+                                        std::string& message);
+
+}  // namespace bsim
