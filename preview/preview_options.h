@@ -1,0 +1,44 @@
+#pragma once
+// The command line of billiards-preview (see README and --help).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bsim {
+
+/// What the user asked to see: a time in seconds or the instant of event N.
+struct TimeSpec {
+  double seconds = 0;
+  int event = -1;  ///< >= 0 when given as `event:N`
+};
+
+struct PreviewOverlays {
+  bool paths = false;   ///< every ball's path
+  bool events = false;  ///< event markers
+  bool camera = false;  ///< the camera's own path seen from above
+};
+
+struct PreviewOptions {
+  std::optional<std::string> scene_path;  ///< none: the built-in break
+  std::optional<std::string> output;      ///< -o FILE (.png for --at/--timeline, .mp4 for --movie)
+  std::optional<TimeSpec> at;             ///< --at SECONDS | event:N
+  bool timeline = false;                  ///< --timeline
+  std::optional<std::string> movie;       ///< --movie FILE.mp4 (the animatic)
+  int width = 1280;
+  int height = 720;
+  bool size_given = false;
+  int fps = 30;
+  PreviewOverlays overlays;
+  bool strict = false;
+  double quit_after = 0;  ///< s; > 0 closes the interactive window by itself (smoke tests)
+  std::optional<std::string> screenshot;  ///< interactive: write the last frame here on quit
+};
+
+enum class PreviewCommandLineOutcome { run, exit_success, exit_usage };
+
+/// Parses argv[1..]. exit_success: print `message` on stdout (help, version);
+/// exit_usage: `message` is the one-line reason for stderr (exit 2).
+PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& args, PreviewOptions& options,
+                                                std::string& message);
+
+}  // namespace bsim
