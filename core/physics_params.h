@@ -1,7 +1,9 @@
 #pragma once
 // Physical constants of a scene, overridable with `param <name> <value>`. SI units.
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace bsim {
 
@@ -32,5 +34,16 @@ struct ParamSpec {
   bool min_exclusive;
   double max;            ///< largest physical value (inclusive)
 };
+
+/// Every `param` name, in the order the documentation lists them.
+const std::vector<ParamSpec>& param_specs();
+/// The spec of a `param` name; nullopt for an unknown name.
+std::optional<ParamSpec> find_param(std::string_view name);
+/// Whether `value` lies in the spec's physical range.
+bool param_in_range(const ParamSpec& spec, double value);
+/// The physical range in words, e.g. "greater than 0" or "from 0 to 1".
+std::string describe_range(const ParamSpec& spec);
+/// Sets the named constant (`table_speed` sets mu_roll = 1 / value). Unknown names are ignored.
+void apply_param(PhysicsParams& params, std::string_view name, double value);
 
 }  // namespace bsim

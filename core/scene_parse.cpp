@@ -1,10 +1,439 @@
-// PLACEHOLDER until the parser lands.
+// The seed's scene grammar plus the extensions, read statement by statement in any order. Each
+// error names the token it is about, says what was expected and what was found, and the parser
+// skips to the next statement so one run reports every independent mistake.
 #include "scene_parse.h"
+
+#include <algorithm>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include "scene_lexer.h"
+#include "scene_validate.h"
+
 namespace bsim {
-ParseResult parse_scene(std::string_view, std::string_view name, const ParseOptions&) {
-  ParseResult r;
-  r.diagnostics.push_back({Severity::error, {1, 1}, "the scene parser is not built yet"});
-  (void)name;
-  return r;
+
+namespace {
+
+// Beyond this many errors the rest is most likely noise (a binary file, a wrong file).
+constexpr std::size_t kMaxErrors = 30;
+
+constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
+constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param"};
+
+enum class NumberStatus { ok, not_number, not_finite };
+
+NumberStatus parse_double(std::string_view text, double& out) {
+  std::string_view digits = text;
+  if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-' && digits[1] != '+') digits.remove_prefix(1);
+  const char* first = digits.data();
+  const char* last = first + digits.size();
+  auto [end, ec] = std::from_chars(first, last, out, std::chars_format::general);
+  if (end != last || (ec != std::errc() && ec != std::errc::result_out_of_range)) return NumberStatus::not_number;
+  if (ec == std::errc::result_out_of_range) {
+    // Either an overflow (not finite) or an underflow, which is just a very small number.
+    out = std::strtod(std::string(digits).c_str(), nullptr);
+  }
+  return std::isfinite(out) ? NumberStatus::ok : NumberStatus::not_finite;
 }
+
+/// Decimal integers only: "3", "-1", "+2". Values beyond long long saturate (and fail range checks).
+bool parse_integer(std::string_view text, long long& out) {
+  std::string_view digits = text;
+  if (digits.size() > 1 && digits[0] == '+') digits.remove_prefix(1);
+  std::size_t start = digits.size() > 1 && digits[0] == '-' ? 1 : 0;
+  if (start == digits.size()) return false;
+  for (std::size_t i = start; i < digits.size(); ++i)
+    if (digits[i] < '0' || digits[i] > '9') return false;
+  auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), out);
+  (void)end;
+  if (ec == std::errc::result_out_of_range) out = start ? LLONG_MIN : LLONG_MAX;
+  return true;
+}
+
+std::string keyword_list(bool strict) {
+  std::string out;
+  auto add = [&](std::string_view k) { out.append(out.empty() ? "" : ", ").append(k); };
+  for (auto k : kSeedKeywords) add(k);
+  if (!strict)
+    for (auto k : kExtensionKeywords) add(k);
+  return out;
+}
+
+std::string param_names() {
+  std::string out;
+  for (const ParamSpec& spec : param_specs()) out.append(out.empty() ? "" : ", ").append(spec.name);
+  return out;
+}
+
+/// "the ball's {} position" with {} -> "x".
+std::string component(std::string_view pattern, std::string_view axis) {
+  const std::size_t at = pattern.find("{}");
+  if (at == std::string_view::npos) return std::string(pattern);
+  return std::string(pattern.substr(0, at)).append(axis).append(pattern.substr(at + 2));
+}
+
+/// Thrown inside one statement to abandon it; caught by the statement loop, never escapes parse_scene.
+struct StatementFailed {};
+
+class Parser {
+ public:
+  Parser(std::string_view text, const ParseOptions& options, std::vector<Diagnostic>& diagnostics)
+      : lexed_(lex_scene(text)), options_(options), diagnostics_(diagnostics) {}
+
+  void run() {
+    map_.end = lexed_.end;
+    if (options_.strict)
+      for (const SourceLoc& loc : lexed_.comments)
+        error(loc, "'#' comments are an extension that --strict rejects");
+    while (pos_ < lexed_.tokens.size() && !too_many_errors_) {
+      try {
+        statement();
+      } catch (const StatementFailed&) {
+        skip_to_statement();
+      }
+    }
+  }
+
+  Scene& scene() { return scene_; }
+  SceneSourceMap& source_map() { return map_; }
+  bool empty() const { return lexed_.tokens.empty(); }
+  bool camera_seen() const { return camera_seen_; }
+  const std::vector<std::pair<std::string_view, double>>& params() const { return params_; }
+
+ private:
+  // ---- diagnostics
+  void error(SourceLoc loc, std::string message) {
+    if (too_many_errors_) return;
+    if (++error_count_ > kMaxErrors) {
+      diagnostics_.push_back({Severity::error, loc, "too many errors; stopping here"});
+      too_many_errors_ = true;
+      return;
+    }
+    diagnostics_.push_back({Severity::error, loc, std::move(message)});
+  }
+  [[noreturn]] void fail(SourceLoc loc, std::string message) {
+    error(loc, std::move(message));
+    throw StatementFailed{};
+  }
+
+  // ---- tokens
+  bool at_end() const { return pos_ >= lexed_.tokens.size(); }
+  const Token& peek() const { return lexed_.tokens[pos_]; }
+
+  /// The next token, or a located "found end of file" error for `expected`.
+  const Token& take(const std::string& expected) {
+    if (at_end()) fail(lexed_.end, "expected " + expected + ", found end of file");
+    return lexed_.tokens[pos_++];
+  }
+
+  double number(const std::string& what, SourceLoc* where = nullptr) {
+    const Token& t = take("a number for " + what);
+    if (where) *where = t.loc;
+    double value = 0;
+    switch (parse_double(t.text, value)) {
+      case NumberStatus::ok: return value;
+      case NumberStatus::not_finite:
+        fail(t.loc, "expected a finite number for " + what + ", found " + quote_token(t.text) + " (not finite)");
+      case NumberStatus::not_number: break;
+    }
+    fail(t.loc, "expected a number for " + what + ", found " + quote_token(t.text));
+  }
+
+  long long integer(const std::string& what, SourceLoc* where = nullptr) {
+    const Token& t = take("an integer for " + what);
+    if (where) *where = t.loc;
+    long long value = 0;
+    if (!parse_integer(t.text, value)) fail(t.loc, "expected an integer for " + what + ", found " + quote_token(t.text));
+    return value;
+  }
+
+  /// A file-order ball index (range checked once every ball is known).
+  int ball_index(const std::string& what, SourceLoc& where) {
+    const long long value = integer(what, &where);
+    if (value < 0) fail(where, "expected a ball index of 0 or more for " + what + ", found " + quote_token(lexed_.tokens[pos_ - 1].text));
+    return static_cast<int>(std::min<long long>(value, INT_MAX));
+  }
+
+  Vec3 vector(std::string_view pattern, SourceLoc* first = nullptr, SourceLoc* z_loc = nullptr) {
+    Vec3 v;
+    v.x() = number(component(pattern, "x"), first);
+    v.y() = number(component(pattern, "y"));
+    v.z() = number(component(pattern, "z"), z_loc);
+    return v;
+  }
+
+  /// Skips to the next token that can start a statement here, so one mistake gives one error.
+  void skip_to_statement() {
+    while (!at_end()) {
+      const std::string_view t = peek().text;
+      if (in_camera_ && (t == "event" || t == "endcamera")) return;
+      if (is_top_keyword(t) || t == "endcamera") return;
+      ++pos_;
+    }
+  }
+
+  static bool is_top_keyword(std::string_view t) {
+    return std::find(std::begin(kSeedKeywords), std::end(kSeedKeywords), t) != std::end(kSeedKeywords) ||
+           std::find(std::begin(kExtensionKeywords), std::end(kExtensionKeywords), t) != std::end(kExtensionKeywords);
+  }
+
+  // ---- statements
+  void statement() {
+    if (in_camera_) return camera_entry();
+    const Token& t = lexed_.tokens[pos_++];
+    const std::string_view k = t.text;
+    if (options_.strict && (k == "pocket" || k == "spin" || k == "param"))
+      fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
+    if (k == "cue") return cue(t);
+    if (k == "ball") return ball(t);
+    if (k == "rail") return rail(t);
+    if (k == "camera") return camera(t);
+    if (k == "pocket") return pocket(t);
+    if (k == "spin") return spin(t);
+    if (k == "param") return param(t);
+    if (k == "endcamera") fail(t.loc, "found 'endcamera' without a 'camera' before it");
+    if (k == "event" || k == "hover" || k == "look" || k == "follow")
+      fail(t.loc, "found '" + std::string(k) + "' outside a camera description; expected one of " +
+                      keyword_list(options_.strict) + " (camera lines go between 'camera' and 'endcamera')");
+    double ignored = 0;
+    if (parse_double(k, ignored) != NumberStatus::not_number)
+      fail(t.loc, "expected a keyword (" + keyword_list(options_.strict) + "), found the number " + quote_token(k) +
+                      " (too many values on the line before?)");
+    fail(t.loc, "unknown keyword " + quote_token(k) + "; expected one of " + keyword_list(options_.strict));
+  }
+
+  void cue(const Token& keyword) {
+    Cue c;
+    c.loc = keyword.loc;
+    c.target = ball_index("the cue's target ball", c.target_loc);
+    c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
+    if (map_.has_cue) fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
+    scene_.cue = c;
+    map_.has_cue = true;
+  }
+
+  void ball(const Token& keyword) {
+    Ball b;
+    SceneSourceMap::BallTokens tokens;
+    b.loc = keyword.loc;
+    const long long painted = integer("the ball number", &tokens.number);
+    const std::string found = quote_token(lexed_.tokens[pos_ - 1].text);
+    if (painted < 0 || painted > 15) fail(tokens.number, "expected a ball number from 0 to 15, found " + found);
+    b.number = static_cast<int>(painted);
+    if (auto seen = ball_lines_.find(b.number); seen != ball_lines_.end())
+      fail(tokens.number, "ball number " + std::to_string(b.number) + " is already used by the ball on line " +
+                              std::to_string(seen->second));
+    b.position = vector("the ball's {} position", &tokens.position_x, &tokens.position_z);
+    b.velocity = vector("the ball's {} velocity");
+    SourceLoc w_loc;
+    double q[4];
+    q[0] = number("the ball's orientation w", &w_loc);
+    q[1] = number("the ball's orientation x");
+    q[2] = number("the ball's orientation y");
+    q[3] = number("the ball's orientation z");
+    // Scale first so that huge or tiny components neither overflow nor vanish when squared.
+    double largest = 0;
+    for (double c : q) largest = std::max(largest, std::abs(c));
+    if (largest == 0)
+      fail(w_loc, "expected a non-zero orientation quaternion (w x y z, e.g. 1 0 0 0), found 0 0 0 0");
+    b.orientation = Quat(q[0] / largest, q[1] / largest, q[2] / largest, q[3] / largest).normalized();
+    ball_lines_[b.number] = keyword.loc.line;
+    scene_.balls.push_back(b);
+    map_.balls.push_back(tokens);
+  }
+
+  void rail(const Token& keyword) {
+    Rail r;
+    SceneSourceMap::RailTokens tokens;
+    r.loc = keyword.loc;
+    r.a = vector("the rail's first end {}", nullptr, &tokens.a_z);
+    r.b = vector("the rail's second end {}", nullptr, &tokens.b_z);
+    scene_.rails.push_back(r);
+    map_.rails.push_back(tokens);
+  }
+
+  void pocket(const Token& keyword) {
+    Pocket p;
+    p.loc = keyword.loc;
+    SourceLoc z_loc, radius_loc;
+    p.center = vector("the pocket's {} centre", nullptr, &z_loc);
+    p.radius = number("the pocket's radius", &radius_loc);
+    if (std::abs(p.center.z()) > kPlacementTolerance)
+      fail(z_loc, "expected the pocket's centre on the bed (z = 0), found z = " + quote_token(lexed_.tokens[pos_ - 2].text));
+    if (p.radius <= 0) fail(radius_loc, "expected a pocket radius greater than 0, found " + quote_token(lexed_.tokens[pos_ - 1].text));
+    p.center.z() = 0;
+    scene_.pockets.push_back(p);
+  }
+
+  void spin(const Token& keyword) {
+    SceneSourceMap::SpinLine line;
+    line.loc = keyword.loc;
+    line.ball = ball_index("the spinning ball", line.ball_loc);
+    const Vec3 w = vector("the ball's {} spin in rad/s");
+    for (const auto& other : map_.spins)
+      if (other.ball == line.ball)
+        fail(keyword.loc, "ball index " + std::to_string(line.ball) + " already has a spin on line " + std::to_string(other.loc.line));
+    map_.spins.push_back(line);
+    spins_.push_back(w);
+  }
+
+  void param(const Token& keyword) {
+    const Token& name = take("a parameter name (" + param_names() + ")");
+    const std::optional<ParamSpec> spec = find_param(name.text);
+    if (!spec) fail(name.loc, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
+    SourceLoc value_loc;
+    const double value = number("parameter '" + std::string(spec->name) + "'", &value_loc);
+    if (!param_in_range(*spec, value))
+      fail(value_loc, "expected a value " + describe_range(*spec) + " for parameter '" + std::string(spec->name) +
+                          "', found " + quote_token(lexed_.tokens[pos_ - 1].text));
+    // table_speed is another way to write mu_roll, so the two count as one setting.
+    const std::string_view key = spec->name == "table_speed" ? "mu_roll" : spec->name;
+    if (auto seen = param_lines_.find(key); seen != param_lines_.end())
+      diagnostics_.push_back({Severity::warning, keyword.loc,
+                              "parameter '" + std::string(spec->name) + "' sets " + std::string(key) +
+                                  " again (first on line " + std::to_string(seen->second) + "); the last value is used"});
+    param_lines_[key] = keyword.loc.line;
+    params_.emplace_back(spec->name, value);
+  }
+
+  void camera(const Token& keyword) {
+    if (camera_seen_)
+      fail(keyword.loc, "a scene has one camera description, and there is already one on line " +
+                            std::to_string(scene_.camera_loc.line));
+    camera_seen_ = true;
+    scene_.camera_loc = keyword.loc;
+    in_camera_ = true;
+  }
+
+  /// Inside camera ... endcamera: an event line or the end of the description.
+  void camera_entry() {
+    if (at_end()) return;
+    const Token& t = lexed_.tokens[pos_++];
+    if (t.text == "endcamera") {
+      in_camera_ = false;
+      return;
+    }
+    if (t.text == "event") return event(t);
+    if (is_top_keyword(t.text)) {
+      // Most likely a forgotten endcamera: say so once and read the rest of the file normally.
+      error(t.loc, "expected 'event' or 'endcamera', found " + quote_token(t.text) + " (the camera description on line " +
+                       std::to_string(scene_.camera_loc.line) + " has no 'endcamera')");
+      in_camera_ = false;
+      --pos_;
+      return;
+    }
+    fail(t.loc, "expected 'event' or 'endcamera' in the camera description, found " + quote_token(t.text));
+  }
+
+  void event(const Token& keyword) {
+    CameraShot s;
+    s.loc = keyword.loc;
+    const long long n = integer("the event number", &s.event_loc);
+    if (n < 0 || n > CameraShot::kLastEvent)
+      fail(s.event_loc, "expected an event number from 0 to 65535 (65535 is the last event), found " +
+                            quote_token(lexed_.tokens[pos_ - 1].text));
+    s.event = static_cast<int>(n);
+    s.pre = fraction("the pre-event interpolation time");
+    s.post = fraction("the post-event interpolation time");
+    const Token& mode = take("a camera mode (hover, look or follow)");
+    if (mode.text == "hover") {
+      s.mode = CameraMode::hover;
+      s.location = vector("the hover camera's {} location");
+      s.target = vector("the hover camera's {} look-at point");
+      if ((s.location - s.target).norm() <= kPlacementTolerance)
+        fail(mode.loc, "expected a hover camera that looks at a point away from itself, found location and look-at point equal");
+    } else if (mode.text == "look") {
+      s.mode = CameraMode::look;
+      s.location = vector("the look camera's {} location");
+      s.ball = ball_index("the ball the camera looks at", s.ball_loc);
+    } else if (mode.text == "follow") {
+      s.mode = CameraMode::follow;
+      s.ball = ball_index("the ball the camera follows", s.ball_loc);
+      s.location = vector("the follow camera's {} offset");
+      if (s.location.norm() <= kPlacementTolerance)
+        fail(mode.loc, "expected a follow camera offset away from the ball, found 0 0 0");
+    } else {
+      fail(mode.loc, "expected a camera mode (hover, look or follow), found " + quote_token(mode.text));
+    }
+    scene_.camera.push_back(s);
+  }
+
+  double fraction(const std::string& what) {
+    SourceLoc loc;
+    const double v = number(what, &loc);
+    if (v < 0 || v > 1)
+      fail(loc, "expected " + what + " as a fraction from 0 to 1, found " + quote_token(lexed_.tokens[pos_ - 1].text));
+    return v;
+  }
+
+ public:
+  /// Fills what the statements could not: spins, the standard table, the camera's end.
+  void finish() {
+    if (in_camera_ && !too_many_errors_)
+      error(scene_.camera_loc, "the camera description has no 'endcamera'; expected 'endcamera', found end of file");
+    for (std::size_t i = 0; i < map_.spins.size(); ++i) {
+      const auto index = static_cast<std::size_t>(map_.spins[i].ball);
+      if (index < scene_.balls.size()) scene_.balls[index].spin = spins_[i];
+    }
+    for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
+    if (scene_.rails.empty()) scene_.rails = standard_rails();
+    if (scene_.pockets.empty()) scene_.pockets = standard_pockets();
+  }
+
+ private:
+  LexedText lexed_;
+  const ParseOptions& options_;
+  std::vector<Diagnostic>& diagnostics_;
+  std::size_t pos_ = 0;
+  bool in_camera_ = false;
+  bool camera_seen_ = false;
+  bool too_many_errors_ = false;
+  std::size_t error_count_ = 0;
+  Scene scene_;
+  SceneSourceMap map_;
+  std::vector<Vec3> spins_;  ///< parallel to map_.spins
+  std::map<int, int> ball_lines_;
+  std::map<std::string_view, int> param_lines_;
+  std::vector<std::pair<std::string_view, double>> params_;
+};
+
+}  // namespace
+
+ParseResult parse_scene(std::string_view text, std::string_view name, const ParseOptions& options) {
+  ParseResult result;
+  Parser parser(text, options, result.diagnostics);
+  parser.run();
+  parser.finish();
+  Scene& scene = parser.scene();
+  scene.name = std::string(name);
+  const SceneSourceMap& map = parser.source_map();
+
+  if (parser.empty()) {
+    result.diagnostics.push_back(
+        {Severity::error, map.end, "the scene is empty; expected a cue description and at least one ball"});
+  } else if (!has_errors(result.diagnostics)) {
+    if (!map.has_cue)
+      result.diagnostics.push_back({Severity::error, map.end,
+                                    "expected a cue description ('cue <ball index> <heading>'), found none"});
+    if (scene.balls.empty())
+      result.diagnostics.push_back({Severity::error, map.end,
+                                    "expected at least one ball description ('ball <number> <position> <velocity> "
+                                    "<orientation>'), found none"});
+    if (options.strict && !parser.camera_seen())
+      result.diagnostics.push_back({Severity::error, map.end,
+                                    "expected a camera description ('camera' ... 'endcamera'), found none"});
+  }
+  if (!has_errors(result.diagnostics)) validate_scene(scene, map, result.diagnostics);
+
+  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.column < b.loc.column;
+  });
+  if (!has_errors(result.diagnostics)) result.scene = std::move(scene);
+  return result;
+}
+
 }  // namespace bsim

@@ -1,0 +1,72 @@
+#include <cmath>
+#include <limits>
+
+#include "physics_params.h"
+
+namespace bsim {
+
+namespace {
+
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+
+// The friction coefficients that bring a ball to rest must be positive, or a shot never ends.
+const std::vector<ParamSpec> kSpecs = {
+    {"ball_radius", "m", "radius of every ball", 0, true, kNoLimit},
+    {"ball_mass", "kg", "mass of every ball", 0, true, kNoLimit},
+    {"g", "m/s^2", "gravitational acceleration", 0, true, kNoLimit},
+    {"mu_slide", "", "ball-cloth sliding friction coefficient", 0, true, kNoLimit},
+    {"mu_roll", "", "rolling resistance: a rolling ball decelerates at mu_roll*g", 0, true, kNoLimit},
+    {"mu_spin", "", "spin about the vertical decays at 5*mu_spin*g/(2*ball_radius) rad/s^2", 0, true, kNoLimit},
+    {"e_ball", "", "ball-ball coefficient of restitution", 0, false, 1},
+    {"mu_ball", "", "ball-ball friction coefficient (spin transfer and throw)", 0, false, kNoLimit},
+    {"e_rail", "", "ball-cushion coefficient of restitution", 0, false, 1},
+    {"mu_rail", "", "ball-cushion friction coefficient", 0, false, kNoLimit},
+    {"table_speed", "", "the seed's table speed: sets mu_roll to 1/table_speed", 0, true, kNoLimit},
+};
+
+std::string number_text(double v) {
+  std::string s = std::to_string(v);  // fixed, six decimals; trim the zeros for messages
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+const std::vector<ParamSpec>& param_specs() { return kSpecs; }
+
+std::optional<ParamSpec> find_param(std::string_view name) {
+  for (const ParamSpec& spec : kSpecs)
+    if (spec.name == name) return spec;
+  return std::nullopt;
+}
+
+bool param_in_range(const ParamSpec& spec, double value) {
+  if (!std::isfinite(value)) return false;
+  if (spec.min_exclusive ? value <= spec.min : value < spec.min) return false;
+  return value <= spec.max;
+}
+
+std::string describe_range(const ParamSpec& spec) {
+  if (std::isinf(spec.max))
+    return (spec.min_exclusive ? "greater than " : "at least ") + number_text(spec.min);
+  return (spec.min_exclusive ? "greater than " + number_text(spec.min) + " and at most "
+                             : "from " + number_text(spec.min) + " to ") +
+         number_text(spec.max);
+}
+
+void apply_param(PhysicsParams& p, std::string_view name, double value) {
+  if (name == "ball_radius") p.ball_radius = value;
+  else if (name == "ball_mass") p.ball_mass = value;
+  else if (name == "g") p.g = value;
+  else if (name == "mu_slide") p.mu_slide = value;
+  else if (name == "mu_roll") p.mu_roll = value;
+  else if (name == "mu_spin") p.mu_spin = value;
+  else if (name == "e_ball") p.e_ball = value;
+  else if (name == "mu_ball") p.mu_ball = value;
+  else if (name == "e_rail") p.e_rail = value;
+  else if (name == "mu_rail") p.mu_rail = value;
+  else if (name == "table_speed") p.mu_roll = 1.0 / value;
+}
+
+}  // namespace bsim

@@ -1,0 +1,223 @@
+#include "scene_validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace bsim {
+
+namespace {
+
+/// Numbers in messages: short, as a person would type them.
+std::string fmt(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v == 0.0 ? 0.0 : v);
+  return buffer;
+}
+
+std::string plural(std::size_t n, std::string_view word) {
+  return std::to_string(n) + " " + std::string(word) + (n == 1 ? "" : "s");
+}
+
+std::string line_of(SourceLoc loc) { return loc.known() ? " (line " + std::to_string(loc.line) + ")" : ""; }
+
+std::string rail_name(const Rail& rail, std::size_t index) {
+  return "rail " + std::to_string(index) + (rail.loc.known() ? line_of(rail.loc) : " of the standard table");
+}
+
+/// z of the cross product of two directions in the table plane; > 0 when `v` is left of `u`.
+double cross2(const Vec3& u, const Vec3& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+/// Distance in the table plane from `p` to the segment a-b (end points included).
+double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Eigen::Vector2d pa(p.x() - a.x(), p.y() - a.y()), ab(b.x() - a.x(), b.y() - a.y());
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0 ? std::clamp(pa.dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (pa - t * ab).norm();
+}
+
+class Validator {
+ public:
+  Validator(const Scene& scene, const SceneSourceMap& map, std::vector<Diagnostic>& diagnostics)
+      : scene_(scene), map_(map), diagnostics_(diagnostics), radius_(scene.physics.ball_radius) {}
+
+  void run() {
+    references();
+    const std::size_t before = diagnostics_.size();
+    for (std::size_t i = 0; i < scene_.rails.size(); ++i) rail(i);
+    // With a rail the wrong way round, every ball near it would also look outside; one error is enough.
+    rails_ok_ = diagnostics_.size() == before;
+    for (std::size_t i = 0; i < scene_.balls.size(); ++i) ball_placement(i);
+    cue_heading();
+  }
+
+ private:
+  void error(SourceLoc loc, std::string message) { diagnostics_.push_back({Severity::error, loc, std::move(message)}); }
+  void warning(SourceLoc loc, std::string message) {
+    diagnostics_.push_back({Severity::warning, loc, std::move(message)});
+  }
+
+  bool ball_exists(int index) const { return index >= 0 && static_cast<std::size_t>(index) < scene_.balls.size(); }
+
+  std::string index_range() const {
+    return "from 0 to " + std::to_string(scene_.balls.size() - 1) + " (the scene has " +
+           plural(scene_.balls.size(), "ball") + ", numbered by their order in the file)";
+  }
+
+  /// Every reference to a ball by its file-order index.
+  void references() {
+    if (!ball_exists(scene_.cue.target))
+      error(scene_.cue.target_loc, "expected a cue target ball index " + index_range() + ", found " +
+                                       std::to_string(scene_.cue.target));
+    for (const auto& spin : map_.spins)
+      if (!ball_exists(spin.ball))
+        error(spin.ball_loc, "expected a ball index for 'spin' " + index_range() + ", found " + std::to_string(spin.ball));
+    for (const CameraShot& shot : scene_.camera)
+      if (shot.mode != CameraMode::hover && !ball_exists(shot.ball))
+        error(shot.ball_loc, std::string("expected the index of the ball the camera ") +
+                                 (shot.mode == CameraMode::look ? "looks at " : "follows ") + index_range() +
+                                 ", found " + std::to_string(shot.ball));
+  }
+
+  void ball_placement(std::size_t i) {
+    const Ball& ball = scene_.balls[i];
+    const SceneSourceMap::BallTokens& tokens = map_.balls[i];
+    const Vec3& p = ball.position;
+    if (std::abs(p.z() - radius_) > kPlacementTolerance) {
+      error(tokens.position_z, "expected the ball's centre on the bed at z = " + fmt(radius_) +
+                                   " (the ball radius), found z = " + fmt(p.z()));
+      return;  // the other placement checks would only repeat the problem
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const double d = (scene_.balls[j].position - p).norm();
+      if (d < 2 * radius_ - kPlacementTolerance)
+        error(ball.loc, "ball " + std::to_string(ball.number) + " overlaps ball " +
+                            std::to_string(scene_.balls[j].number) + line_of(scene_.balls[j].loc) +
+                            ": expected their centres at least " + fmt(2 * radius_) +
+                            " m apart (two ball radii), found " + fmt(d) + " m");
+    }
+    if (rails_ok_ && !inside_cushions(ball, tokens)) return;
+    for (std::size_t k = 0; k < scene_.pockets.size(); ++k) {
+      const Pocket& pocket = scene_.pockets[k];
+      const Vec3 d = p - pocket.center;
+      if (std::hypot(d.x(), d.y()) < pocket.radius)
+        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over pocket " +
+                                       std::to_string(k) + line_of(pocket.loc) + " and will drop into it");
+    }
+  }
+
+  /// Outside is: beyond the box the cushions span (a radius in from each side; exact for a
+  /// rectangular table), behind the nearest cushion, or cutting into one. The nearest cushion decides
+  /// because, on any table shape, the closest stretch of boundary tells which side a point is on.
+  bool inside_cushions(const Ball& ball, const SceneSourceMap::BallTokens& tokens) {
+    if (scene_.rails.empty()) return true;
+    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x, max_y = -min_x;
+    for (const Rail& r : scene_.rails)
+      for (const Vec3* e : {&r.a, &r.b}) {
+        min_x = std::min(min_x, e->x());
+        max_x = std::max(max_x, e->x());
+        min_y = std::min(min_y, e->y());
+        max_y = std::max(max_y, e->y());
+      }
+    const Vec3& p = ball.position;
+    const double t = kPlacementTolerance;
+    const double lo_x = min_x + radius_, hi_x = max_x - radius_, lo_y = min_y + radius_, hi_y = max_y - radius_;
+    const bool encloses = lo_x < hi_x && lo_y < hi_y;  // a lone cushion or a wall spans no area
+    if (encloses && (p.x() < lo_x - t || p.x() > hi_x + t || p.y() < lo_y - t || p.y() > hi_y + t)) {
+      error(tokens.position_x, "expected the ball inside the cushions (centre x from " + fmt(lo_x) + " to " +
+                                   fmt(hi_x) + ", y from " + fmt(lo_y) + " to " + fmt(hi_y) + "), found x = " +
+                                   fmt(p.x()) + ", y = " + fmt(p.y()));
+      return false;
+    }
+    std::size_t nearest = 0;
+    double nearest_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < scene_.rails.size(); ++k) {
+      const double d = distance_to_segment(p, scene_.rails[k].a, scene_.rails[k].b);
+      if (d < nearest_distance) {
+        nearest_distance = d;
+        nearest = k;
+      }
+    }
+    const Rail& r = scene_.rails[nearest];
+    const Vec3 along = r.b - r.a;
+    const double length2 = along.x() * along.x() + along.y() * along.y();
+    const double s = length2 > 0 ? (along.x() * (p.x() - r.a.x()) + along.y() * (p.y() - r.a.y())) / length2 : 0;
+    if (s > 0 && s < 1 && cross2(along, p - r.a) > t * std::sqrt(length2)) {
+      error(tokens.position_x, "expected the ball on the playing side of its nearest cushion, " + rail_name(r, nearest) +
+                                   ", found it behind the cushion at x = " + fmt(p.x()) + ", y = " + fmt(p.y()));
+      return false;
+    }
+    if (nearest_distance < radius_ - t) {
+      error(tokens.position_x, "ball " + std::to_string(ball.number) + " cuts into the cushion of " +
+                                   rail_name(r, nearest) + ": expected its centre at least " + fmt(radius_) +
+                                   " m from the nose line, found " + fmt(nearest_distance) + " m");
+      return false;
+    }
+    return true;
+  }
+
+  void rail(std::size_t index) {
+    const Rail& r = scene_.rails[index];
+    if (!r.loc.known()) return;  // the standard table's cushions are right by construction
+    const SceneSourceMap::RailTokens& tokens = map_.rails[index];
+    if (std::abs(r.a.z() - r.b.z()) > kPlacementTolerance)
+      error(tokens.b_z, "expected the rail's second end at the same nose height as its first (z = " + fmt(r.a.z()) +
+                            "), found z = " + fmt(r.b.z()));
+    const Vec3 d = r.b - r.a;
+    if (std::hypot(d.x(), d.y()) <= kPlacementTolerance) {
+      error(r.loc, "expected a rail with two different end points, found both at x = " + fmt(r.a.x()) +
+                       ", y = " + fmt(r.a.y()));
+      return;
+    }
+    // The playing side is on the right of a->b. A rail whose right faces away from every ball (or,
+    // with no balls, from the middle of the cushions) was listed anticlockwise.
+    std::vector<Vec3> probes;
+    for (const Ball& b : scene_.balls) probes.push_back(b.position);
+    if (probes.empty()) {
+      Vec3 sum(0, 0, 0);
+      for (const Rail& other : scene_.rails) sum += other.a + other.b;
+      probes.push_back(sum / (2.0 * static_cast<double>(scene_.rails.size())));
+    }
+    const bool faces_away = std::all_of(probes.begin(), probes.end(), [&](const Vec3& p) {
+      return cross2(d, p - r.a) > kPlacementTolerance * d.norm();
+    });
+    if (faces_away)
+      error(r.loc, "expected the rail's ends in clockwise order seen from above (the playing side is on the right "
+                   "walking from the first end to the second), found its playing side facing away from every ball; "
+                   "swap its two ends");
+  }
+
+  void cue_heading() {
+    if (!ball_exists(scene_.cue.target)) return;
+    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
+    const double vx = target.velocity.x(), vy = target.velocity.y();
+    if (std::hypot(vx, vy) == 0) {
+      warning(scene_.cue.target_loc, "the cue strikes ball index " + std::to_string(scene_.cue.target) +
+                                         ", whose velocity has no part along the table; the stick will not move it");
+      return;
+    }
+    const double along = std::atan2(vy, vx) * 180.0 / std::numbers::pi;
+    double off = std::remainder(scene_.cue.heading_deg - along, 360.0);
+    if (std::abs(off) > kHeadingToleranceDeg)
+      warning(scene_.cue.heading_loc, "the cue's heading " + fmt(scene_.cue.heading_deg) +
+                                          " degrees disagrees with its ball's velocity, which points at " +
+                                          fmt(along) + " degrees (off by " + fmt(std::abs(off)) + " degrees)");
+  }
+
+  const Scene& scene_;
+  const SceneSourceMap& map_;
+  std::vector<Diagnostic>& diagnostics_;
+  double radius_;
+  bool rails_ok_ = true;
+};
+
+}  // namespace
+
+void validate_scene(const Scene& scene, const SceneSourceMap& map, std::vector<Diagnostic>& diagnostics) {
+  Validator(scene, map, diagnostics).run();
+}
+
+}  // namespace bsim
