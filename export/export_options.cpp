@@ -1,12 +1,130 @@
-// PLACEHOLDER until the command line lands.
 #include "export_options.h"
+
+#include "command_line.h"
+
 namespace bsim {
-CommandLineOutcome parse_export_options(const std::vector<std::string>& args, ExportOptions& options, std::string&) {
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--events-only") options.events_only = true;
-    else if (args[i] == "-o" && i + 1 < args.size()) options.out_dir = args[++i];
-    else options.scene_path = args[i];
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: billiards-export [SCENE] [-o DIR] [options]
+
+Simulates SCENE (default: the built-in break) and writes into DIR events.json, trajectory.csv,
+camera.csv, the POV-Ray frames, soundtrack.wav, the rendered frames and movie.mp4.
+
+options:
+  -o, --output DIR       output directory (default: out/<scene name>)
+  --events-only          write only events.json, trajectory.csv and camera.csv
+  --no-render            write the .pov frames and soundtrack.wav, but run neither POV-Ray nor ffmpeg
+  --fps N                frames per second, 1 to 1000 (default: 30)
+  --size WxH             frame size in pixels (default: 1280x720)
+  --quality draft|final  POV-Ray quality: draft is fast, final antialiased (default: final)
+  --jobs N               POV-Ray processes run in parallel, 1 to 1024 (default: one per core)
+  --audio-lead SECONDS   sounds start this long before their event, 0 to 1 (default: 0.005)
+  --music FILE           a music file mixed under the sound track (default: none)
+  --strict               accept only the original scene language: no comments, spin, pocket or param
+  -h, --help             show this help and exit
+  --version              show the version and exit
+
+exit status: 0 done, 1 bad scene or failed run, 2 bad command line
+)";
+
+/// One option; false with `message` set when it is unknown or its value is bad.
+bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
+  const std::string& name = reader.word();
+  auto value = [&]() { return reader.value(message); };
+  auto bad = [&](const std::string& text, const std::string& expected) {
+    message = "bad value '" + text + "' for " + name + ": expected " + expected;
+    return false;
+  };
+  if (name == "--events-only") return reader.no_value(message) && (o.events_only = true);
+  if (name == "--no-render") return reader.no_value(message) && (o.no_render = true);
+  if (name == "--strict") return reader.no_value(message) && (o.strict = true);
+  if (name == "-o" || name == "--output") {
+    const auto v = value();
+    if (!v) return false;
+    if (v->empty()) return bad(*v, "a directory");
+    o.out_dir = *v;
+    return true;
+  }
+  if (name == "--fps") {
+    const auto v = value();
+    if (!v) return false;
+    const auto fps = parse_int_option(*v, 1, kMaxFps);
+    if (!fps) return bad(*v, "a whole number of frames per second from 1 to " + std::to_string(kMaxFps));
+    o.fps = *fps;
+    return true;
+  }
+  if (name == "--size") {
+    const auto v = value();
+    if (!v) return false;
+    if (!parse_size_option(*v, o.width, o.height))
+      return bad(*v, "WIDTHxHEIGHT in pixels, e.g. 1280x720, each from 1 to " + std::to_string(kMaxImageSide));
+    return true;
+  }
+  if (name == "--quality") {
+    const auto v = value();
+    if (!v) return false;
+    if (*v == "draft") o.quality = Quality::draft;
+    else if (*v == "final") o.quality = Quality::final;
+    else return bad(*v, "draft or final");
+    return true;
+  }
+  if (name == "--jobs") {
+    const auto v = value();
+    if (!v) return false;
+    const auto jobs = parse_int_option(*v, 1, kMaxJobs);
+    if (!jobs) return bad(*v, "a number of processes from 1 to " + std::to_string(kMaxJobs));
+    o.jobs = *jobs;
+    return true;
+  }
+  if (name == "--audio-lead") {
+    const auto v = value();
+    if (!v) return false;
+    const auto lead = parse_real_option(*v);
+    if (!lead || *lead < 0 || *lead > kMaxAudioLead) return bad(*v, "seconds from 0 to 1");
+    o.audio_lead = *lead;
+    return true;
+  }
+  if (name == "--music") {
+    const auto v = value();
+    if (!v) return false;
+    if (v->empty()) return bad(*v, "a file");
+    o.music_path = *v;
+    return true;
+  }
+  message = "unknown option '" + name + "' (see --help)";
+  return false;
+}
+
+}  // namespace
+
+CommandLineOutcome parse_export_options(const std::vector<std::string>& args, ExportOptions& options,
+                                        std::string& message) {
+  options = ExportOptions{};
+  options.audio_lead = kDefaultAudioLead;
+  message.clear();
+  ArgReader reader(args);
+  while (reader.next()) {
+    const std::string& word = reader.word();
+    if (!reader.is_option()) {
+      if (options.scene_path) {
+        message = "more than one scene given: '" + *options.scene_path + "' and '" + word + "'";
+        return CommandLineOutcome::exit_usage;
+      }
+      options.scene_path = word;
+      continue;
+    }
+    if (word == "-h" || word == "--help") {
+      message = kUsage;
+      return CommandLineOutcome::exit_success;
+    }
+    if (word == "--version") {
+      message = "billiards-export " BSIM_VERSION "\n";
+      return CommandLineOutcome::exit_success;
+    }
+    if (!apply_option(reader, options, message)) return CommandLineOutcome::exit_usage;
   }
   return CommandLineOutcome::run;
 }
+
 }  // namespace bsim

@@ -8,6 +8,11 @@ namespace bsim {
 
 enum class Quality { draft, final };
 
+/// s: sounds start this much before their event, the time a strike takes to reach a viewer at the table.
+inline constexpr double kDefaultAudioLead = 0.005;
+inline constexpr double kMaxAudioLead = 1.0;  ///< s
+inline constexpr int kMaxJobs = 1024;
+
 struct ExportOptions {
   std::optional<std::string> scene_path;  ///< none: the built-in break
   std::optional<std::string> out_dir;     ///< none: out/<scene name>

@@ -1,14 +1,106 @@
-// PLACEHOLDER until staging lands.
 #include "output_stage.h"
+
+#include <algorithm>
 #include <filesystem>
+#include <system_error>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
 namespace bsim {
-bool OutputStage::open(const std::string& dir, std::string&) {
-  destination_ = staging_ = dir;
-  std::filesystem::create_directories(dir);
-  return open_ = true;
+
+namespace {
+
+/// The closest directory that already exists at or above `dir` ("." for a relative path with none).
+fs::path nearest_existing(const fs::path& dir) {
+  std::error_code ec;
+  for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+    if (fs::is_directory(p, ec)) return p;
+    if (p == p.parent_path()) break;
+  }
+  return ".";
 }
-std::string OutputStage::path(const std::string& relative) const { return staging_ + "/" + relative; }
-bool OutputStage::commit(std::string&) { return true; }
-void OutputStage::discard() {}
-OutputStage::~OutputStage() = default;
+
+std::string reason(const std::error_code& ec) { return ec.message(); }
+
+}  // namespace
+
+bool OutputStage::open(const std::string& dir, std::string& error) {
+  discard();
+  destination_ = dir;
+  std::error_code ec;
+  const fs::path destination(dir);
+  const auto status = fs::status(destination, ec);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    error = "the output path '" + dir + "' exists and is not a directory";
+    return false;
+  }
+  // Inside the destination when it exists, else beside it in the closest existing directory, so that
+  // the final renames stay on one file system and a failed run creates no output directory.
+  std::string tag = ".partial-";
+  tag += std::to_string(::getpid());
+  std::string beside = ".";
+  beside += destination.filename().string();
+  beside += tag;
+  const fs::path staging = fs::is_directory(status) ? destination / tag
+                                                    : nearest_existing(destination.parent_path()) / beside;
+  fs::remove_all(staging, ec);
+  if (!fs::create_directory(staging, ec) || ec) {
+    error = "cannot create the staging directory '" + staging.string() + "': " + reason(ec);
+    return false;
+  }
+  staging_ = staging.string();
+  open_ = true;
+  return true;
+}
+
+std::string OutputStage::path(const std::string& relative) const {
+  const fs::path p = fs::path(staging_) / relative;
+  std::error_code ec;
+  fs::create_directories(p.parent_path(), ec);  // a failure shows when the caller opens the file
+  return p.string();
+}
+
+bool OutputStage::commit(std::string& error) {
+  if (!open_) {
+    error = "nothing staged to commit";
+    return false;
+  }
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (auto it = fs::recursive_directory_iterator(staging_, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(fs::relative(it->path(), staging_, ec));
+  if (ec) {
+    error = "cannot list the staged files in '" + staging_ + "': " + reason(ec);
+    return false;
+  }
+  // Name order for a reproducible sequence; events.json last, since its presence marks a whole run.
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    const bool a_last = a == "events.json", b_last = b == "events.json";
+    return a_last != b_last ? b_last : a < b;
+  });
+  for (const fs::path& relative : files) {
+    const fs::path target = fs::path(destination_) / relative;
+    fs::create_directories(target.parent_path(), ec);
+    if (!ec) fs::rename(fs::path(staging_) / relative, target, ec);  // atomic replacement of an older copy
+    if (ec) {
+      error = "cannot move '" + relative.string() + "' into '" + destination_ + "': " + reason(ec);
+      return false;
+    }
+  }
+  discard();
+  return true;
+}
+
+void OutputStage::discard() {
+  if (!open_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  open_ = false;
+}
+
+OutputStage::~OutputStage() { discard(); }
+
 }  // namespace bsim

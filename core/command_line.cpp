@@ -1,0 +1,72 @@
+#include "command_line.h"
+
+#include <charconv>
+#include <cmath>
+#include <utility>
+
+namespace bsim {
+
+bool ArgReader::next() {
+  inline_value_.reset();
+  if (index_ >= args_.size()) return false;
+  const std::string& arg = args_[index_++];
+  if (!options_ended_ && arg == "--") {
+    options_ended_ = true;
+    return next();
+  }
+  option_ = !options_ended_ && arg.size() > 1 && arg[0] == '-';
+  word_ = arg;
+  if (option_ && arg.starts_with("--")) {
+    if (const auto eq = arg.find('='); eq != std::string::npos) {
+      word_ = arg.substr(0, eq);
+      inline_value_ = arg.substr(eq + 1);
+    }
+  }
+  return true;
+}
+
+std::optional<std::string> ArgReader::value(std::string& error) {
+  if (inline_value_) return std::exchange(inline_value_, std::nullopt);
+  if (index_ >= args_.size()) {
+    error = word_ + " needs a value";
+    return std::nullopt;
+  }
+  return args_[index_++];
+}
+
+bool ArgReader::no_value(std::string& error) const {
+  if (!inline_value_) return true;
+  error = word_ + " takes no value, found '" + *inline_value_ + "'";
+  return false;
+}
+
+std::optional<int> parse_int_option(std::string_view text, int lo, int hi) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || value < lo || value > hi)
+    return std::nullopt;
+  return value;
+}
+
+std::optional<double> parse_real_option(std::string_view text) {
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    return std::nullopt;
+  return value;
+}
+
+bool parse_size_option(std::string_view text, int& width, int& height) {
+  const auto x = text.find('x');
+  if (x == std::string_view::npos) return false;
+  const auto w = parse_int_option(text.substr(0, x), 1, kMaxImageSide);
+  const auto h = parse_int_option(text.substr(x + 1), 1, kMaxImageSide);
+  if (!w || !h || text.substr(0, x).starts_with('+') || text.substr(x + 1).starts_with('+')) return false;
+  width = *w;
+  height = *h;
+  return true;
+}
+
+}  // namespace bsim

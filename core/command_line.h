@@ -1,0 +1,47 @@
+#pragma once
+// Reading command-line arguments and their values, shared by both front ends so that they accept
+// the same forms (`--fps 24`, `--fps=24`, `--` before a scene path starting with '-') and say the
+// same things about bad values.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bsim {
+
+/// Walks argv[1..]: each step is an option (with a value taken on request) or a positional word.
+class ArgReader {
+ public:
+  explicit ArgReader(const std::vector<std::string>& args) : args_(args) {}
+
+  /// Advances to the next argument; false at the end.
+  bool next();
+  /// Whether the current argument is an option ("-x", "--name"), not a positional word.
+  bool is_option() const { return option_; }
+  /// The option's name ("--fps") or the positional word.
+  const std::string& word() const { return word_; }
+  /// The option's value: after '=' or the next argument. Sets `error` when there is none.
+  std::optional<std::string> value(std::string& error);
+  /// For a flag: false (with `error`) when it was written with "=value".
+  bool no_value(std::string& error) const;
+
+ private:
+  const std::vector<std::string>& args_;
+  std::size_t index_ = 0;
+  bool options_ended_ = false;
+  bool option_ = false;
+  std::string word_;
+  std::optional<std::string> inline_value_;
+};
+
+/// An integer from lo to hi written in decimal.
+std::optional<int> parse_int_option(std::string_view text, int lo, int hi);
+/// A finite decimal number.
+std::optional<double> parse_real_option(std::string_view text);
+/// "WxH" with both parts from 1 to kMaxImageSide.
+bool parse_size_option(std::string_view text, int& width, int& height);
+
+inline constexpr int kMaxImageSide = 16384;  ///< pixels; larger frames are surely a typo
+inline constexpr int kMaxFps = 1000;
+
+}  // namespace bsim
