@@ -38,6 +38,9 @@ class Timeline {
   const PhysicsParams& physics() const { return physics_; }
 
  private:
+  /// The state `seg` gives at time t (t at or after its start).
+  BallState segment_state(const MotionSegment& seg, double t) const;
+
   PhysicsParams physics_;
   std::vector<Vec3> pocket_centres_;
   std::vector<double> pocket_radii_;

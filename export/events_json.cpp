@@ -1,5 +1,56 @@
-// PLACEHOLDER until this writer lands.
+// events.json: the numbered events, the pocket drops and every ball's final state (format in README).
+#include <ostream>
+#include <string>
+
+#include "number_format.h"
 #include "outputs.h"
+#include "shot.h"
+
 namespace bsim {
-void write_events_json(const Shot&, std::ostream&) {}
+
+namespace {
+
+std::string list(const std::vector<int>& values) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < values.size(); ++k) out += (k ? ", " : "") + std::to_string(values[k]);
+  return out + "]";
+}
+
+std::string event_json(const Event& e) {
+  std::string out = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
+                    ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
+  if (e.type == EventType::start || e.type == EventType::end) return out + "}";
+  out += ", \"balls\": " + list(e.balls);
+  if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
+  return out + ", \"speed\": " + format_number(e.speed) + "}";
+}
+
+}  // namespace
+
+void write_events_json(const Shot& shot, std::ostream& out) {
+  const Timeline& timeline = shot.timeline;
+  out << "{\n  \"duration\": " << format_number(timeline.duration()) << ",\n  \"events\": [";
+  const auto& events = timeline.events();
+  for (std::size_t k = 0; k < events.size(); ++k) out << (k ? ",\n    " : "\n    ") << event_json(events[k]);
+  out << (events.empty() ? "],\n" : "\n  ],\n");
+
+  out << "  \"pocketed\": [";
+  const auto& drops = timeline.pocket_drops();
+  for (std::size_t k = 0; k < drops.size(); ++k)
+    out << (k ? ",\n    " : "\n    ") << "{\"time\": " << format_number(drops[k].time) << ", \"ball\": " << drops[k].ball
+        << ", \"pocket\": " << drops[k].pocket << "}";
+  out << (drops.empty() ? "],\n" : "\n  ],\n");
+
+  out << "  \"final\": [";
+  for (int i = 0; i < timeline.ball_count(); ++i) {
+    const BallState s = timeline.state(i, timeline.duration());
+    const bool pocketed = s.motion == Motion::pocketed || s.motion == Motion::falling;
+    out << (i ? ",\n    " : "\n    ") << "{\"ball\": " << i
+        << ", \"number\": " << shot.scene.balls[static_cast<std::size_t>(i)].number << ", \"position\": ["
+        << format_number(s.position.x()) << ", " << format_number(s.position.y()) << ", "
+        << format_number(s.position.z()) << "], \"pocketed\": " << (pocketed ? "true" : "false") << "}";
+  }
+  out << (timeline.ball_count() == 0 ? "]\n}\n" : "\n  ]\n}\n");
+}
+
 }  // namespace bsim

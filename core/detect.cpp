@@ -1,0 +1,102 @@
+#include "detect.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "roots.h"
+
+namespace bsim {
+
+namespace {
+
+/// |c + b t + a t^2|^2 - d^2 in the bed plane, as a polynomial in t.
+Poly circle_gap(const Vec3& c, const Vec3& b, const Vec3& a, double d) {
+  auto dot2 = [](const Vec3& u, const Vec3& v) { return u.x() * v.x() + u.y() * v.y(); };
+  return Poly{{dot2(c, c) - d * d, 2 * dot2(b, c), dot2(b, b) + 2 * dot2(a, c), 2 * dot2(a, b), dot2(a, a)}};
+}
+
+/// First time the relative motion c + b t + a t^2 (of a point about a centre) comes within d, in the plane.
+std::optional<double> circle_contact(const Vec3& c, const Vec3& b, const Vec3& a, double d, double horizon) {
+  Poly f = circle_gap(c, b, a, d);
+  const double gap = std::sqrt(f.c[0] + d * d) - d;
+  if (gap <= kTouchDistance) {
+    const double closing = -f.c[1] / (2 * (gap + d));
+    if (closing > kMinClosingSpeed) return 0.0;
+    // Touching but not closing: collide only once the overlap grows by the slop.
+    f.c[0] -= std::min(f.c[0], 0.0) - 2 * d * kContactSlop;
+  }
+  if (f.c[0] <= 0) return std::nullopt;
+  return first_descent(f, 0, horizon);
+}
+
+void widen(SweptBox& box, const Vec3& p) {
+  box.lo = box.lo.cwiseMin(p);
+  box.hi = box.hi.cwiseMax(p);
+}
+
+}  // namespace
+
+SweptBox swept_box(const Path& path, double horizon) {
+  SweptBox box{path.p, path.p};
+  if (!path.moves()) return box;
+  widen(box, path.at(horizon));
+  for (int k = 0; k < 3; ++k) {
+    // Where this coordinate turns back, if it does within the horizon.
+    if (path.a[k] == 0) continue;
+    const double t = -path.v[k] / path.a[k];
+    if (t > 0 && t < horizon) widen(box, path.at(t));
+  }
+  return box;
+}
+
+bool boxes_within(const SweptBox& a, const SweptBox& b, double margin) {
+  for (int k = 0; k < 2; ++k)
+    if (a.lo[k] > b.hi[k] + margin || b.lo[k] > a.hi[k] + margin) return false;
+  return true;
+}
+
+std::optional<double> next_ball_ball(const Path& a, const Path& b, double distance, double horizon) {
+  return circle_contact(b.p - a.p, b.v - a.v, 0.5 * (b.a - a.a), distance, horizon);
+}
+
+double cushion_reach(double ball_radius, double nose_height) {
+  const double lift = nose_height - ball_radius;
+  return std::sqrt(std::max(0.0, ball_radius * ball_radius - lift * lift));
+}
+
+std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon) {
+  const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);
+  const double length = along.norm();
+  if (length == 0) return std::nullopt;
+  const Vec3 dir = along / length;
+  const Vec3 inward(dir.y(), -dir.x(), 0);  // the playing side: right of a -> b
+  const Vec3 rel(ball.p.x() - rail.a.x(), ball.p.y() - rail.a.y(), 0);
+  // s(t): distance of the centre from the nose line beyond the contact reach.
+  Poly s{{inward.dot(rel) - reach, inward.dot(ball.v), 0.5 * inward.dot(ball.a), 0, 0}};
+  if (s.c[0] < -reach) return std::nullopt;  // behind the cushion
+  auto on_segment = [&](double t) {
+    const double u = dir.dot(Vec3(ball.at(t).x() - rail.a.x(), ball.at(t).y() - rail.a.y(), 0));
+    return u >= 0 && u <= length;
+  };
+  if (s.c[0] <= kTouchDistance) {
+    if (-s.c[1] > kMinClosingSpeed && on_segment(0)) return 0.0;
+    s.c[0] -= std::min(s.c[0], 0.0) - kContactSlop;
+  }
+  if (s.c[0] <= 0) return std::nullopt;
+  const std::optional<double> t = first_descent(s, 0, horizon);
+  // Past the end points the ball meets the cushion's end (next_ball_point) first.
+  if (t && on_segment(*t)) return t;
+  return std::nullopt;
+}
+
+std::optional<double> next_ball_point(const Path& ball, const Vec3& point, double reach, double horizon) {
+  return circle_contact(ball.p - point, ball.v, 0.5 * ball.a, reach, horizon);
+}
+
+std::optional<double> next_pocket_entry(const Path& ball, const Pocket& pocket, double horizon) {
+  const Poly f = circle_gap(ball.p - pocket.center, ball.v, 0.5 * ball.a, pocket.radius);
+  if (f.c[0] <= 0) return ball.moves() ? std::optional<double>(0.0) : std::nullopt;
+  return first_descent(f, 0, horizon);
+}
+
+}  // namespace bsim

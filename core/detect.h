@@ -1,0 +1,47 @@
+#pragma once
+// When does a ball next touch another ball, a cushion or a pocket? Pure functions of the balls' paths
+// (see motion.h): each returns the time from the paths' common start, or nullopt when nothing happens
+// before `horizon`. Positions are quadratic in time, so a distance test is a polynomial of degree 4
+// (ball-ball, cushion end, pocket) or 2 (cushion line), solved exactly by roots.h.
+//
+// Contacts already in place at t = 0 count only when the two close at more than kMinClosingSpeed;
+// a touching pair that is not closing is reported once it overlaps by kContactSlop (so round-off in a
+// resting or just-resolved contact never gives a false hit, and a real one is never missed).
+#include <optional>
+
+#include "motion.h"
+#include "scene.h"
+
+namespace bsim {
+
+/// m, distance within which two surfaces count as touching (round-off of positions is ~1e-15 m).
+inline constexpr double kTouchDistance = 1e-11;
+/// m/s, closing speed above which touching surfaces collide at once.
+inline constexpr double kMinClosingSpeed = 1e-9;
+/// m, overlap a touching, non-closing contact may reach before it is resolved as a collision.
+inline constexpr double kContactSlop = 1e-10;
+
+/// Axis-aligned box a path sweeps on [0, horizon].
+struct SweptBox {
+  Vec3 lo, hi;
+};
+SweptBox swept_box(const Path& path, double horizon);
+bool boxes_within(const SweptBox& a, const SweptBox& b, double margin);
+
+/// First contact of two balls whose centres must stay `distance` (2R) apart, in the bed plane.
+std::optional<double> next_ball_ball(const Path& a, const Path& b, double distance, double horizon);
+
+/// Horizontal distance between the ball's centre and a cushion's nose line at contact:
+/// sqrt(R^2 - (h - R)^2) for a nose at height h (the nose touches the ball off its equator).
+double cushion_reach(double ball_radius, double nose_height);
+
+/// First contact of the ball with the nose line of `rail` between its end points (from the playing side).
+std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon);
+
+/// First contact of the ball with a cushion end point (a pocket jaw), from any side.
+std::optional<double> next_ball_point(const Path& ball, const Vec3& point, double reach, double horizon);
+
+/// First time the ball's centre enters the pocket's circle.
+std::optional<double> next_pocket_entry(const Path& ball, const Pocket& pocket, double horizon);
+
+}  // namespace bsim

@@ -1,0 +1,31 @@
+#pragma once
+// The event loop: the only place that sequences motion (motion.h), detection (detect.h) and
+// resolution (resolve.h, pocket_fall.h). simulate() in timeline.h wraps it into a Timeline.
+#include <vector>
+
+#include "event.h"
+#include "scene.h"
+#include "timeline.h"
+
+namespace bsim {
+
+/// s the end event waits, at least, after the last ball comes to rest or settles in a pocket.
+inline constexpr double kEndHold = 0.5;
+/// s; the shot's duration is rounded up to a whole number of these, so that every integer frame rate
+/// gives a whole number of frames and the movie and sound track lengths agree exactly.
+inline constexpr double kDurationStep = 1.0;
+/// s after the cue strike at which a shot that never comes to rest (say, mu_roll = 0) is cut off.
+inline constexpr double kMaxShotTime = 600.0;
+
+struct SimulationResult {
+  std::vector<std::vector<MotionSegment>> segments;  ///< per ball, in time order; orientations not yet set
+  std::vector<Event> events;                         ///< numbered, start to end
+  std::vector<PocketDrop> drops;
+  long candidates_tested = 0;  ///< contact tests run (for the bench)
+  bool cut_off = false;        ///< the shot reached kMaxShotTime still moving
+};
+
+/// Runs the shot's physics: events and closed-form motion segments, without orientations.
+SimulationResult simulate_events(const Scene& scene);
+
+}  // namespace bsim
