@@ -140,14 +140,21 @@ class Parser {
         fail(t.loc, "expected a finite number for " + what + ", found " + quote_token(t.text) + " (not finite)");
       case NumberStatus::not_number: break;
     }
-    fail(t.loc, "expected a number for " + what + ", found " + quote_token(t.text));
+    fail_at_value(t, "expected a number for " + what + ", found " + quote_token(t.text));
+  }
+
+  /// A bad value that is really the next statement's keyword (the line is short): leave it to start
+  /// that statement, so the short line costs one error, not two.
+  [[noreturn]] void fail_at_value(const Token& t, std::string message) {
+    if (is_top_keyword(t.text) || t.text == "endcamera" || (in_camera_ && t.text == "event")) --pos_;
+    fail(t.loc, std::move(message));
   }
 
   long long integer(const std::string& what, SourceLoc* where = nullptr) {
     const Token& t = take("an integer for " + what);
     if (where) *where = t.loc;
     long long value = 0;
-    if (!parse_integer(t.text, value)) fail(t.loc, "expected an integer for " + what + ", found " + quote_token(t.text));
+    if (!parse_integer(t.text, value)) fail_at_value(t, "expected an integer for " + what + ", found " + quote_token(t.text));
     return value;
   }
 
