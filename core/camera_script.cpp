@@ -1,11 +1,212 @@
-// PLACEHOLDER until the camera script lands.
 #include "camera_script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "camera_interpolation.h"
+#include "constants.h"
+
 namespace bsim {
-std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeline& timeline, std::vector<Diagnostic>&) {
-  CameraScript s;
-  s.scene_ = &scene;
-  s.timeline_ = &timeline;
-  return s;
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+/// deg above the horizon of the default camera: high enough to see the whole bed, low enough for depth.
+constexpr double kDefaultElevationDeg = 55.0;
+
+/// "7 events (0 to 6)", "1 ball (index 0)".
+std::string counted(int count, const std::string& noun) {
+  std::string text = std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+  if (count == 1) return text + " (index 0)";
+  if (count > 1) text += " (0 to " + std::to_string(count - 1) + ")";
+  return text;
 }
-CameraPose CameraScript::pose(double) const { return {}; }
+
+SourceLoc where(const SourceLoc& token, const SourceLoc& line) { return token.known() ? token : line; }
+
+std::string describe_event(int written, int resolved) {
+  if (written == CameraShot::kLastEvent)
+    return "event 65535 (the last event, " + std::to_string(resolved) + ")";
+  return "event " + std::to_string(written);
+}
+
+/// Resolves every listed event to an index of the shot's events, or reports why it cannot.
+/// Returns the indices (-1 where invalid).
+std::vector<int> resolve_events(const Scene& scene, int event_count, std::vector<Diagnostic>& diagnostics) {
+  std::vector<int> resolved;
+  int previous = -1, previous_written = 0;
+  for (const CameraShot& shot : scene.camera) {
+    int index = shot.event;
+    if (shot.event == CameraShot::kLastEvent && event_count > 0) index = event_count - 1;
+    if (shot.event == CameraShot::kLastEvent ? event_count == 0 : (index < 0 || index >= event_count)) {
+      diagnostics.push_back({Severity::error, where(shot.event_loc, shot.loc),
+                             "event " + std::to_string(shot.event) + " does not exist: the shot has " +
+                                 counted(event_count, "event")});
+      resolved.push_back(-1);
+      continue;
+    }
+    if (previous >= 0 && index <= previous) {
+      diagnostics.push_back({Severity::error, where(shot.event_loc, shot.loc),
+                             describe_event(shot.event, index) + " is listed after " +
+                                 describe_event(previous_written, previous) +
+                                 ": list the camera's events in increasing order"});
+    }
+    previous = std::max(previous, index);
+    if (index == previous) previous_written = shot.event;
+    resolved.push_back(index);
+  }
+  return resolved;
+}
+
+bool check_balls(const Scene& scene, std::vector<Diagnostic>& diagnostics) {
+  const int count = static_cast<int>(scene.balls.size());
+  bool ok = true;
+  for (const CameraShot& shot : scene.camera) {
+    if (shot.mode == CameraMode::hover || (shot.ball >= 0 && shot.ball < count)) continue;
+    diagnostics.push_back({Severity::error, where(shot.ball_loc, shot.loc),
+                           "ball " + std::to_string(shot.ball) + " does not exist: the scene has " +
+                               counted(count, "ball")});
+    ok = false;
+  }
+  return ok;
+}
+
+}  // namespace
+
+CameraShot CameraScript::default_shot(const Scene& scene) {
+  Vec3 low(-1.27, -0.635, 0), high(1.27, 0.635, 0);
+  if (!scene.rails.empty()) {
+    low = high = scene.rails.front().a;
+    for (const Rail& rail : scene.rails) {
+      low = low.cwiseMin(rail.a).cwiseMin(rail.b);
+      high = high.cwiseMax(rail.a).cwiseMax(rail.b);
+    }
+  }
+  const Vec3 centre(0.5 * (low.x() + high.x()), 0.5 * (low.y() + high.y()), 0);
+  const double half_x = 0.5 * (high.x() - low.x()), half_y = 0.5 * (high.y() - low.y());
+  // Far enough that the long side fills the width with a margin, from the near long side.
+  const double distance = 1.15 * half_x / std::tan(0.5 * kCameraFovDeg * kDegToRad) + half_y;
+  const double elevation = kDefaultElevationDeg * kDegToRad;
+  CameraShot shot;
+  shot.event = 0;
+  shot.mode = CameraMode::hover;
+  shot.target = centre;
+  shot.location = centre + distance * Vec3(0, -std::cos(elevation), std::sin(elevation));
+  return shot;
+}
+
+std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeline& timeline,
+                                                std::vector<Diagnostic>& diagnostics) {
+  const int event_count = static_cast<int>(timeline.events().size());
+  const std::vector<int> resolved = resolve_events(scene, event_count, diagnostics);
+  const bool balls_ok = check_balls(scene, diagnostics);
+  const bool events_ok =
+      std::find(resolved.begin(), resolved.end(), -1) == resolved.end() &&
+      std::adjacent_find(resolved.begin(), resolved.end(), [](int a, int b) { return b <= a; }) == resolved.end();
+  if (!balls_ok || !events_ok) return std::nullopt;
+
+  CameraScript script;
+  script.scene_ = &scene;
+  script.timeline_ = &timeline;
+  script.shots_ = scene.camera;
+  std::vector<double> times;
+  for (int index : resolved) times.push_back(timeline.events()[static_cast<std::size_t>(index)].time);
+  if (script.shots_.empty()) {
+    script.shots_.push_back(default_shot(scene));
+    times.push_back(0.0);
+  }
+  const double duration = timeline.duration();
+  const int count = static_cast<int>(script.shots_.size());
+
+  for (int j = 0; j < count; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    const double next = j + 1 < count ? times[k + 1] : duration;
+    script.segments_.push_back({j, j == 0 ? 0.0 : times[k], next});
+    if (j == 0) continue;  // nothing comes before the first description, so nothing to blend from
+    const double previous = times[k - 1];
+    const CameraShot& shot = script.shots_[k];
+    CameraWindow window{j, times[k] - shot.pre * (times[k] - previous), times[k], times[k] + shot.post * (next - times[k])};
+    // Windows that would overlap share the span between their events in the ratio of their fractions.
+    if (!script.windows_.empty() && script.windows_.back().end > window.begin) {
+      CameraWindow& before = script.windows_.back();
+      const double ahead = script.shots_[k - 1].post;
+      const double meet = previous + (times[k] - previous) * ahead / (ahead + shot.pre);
+      before.end = meet;
+      window.begin = meet;
+    }
+    script.windows_.push_back(window);
+  }
+
+  script.tracks_.resize(scene.balls.size());
+  for (const CameraShot& shot : script.shots_) {
+    if (shot.mode == CameraMode::hover) continue;
+    auto& track = script.tracks_[static_cast<std::size_t>(shot.ball)];
+    if (track) continue;
+    std::optional<double> heading;
+    if (shot.ball == scene.cue.target) heading = scene.cue.heading_deg * kDegToRad;
+    track.emplace(timeline, shot.ball, heading);
+  }
+  return script;
+}
+
+CameraPose CameraScript::shot_pose(int shot_index, double t) const {
+  const CameraShot& shot = shots_[static_cast<std::size_t>(shot_index)];
+  CameraPose pose;
+  switch (shot.mode) {
+    case CameraMode::hover:
+      pose.location = shot.location;
+      pose.look_at = shot.target;
+      break;
+    case CameraMode::look:
+      pose.location = shot.location;
+      pose.look_at = tracks_[static_cast<std::size_t>(shot.ball)]->position(t);
+      break;
+    case CameraMode::follow: {
+      const BallTrack& track = *tracks_[static_cast<std::size_t>(shot.ball)];
+      const Vec3 ball = track.position(t);
+      const Vec3 ahead = track.heading(t);
+      const Vec3 left(-ahead.y(), ahead.x(), 0);
+      pose.location = ball + shot.location.x() * ahead + shot.location.y() * left + shot.location.z() * Vec3::UnitZ();
+      pose.look_at = ball;
+      break;
+    }
+  }
+  return pose;
+}
+
+CameraPose CameraScript::interpolate(const CameraWindow& window, double t) const {
+  // The seed's second camera interpolation: Bezier look point, slerped direction, Smooth distance.
+  const CameraPose from = shot_pose(window.shot - 1, window.begin);
+  const CameraPose to = shot_pose(window.shot, window.end);
+  const Vec3 middle = shot_pose(window.shot, window.event_time).look_at;
+  const double from_distance = (from.look_at - from.location).norm();
+  const double to_distance = (to.look_at - to.location).norm();
+  // A camera sitting on its look point has no direction; borrow the other end's (or look down).
+  const Vec3 down(0, 0, -1);
+  const Vec3 to_direction = unit_or(to.location, to.look_at, unit_or(from.location, from.look_at, down));
+  const Vec3 from_direction = unit_or(from.location, from.look_at, to_direction);
+
+  const double u = std::clamp((t - window.begin) / (window.end - window.begin), 0.0, 1.0);
+  CameraPose pose;
+  pose.look_at = bezier(from.look_at, middle, to.look_at, u);
+  const Vec3 direction = slerp_unit(from_direction, to_direction, u);
+  const double distance = from_distance + (to_distance - from_distance) * smooth(u);
+  pose.location = pose.look_at - distance * direction;
+  pose.interpolating = true;
+  return pose;
+}
+
+CameraPose CameraScript::pose(double t) const {
+  for (const CameraWindow& window : windows_) {
+    if (window.end > window.begin && t >= window.begin && t <= window.end) return interpolate(window, t);
+  }
+  int shot = segments_.front().shot;
+  for (const CameraSegment& segment : segments_) {
+    if (t >= segment.begin) shot = segment.shot;
+  }
+  return shot_pose(shot, t);
+}
+
 }  // namespace bsim

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "ball_track.h"
 #include "diagnostics.h"
 #include "scene.h"
 #include "timeline.h"
@@ -16,16 +17,18 @@ struct CameraPose {
   bool interpolating = false;
 };
 
-/// The time one listed description holds (from its event to the next listed event).
+/// The time one listed description holds (from its event to the next listed event; the first one
+/// also holds from the start of the shot to its event).
 struct CameraSegment {
-  int shot = 0;        ///< index into Scene::camera
+  int shot = 0;        ///< index into CameraScript::shots() (= Scene::camera when the scene lists any)
   double begin = 0;    ///< s
   double end = 0;      ///< s
 };
 
-/// An interpolation window around a listed event.
+/// An interpolation window around a listed event, from the description before it (shot - 1) to the
+/// one that starts at it (shot). begin == end is a cut. The first listed event has none.
 struct CameraWindow {
-  int shot = 0;          ///< index into Scene::camera of the description that starts at the event
+  int shot = 0;          ///< index into CameraScript::shots() of the description that starts at the event
   double begin = 0;      ///< s
   double event_time = 0; ///< s
   double end = 0;        ///< s
@@ -35,19 +38,30 @@ class CameraScript {
  public:
   /// Checks the script against the simulated events (event numbers, order, ball indices) and
   /// resolves it. Returns nullopt and appends located errors when it does not fit the shot.
-  /// `scene` and `timeline` must outlive the script.
+  /// A scene that lists no description gets default_shot(). `scene` and `timeline` must outlive
+  /// the script.
   static std::optional<CameraScript> build(const Scene& scene, const Timeline& timeline,
                                            std::vector<Diagnostic>& diagnostics);
 
+  /// The camera used when a scene lists none: a wide hover over the middle of the table.
+  static CameraShot default_shot(const Scene& scene);
+
   CameraPose pose(double t) const;
+  /// Where one description alone would put the camera at t, without interpolation.
+  CameraPose shot_pose(int shot, double t) const;
+  const std::vector<CameraShot>& shots() const { return shots_; }
   const std::vector<CameraSegment>& segments() const { return segments_; }
   const std::vector<CameraWindow>& windows() const { return windows_; }
 
  private:
+  CameraPose interpolate(const CameraWindow& window, double t) const;
+
   const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
+  std::vector<CameraShot> shots_;
   std::vector<CameraSegment> segments_;
   std::vector<CameraWindow> windows_;
+  std::vector<std::optional<BallTrack>> tracks_;  ///< per ball, for the balls the script watches
 };
 
 }  // namespace bsim

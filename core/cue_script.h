@@ -28,13 +28,42 @@ class CueScript {
   CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera);
 
   CuePose pose(double t) const;
+  /// Approach, preflight (two strokes and the back-swing), impact (forward stroke and follow-through),
+  /// retraction (ends when the stick is removed). Empty when the shot has no cue strike.
   const std::vector<CuePhaseSpan>& phases() const { return phases_; }
 
+  /// m, where the tip meets the struck ball: where the stick's axis enters its surface.
+  const Vec3& contact_point() const { return contact_; }
+  /// deg the butt is raised above the horizontal, the least that clears the cushions and balls.
+  double elevation_deg() const;
+  /// m/s, the tip's speed at the strike.
+  double tip_speed() const { return tip_speed_; }
+
  private:
+  /// The stick `behind` m behind the contact point along its axis, swung `lift` rad up about it.
+  CuePose place(double behind, double lift) const;
+  /// The plan for one elevation: back-swing, forward stroke and follow-through.
+  void plan_stroke(double elevation);
+  /// m, the least gap to the balls at rest and the cushions over the stroke, at the planned elevation.
+  double stroke_clearance() const;
+  CuePose path(double t) const;
+
   const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
   const CameraScript* camera_ = nullptr;
   std::vector<CuePhaseSpan> phases_;
+  Vec3 contact_{0, 0, 0};    ///< m
+  Vec3 heading_{1, 0, 0};    ///< unit, horizontal: the direction the stick pushes
+  double elevation_ = 0;     ///< rad
+  double cue_time_ = 0;      ///< s
+  double tip_speed_ = 0;     ///< m/s at contact
+  double backswing_ = 0;     ///< m behind the contact point where the forward stroke starts
+  double follow_ = 0;        ///< m past the contact point where the tip stops
+  double accel_time_ = 0;    ///< s of the forward stroke
+  double follow_time_ = 0;   ///< s of the follow-through
+  double approach_from_ = 0; ///< m behind the contact point at the start (swung up, out of view)
+  double retract_to_ = 0;    ///< m behind the contact point at the end of retraction
+  double hide_time_ = 0;     ///< s, the stick is removed from here on
 };
 
 }  // namespace bsim

@@ -1,5 +1,22 @@
-// PLACEHOLDER until this writer lands.
+// camera.csv: where the camera is and what it looks at in every frame (format in the README).
+#include "frames.h"
+#include "number_format.h"
 #include "outputs.h"
+#include "shot.h"
+
 namespace bsim {
-void write_camera_csv(const Shot&, int, std::ostream&) {}
+
+void write_camera_csv(const Shot& shot, int fps, std::ostream& out) {
+  out << "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n";
+  const int frames = frame_count(shot.timeline.duration(), fps);
+  for (int k = 0; k < frames; ++k) {
+    const double t = frame_time(k, fps);
+    const CameraPose pose = shot.camera->pose(t);
+    out << k << ',' << format_number(t);
+    for (int i = 0; i < 3; ++i) out << ',' << format_number(pose.location[i]);
+    for (int i = 0; i < 3; ++i) out << ',' << format_number(pose.look_at[i]);
+    out << ',' << (pose.interpolating ? 1 : 0) << '\n';
+  }
+}
+
 }  // namespace bsim

@@ -1,0 +1,79 @@
+#include "cue_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "camera_interpolation.h"
+#include "constants.h"
+
+namespace bsim {
+
+namespace {
+/// m between points tested against the cushions and the view: finer than the stick is thick.
+constexpr double kAxisStep = 0.01;
+/// m between points tested against the view cone, whose margin covers the stick's thickness.
+constexpr double kViewStep = 0.05;
+
+/// Lowest point of the circular cross-section at `centre`, perpendicular to `axis`.
+double lowest_z(const Vec3& centre, const Vec3& axis, double radius) {
+  return centre.z() - radius * std::sqrt(std::max(0.0, 1.0 - axis.z() * axis.z()));
+}
+
+double cushion_gap(const CuePose& stick, const Rail& rail) {
+  const Vec3 a(rail.a.x(), rail.a.y(), 0), b(rail.b.x(), rail.b.y(), 0);
+  const double length = (b - a).norm();
+  if (!(length > 0)) return std::numeric_limits<double>::infinity();
+  const Vec3 along = (b - a) / length;
+  const Vec3 outward(-along.y(), along.x(), 0);  // playing side is on the right of a -> b
+  const double top = 0.5 * (rail.a.z() + rail.b.z()) + kCushionTopAboveNose;
+  double gap = std::numeric_limits<double>::infinity();
+  for (double s = 0; s <= kCueLength + 1e-9; s += kAxisStep) {
+    const Vec3 point = stick.tip + s * stick.axis;
+    const double radius = stick_radius(s);
+    Vec3 flat = point - a;
+    flat.z() = 0;
+    const double out = flat.dot(outward), at = flat.dot(along);
+    if (out < -radius || out > kCushionWidth || at < -kCushionWidth || at > length + kCushionWidth) continue;
+    gap = std::min(gap, lowest_z(point, stick.axis, radius) - top);
+  }
+  return gap;
+}
+}  // namespace
+
+double stick_radius(double s) {
+  const double f = std::clamp(s / kCueLength, 0.0, 1.0);
+  return kCueTipRadius + f * (kCueButtRadius - kCueTipRadius);
+}
+
+double stick_ball_gap(const CuePose& stick, const Vec3& centre, double ball_radius) {
+  const Vec3 w = centre - stick.tip;
+  const double s = w.dot(stick.axis);
+  const double off_axis = (w - s * stick.axis).norm();
+  // In front of the tip face or behind the butt: distance to the end disc.
+  if (s < 0) return std::hypot(s, std::max(0.0, off_axis - kCueTipRadius)) - ball_radius;
+  if (s > kCueLength) return std::hypot(s - kCueLength, std::max(0.0, off_axis - kCueButtRadius)) - ball_radius;
+  // Beside the rod: the taper is so slight (0.3 deg) that the radial gap is the distance.
+  return off_axis - stick_radius(s) - ball_radius;
+}
+
+double stick_clearance(const CuePose& stick, const Scene& scene, const std::vector<BallState>& balls,
+                       double ball_radius, int skip) {
+  const Vec3 butt = stick.tip + kCueLength * stick.axis;
+  double gap = std::min(lowest_z(stick.tip, stick.axis, kCueTipRadius), lowest_z(butt, stick.axis, kCueButtRadius));
+  for (const Rail& rail : scene.rails) gap = std::min(gap, cushion_gap(stick, rail));
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (static_cast<int>(i) == skip || balls[i].motion == Motion::pocketed) continue;
+    gap = std::min(gap, stick_ball_gap(stick, balls[i].position, ball_radius));
+  }
+  return gap;
+}
+
+bool stick_in_view(const CuePose& stick, const CameraPose& camera) {
+  for (double s = 0; s <= kCueLength + 1e-9; s += kViewStep) {
+    if (in_view(camera.location, camera.look_at, stick.tip + s * stick.axis)) return true;
+  }
+  return false;
+}
+
+}  // namespace bsim

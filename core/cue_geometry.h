@@ -1,0 +1,32 @@
+#pragma once
+// The cue stick as a solid: a tapered rod from the tip (radius kCueTipRadius) to the butt
+// (kCueButtRadius), kCueLength long. How close it comes to the bed, the cushions and the balls,
+// and whether a camera can see it.
+#include <vector>
+
+#include "camera_script.h"
+#include "cue_script.h"
+#include "scene.h"
+
+namespace bsim {
+
+/// m the cushion's top rises above its nose line, and m it reaches outward from the nose (with the
+/// wooden rail): the block the stick must pass over when a ball lies near a cushion.
+inline constexpr double kCushionTopAboveNose = 0.012;
+inline constexpr double kCushionWidth = 0.15;
+
+/// m, the stick's radius at distance `s` from the tip along its axis.
+double stick_radius(double s);
+
+/// The smallest gap, m, between the stick and the bed, the cushions and the balls of `balls`
+/// (pocketed ones ignored), skipping the ball `skip` (-1 for none); negative where it cuts in.
+double stick_clearance(const CuePose& stick, const Scene& scene, const std::vector<BallState>& balls,
+                       double ball_radius, int skip = -1);
+
+/// The gap, m, between the stick and one ball (negative where they overlap).
+double stick_ball_gap(const CuePose& stick, const Vec3& centre, double ball_radius);
+
+/// Whether any part of the stick can appear in the camera's picture.
+bool stick_in_view(const CuePose& stick, const CameraPose& camera);
+
+}  // namespace bsim

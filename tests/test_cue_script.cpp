@@ -1,0 +1,183 @@
+// The cue stick's four phases on simulated shots: the strike lands exactly at the cue event, two
+// practice strokes, removal out of view, and no contact with the bed, the cushions or other balls.
+#include <cmath>
+#include <doctest/doctest.h>
+#include <string>
+
+#include "constants.h"
+#include "cue_geometry.h"
+#include "shot.h"
+
+using namespace bsim;
+
+namespace {
+
+std::unique_ptr<Shot> load(const std::string& text) {
+  ShotResult result = load_shot(text, "test");
+  if (!result.shot)
+    for (const Diagnostic& d : result.diagnostics) FAIL_CHECK(format_diagnostic(d, "test.scn"));
+  REQUIRE(result.shot);
+  REQUIRE(result.shot->cue);
+  return std::move(result.shot);
+}
+
+constexpr double kR = 0.028575;
+const std::string kCamera = "camera\nevent 0 0 0 hover -1.6 -1.5 1.2 0 0 0\nendcamera\n";
+const std::string kPlain = "cue 0 0\nball 0 -0.6 0 0.028575 1.5 0 0 1 0 0 0\nball 1 0.3 0.2 0.028575 0 0 0 1 0 0 0\n";
+
+/// m the tip is behind the contact point along the stick (negative past it).
+double behind(const CueScript& cue, double t) {
+  const CuePose pose = cue.pose(t);
+  return (pose.tip - cue.contact_point()).dot(pose.axis);
+}
+
+/// The least clearance to the bed, cushions and every ball (the struck one included) while visible.
+double worst_clearance(const Shot& shot) {
+  double worst = 1e9;
+  for (double t = 0; t <= shot.timeline.duration(); t += 1.0 / 120) {
+    const CuePose pose = shot.cue->pose(t);
+    if (!pose.visible) continue;
+    worst = std::min(worst, stick_clearance(pose, shot.scene, shot.timeline.states(t), kR));
+  }
+  const double strike = shot.timeline.cue_time();
+  return std::min(worst, stick_clearance(shot.cue->pose(strike), shot.scene, shot.timeline.states(strike), kR));
+}
+
+}  // namespace
+
+TEST_SUITE("cue_script") {
+  TEST_CASE("four phases in order, approach and strokes within the lead time") {
+    auto shot = load(kPlain + kCamera);
+    const auto& phases = shot->cue->phases();
+    REQUIRE(phases.size() == 4);
+    CHECK(phases[0].phase == CuePhase::approach);
+    CHECK(phases[1].phase == CuePhase::preflight);
+    CHECK(phases[2].phase == CuePhase::impact);
+    CHECK(phases[3].phase == CuePhase::retraction);
+    CHECK(phases[0].begin == 0.0);
+    for (std::size_t i = 0; i < phases.size(); ++i) {
+      CHECK(phases[i].end >= phases[i].begin);
+      if (i > 0) CHECK(phases[i].begin == phases[i - 1].end);
+    }
+    const double strike = shot->timeline.cue_time();
+    CHECK(strike <= kCueLeadTime);
+    CHECK(phases[1].end < strike);
+    CHECK(phases[2].end > strike);
+  }
+
+  TEST_CASE("the tip meets the ball's surface exactly at the cue event, on the line through its centre") {
+    auto shot = load(kPlain + kCamera);
+    const CueScript& cue = *shot->cue;
+    const double strike = shot->timeline.cue_time();
+    const Vec3 centre = shot->scene.balls[0].position;
+    const CuePose at = cue.pose(strike);
+    CHECK(at.visible);
+    CHECK((at.tip - cue.contact_point()).norm() < 1e-12);
+    CHECK((at.tip - centre).norm() == doctest::Approx(kR).epsilon(1e-12));
+    CHECK((centre - at.tip).cross(at.axis).norm() < 1e-12);
+    // The stick points along the heading (+x), butt raised.
+    CHECK(at.axis.x() < 0);
+    CHECK(std::abs(at.axis.y()) < 1e-12);
+    CHECK(at.axis.z() > 0);
+    // Never on the ball before: the gap closes only at the strike.
+    for (double t = 0; t < strike - 1e-6; t += 1.0 / 240) CHECK(stick_ball_gap(cue.pose(t), centre, kR) > 0);
+  }
+
+  TEST_CASE("the strike: accelerates into the ball at a speed tied to the ball's, then slows to rest") {
+    auto shot = load(kPlain + kCamera);
+    const CueScript& cue = *shot->cue;
+    const double strike = shot->timeline.cue_time();
+    const double h = 1e-6;
+    const double speed = (behind(cue, strike - h) - behind(cue, strike)) / h;
+    CHECK(speed == doctest::Approx(cue.tip_speed()).epsilon(1e-4));
+    CHECK(cue.tip_speed() == doctest::Approx(1.5 / 1.4));
+    CHECK(cue.tip_speed() < 1.5);  // the ball leaves faster than the tip follows
+    // Speeding up all the way in: the forward speed grows through the impact phase's first part.
+    const double begin = cue.phases()[2].begin;
+    double previous = 0;
+    for (int i = 1; i <= 10; ++i) {
+      const double t = begin + (strike - begin) * i / 10.0;
+      const double v = (behind(cue, t - h) - behind(cue, t)) / h;
+      CHECK(v > previous);
+      previous = v;
+    }
+    const double end = cue.phases()[2].end;
+    CHECK(std::abs(behind(cue, end - h) - behind(cue, end)) / h < 1e-3);
+    CHECK(behind(cue, end) < 0);
+    CHECK(behind(cue, end) > -0.16);
+  }
+
+  TEST_CASE("preflight: two practice strokes, then the back-swing") {
+    auto shot = load(kPlain + kCamera);
+    const CueScript& cue = *shot->cue;
+    const CuePhaseSpan preflight = cue.phases()[1];
+    int peaks = 0, troughs = 0;
+    const double step = (preflight.end - preflight.begin) / 600;
+    double a = behind(cue, preflight.begin), b = behind(cue, preflight.begin + step);
+    for (double t = preflight.begin + 2 * step; t < preflight.end - step / 2; t += step) {
+      const double c = behind(cue, t);
+      peaks += b > a && b > c;
+      troughs += b < a && b < c;
+      a = b;
+      b = c;
+    }
+    CHECK(peaks == 2);
+    CHECK(troughs == 2);  // back at the address between the strokes and before the back-swing
+    // The back-swing ends at rest, farther back than the address.
+    CHECK(behind(cue, preflight.end) > behind(cue, preflight.begin));
+  }
+
+  TEST_CASE("the stick comes from out of view and is removed only once out of view") {
+    auto shot = load(kPlain + kCamera);
+    const CueScript& cue = *shot->cue;
+    const CameraScript& camera = *shot->camera;
+    CHECK_FALSE(stick_in_view(cue.pose(0), camera.pose(0)));
+    CHECK(cue.pose(0).visible);
+    const CuePhaseSpan retraction = cue.phases()[3];
+    CHECK(cue.pose(retraction.end - 1e-6).visible);
+    CHECK_FALSE(stick_in_view(cue.pose(retraction.end), camera.pose(retraction.end)));
+    for (double t = retraction.end; t <= shot->timeline.duration(); t += 0.1) CHECK_FALSE(cue.pose(t).visible);
+    // Seen during the strike.
+    CHECK(stick_in_view(cue.pose(shot->timeline.cue_time()), camera.pose(shot->timeline.cue_time())));
+  }
+
+  TEST_CASE("the stick moves continuously through every phase boundary") {
+    auto shot = load(kPlain + kCamera);
+    const CueScript& cue = *shot->cue;
+    for (const CuePhaseSpan& span : cue.phases()) {
+      for (double edge : {span.begin, span.end}) {
+        if (edge <= 0) continue;
+        CHECK((cue.pose(edge - 1e-9).tip - cue.pose(edge + 1e-9).tip).norm() < 1e-6);
+        CHECK((cue.pose(edge - 1e-9).axis - cue.pose(edge + 1e-9).axis).norm() < 1e-6);
+      }
+    }
+  }
+
+  TEST_CASE("an open shot keeps the stick low and clear") {
+    auto shot = load(kPlain + kCamera);
+    CHECK(shot->cue->elevation_deg() == doctest::Approx(5.0));
+    CHECK(worst_clearance(*shot) >= -1e-9);
+  }
+
+  TEST_CASE("a ball just behind the cue ball: the butt is raised over it") {
+    // Ball 1 sits 2.2 radii behind the cue ball on the cue line.
+    auto shot = load("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 1 -0.062865 0 0.028575 0 0 0 1 0 0 0\n" + kCamera);
+    CHECK(shot->cue->elevation_deg() > 30);
+    CHECK(shot->cue->elevation_deg() < 50);
+    CHECK(worst_clearance(*shot) >= -1e-9);
+  }
+
+  TEST_CASE("a cue ball near a cushion: the stick passes over the cushion") {
+    auto shot = load("cue 0 180\nball 0 1.17 0.1 0.028575 -1 0 0 1 0 0 0\n" + kCamera);
+    CHECK(shot->cue->elevation_deg() > 10);
+    CHECK(worst_clearance(*shot) >= -1e-9);
+  }
+
+  TEST_CASE("a shot with the cue heading across the table and balls about") {
+    auto shot = load("cue 0 120\nball 0 0.2 -0.3 0.028575 -1 1.7320508 0 1 0 0 0\n"
+                     "ball 1 0.5 -0.5 0.028575 0 0 0 1 0 0 0\nball 2 0.3 -0.55 0.028575 0 0 0 1 0 0 0\n" + kCamera);
+    CHECK(worst_clearance(*shot) >= -1e-9);
+    const CuePose at = shot->cue->pose(shot->timeline.cue_time());
+    CHECK(std::atan2(-at.axis.y(), -at.axis.x()) == doctest::Approx(120 * M_PI / 180));
+  }
+}
