@@ -8,7 +8,7 @@ namespace bsim {
 
 enum class Quality { draft, final };
 
-/// s: sounds start this much before their event, the time a strike takes to reach a viewer at the table.
+/// s: how long before its event each sound starts, unless --audio-lead says otherwise.
 inline constexpr double kDefaultAudioLead = 0.005;
 inline constexpr double kMaxAudioLead = 1.0;  ///< s
 inline constexpr int kMaxJobs = 1024;

@@ -91,7 +91,7 @@ TEST_SUITE("validation: tokens") {
   }
 
   TEST_CASE("numbers that are not finite") {
-    for (const char* bad : {"nan", "inf", "-inf", "Infinity", "NaN", "1e400", "-1e999"}) {
+    for (const std::string bad : {"nan", "inf", "-inf", "Infinity", "NaN", "1e400", "-1e999"}) {
       CAPTURE(bad);
       expect_error("cue 0 0\nball 0 0 0 0.028575 " + std::string(bad) + " 0 0 1 0 0 0\n" + kCam, 2, 21,
                    {"expected a finite number for the ball's x velocity", "(not finite)"});
@@ -272,7 +272,8 @@ TEST_SUITE("validation: extensions and params") {
         {"e_rail 2", "from 0 to 1"},         {"mu_rail -1", "at least 0"},       {"table_speed 0", "greater than 0"},
     };
     for (const auto& [param, range] : bad) {
-      CAPTURE(param);
+      const std::string shown = param;
+      CAPTURE(shown);
       const std::string line = std::string("param ") + param + "\n";
       const int column = static_cast<int>(line.find(' ', 6)) + 2;
       expect_error("cue 0 0\n" + kBall0 + line, 3, column, {range, "for parameter '"});
