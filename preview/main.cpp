@@ -1,6 +1,27 @@
-// PLACEHOLDER until the preview lands.
+// billiards-preview: the shot drawn with OpenGL, headless (snapshots, the timeline picture, the
+// animatic) or in a window with a scrub bar.
 #include <iostream>
-int main() {
-  std::cerr << "billiards-preview: not built yet\n";
-  return 2;
+
+#include "commands.h"
+#include "preview_options.h"
+#include "shot_source.h"
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  bsim::PreviewOptions options;
+  std::string message;
+  switch (bsim::parse_preview_options(args, options, message)) {
+    case bsim::PreviewCommandLineOutcome::exit_success: std::cout << message; return 0;
+    case bsim::PreviewCommandLineOutcome::exit_usage: std::cerr << "billiards-preview: " << message << "\n"; return 2;
+    case bsim::PreviewCommandLineOutcome::run: break;
+  }
+  const bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
+  if (!options.at && !options.timeline && !options.movie) return bsim::run_window(options, source);
+
+  const bsim::LoadedShot loaded = bsim::load_source(source);
+  for (const std::string& line : loaded.messages) std::cerr << line << "\n";
+  if (!loaded.shot) return 1;
+  if (options.at) return bsim::run_snapshot(options, *loaded.shot);
+  if (options.timeline) return bsim::run_timeline_picture(options, *loaded.shot);
+  return bsim::run_animatic(options, *loaded.shot);
 }

@@ -1,0 +1,91 @@
+#include "labels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "ball_model.h"
+
+namespace bsim {
+
+std::string camera_shot_label(const CameraShot& shot) {
+  switch (shot.mode) {
+    case CameraMode::hover: return "hover";
+    case CameraMode::look: return "look ball " + std::to_string(shot.ball);
+    case CameraMode::follow: return "follow ball " + std::to_string(shot.ball);
+  }
+  return "?";
+}
+
+std::string event_label(const Event& event) {
+  const auto ball = [&](std::size_t k) { return k < event.balls.size() ? std::to_string(event.balls[k]) : "?"; };
+  switch (event.type) {
+    case EventType::start: return "start";
+    case EventType::end: return "end";
+    case EventType::cue: return "cue \xE2\x86\x92 ball " + ball(0);
+    case EventType::ball_ball: return "ball " + ball(0) + " \xE2\x80\x93 ball " + ball(1);
+    case EventType::ball_rail: return "ball " + ball(0) + " \xE2\x80\x93 rail " + std::to_string(event.rail);
+  }
+  return "?";
+}
+
+std::string cue_phase_label(CuePhase phase) {
+  switch (phase) {
+    case CuePhase::approach: return "approach";
+    case CuePhase::preflight: return "practice strokes";
+    case CuePhase::impact: return "strike";
+    case CuePhase::retraction: return "retraction";
+  }
+  return "?";
+}
+
+unsigned event_color(EventType type) {
+  switch (type) {
+    case EventType::start:
+    case EventType::end: return IM_COL32(170, 170, 176, 255);
+    case EventType::cue: return IM_COL32(255, 236, 120, 255);
+    case EventType::ball_ball: return IM_COL32(255, 142, 54, 255);
+    case EventType::ball_rail: return IM_COL32(84, 188, 255, 255);
+  }
+  return IM_COL32_WHITE;
+}
+
+unsigned pocket_color() { return IM_COL32(236, 92, 210, 255); }
+
+unsigned camera_mode_color(CameraMode mode) {
+  switch (mode) {
+    case CameraMode::hover: return IM_COL32(128, 108, 220, 255);
+    case CameraMode::look: return IM_COL32(196, 160, 52, 255);
+    case CameraMode::follow: return IM_COL32(62, 168, 104, 255);
+  }
+  return IM_COL32_WHITE;
+}
+
+unsigned cue_phase_color(CuePhase phase) {
+  switch (phase) {
+    case CuePhase::approach: return IM_COL32(150, 112, 70, 255);
+    case CuePhase::preflight: return IM_COL32(196, 150, 92, 255);
+    case CuePhase::impact: return IM_COL32(232, 84, 64, 255);
+    case CuePhase::retraction: return IM_COL32(120, 100, 84, 255);
+  }
+  return IM_COL32_WHITE;
+}
+
+unsigned ball_ui_color(int number, int alpha) {
+  const Vec3 linear = ball_color(number);
+  double c[3];
+  for (int i = 0; i < 3; ++i) {
+    const double v = linear[i];
+    c[i] = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+  }
+  const double luma = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+  if (luma < 0.3) {
+    const double lift = 0.3 - luma + 0.15;
+    for (double& v : c) v = v + (1 - v) * lift;
+  }
+  const auto byte = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  return IM_COL32(byte(c[0]), byte(c[1]), byte(c[2]), alpha);
+}
+
+}  // namespace bsim

@@ -1,0 +1,290 @@
+#include "overlays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "labels.h"
+#include "shot.h"
+
+namespace bsim {
+
+namespace {
+
+constexpr double kPathStep = 1.0 / 240.0;  // s between path samples: smooth at any preview size
+
+struct Projector {
+  Eigen::Matrix4f view_projection;
+  double width, height;
+  bool operator()(const Vec3& p, ImVec2& out) const {
+    double x = 0, y = 0;
+    if (!project_to_pixels(view_projection, p, width, height, x, y)) return false;
+    out = ImVec2(static_cast<float>(x), static_cast<float>(y));
+    return true;
+  }
+};
+
+Projector projector(const OverlayFrame& f) {
+  const double aspect = f.width / std::max(f.height, 1.0);
+  return {projection_matrix(f.camera, aspect) * view_matrix(f.camera), f.width, f.height};
+}
+
+float ui_scale(const OverlayFrame& f) { return static_cast<float>(std::clamp(f.height / 720.0, 0.5, 2.0)); }
+
+// A polyline broken where points fall behind the camera.
+void draw_projected_path(ImDrawList& list, const Projector& project, const std::vector<Vec3>& points, ImU32 color,
+                         float thickness) {
+  std::vector<ImVec2> run;
+  const auto flush = [&] {
+    if (run.size() >= 2) list.AddPolyline(run.data(), static_cast<int>(run.size()), color, ImDrawFlags_None, thickness);
+    run.clear();
+  };
+  for (const Vec3& p : points) {
+    ImVec2 s;
+    if (project(p, s)) run.push_back(s);
+    else flush();
+  }
+  flush();
+}
+
+void text_with_shadow(ImDrawList& list, ImFont* font, float size, ImVec2 at, ImU32 color, const std::string& text) {
+  list.AddText(font, size, ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 200), text.c_str());
+  list.AddText(font, size, at, color, text.c_str());
+}
+
+const Event* latest_event(const Timeline& timeline, double t) {
+  const Event* latest = nullptr;
+  for (const Event& e : timeline.events())
+    if (e.time <= t + 1e-9) latest = &e;
+  return latest;
+}
+
+const CameraShot* camera_shot_at(const Shot& shot, double t) {
+  if (!shot.camera) return nullptr;
+  const CameraShot* found = nullptr;
+  for (const CameraSegment& s : shot.camera->segments())
+    if (t + 1e-9 >= s.begin && s.shot >= 0 && s.shot < static_cast<int>(shot.scene.camera.size()))
+      found = &shot.scene.camera[static_cast<std::size_t>(s.shot)];
+  return found;
+}
+
+std::vector<Vec3> ball_path(const Timeline& timeline, int ball, double from, double to) {
+  std::vector<Vec3> points;
+  const double radius = timeline.physics().ball_radius;
+  for (double t = from;; t += kPathStep) {
+    const double clamped = std::min(t, to);
+    const BallState s = timeline.state(ball, clamped);
+    if (s.motion == Motion::pocketed) break;
+    // On the cloth the path lies on the bed; in a pocket it follows the drop.
+    Vec3 p = s.position;
+    p.z() = std::min(p.z() - radius, 0.0) + 0.001;
+    if (points.empty() || (p - points.back()).norm() > 1e-4) points.push_back(p);
+    if (clamped >= to) break;
+  }
+  return points;
+}
+
+}  // namespace
+
+void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
+  const Timeline& timeline = f.shot.timeline;
+  const Projector project = projector(f);
+  const float scale = ui_scale(f);
+  for (int i = 0; i < timeline.ball_count(); ++i) {
+    const int number = f.shot.scene.balls[static_cast<std::size_t>(i)].number;
+    const std::vector<Vec3> past = ball_path(timeline, i, 0, f.time);
+    const std::vector<Vec3> future = ball_path(timeline, i, f.time, timeline.duration());
+    if (past.size() < 2 && future.size() < 2) continue;
+    draw_projected_path(list, project, future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
+    draw_projected_path(list, project, future, ball_ui_color(number, 120), 1.5f * scale);
+    draw_projected_path(list, project, past, IM_COL32(0, 0, 0, 150), 4.f * scale);
+    draw_projected_path(list, project, past, ball_ui_color(number, 255), 2.2f * scale);
+  }
+}
+
+void draw_event_markers(ImDrawList& list, const OverlayFrame& f) {
+  const Projector project = projector(f);
+  const float scale = ui_scale(f);
+  const Event* current = latest_event(f.shot.timeline, f.time);
+  for (const Event& e : f.shot.timeline.events()) {
+    if (e.type == EventType::start || e.type == EventType::end) continue;
+    ImVec2 s;
+    if (!project(e.where, s)) continue;
+    const bool is_current = &e == current;
+    const bool past = e.time <= f.time;
+    const ImU32 color = (event_color(e.type) & 0x00FFFFFFu) | (past ? 0xFF000000u : 0xB0000000u);
+    const float r = (is_current ? 9.f : 6.f) * scale;
+    list.AddCircle(s, r + 1.5f * scale, IM_COL32(0, 0, 0, 160), 24, 3.f * scale);
+    list.AddCircle(s, r, color, 24, (is_current ? 2.5f : 1.6f) * scale);
+    const std::string label = std::to_string(e.index);
+    const float size = f.fonts.small_size;
+    const ImVec2 extent = f.fonts.small->CalcTextSizeA(size, 1e9f, 0, label.c_str());
+    const ImVec2 at(s.x + r + 2 * scale, s.y - r - extent.y + 2 * scale);
+    list.AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + extent.x + 2, at.y + extent.y), IM_COL32(0, 0, 0, 150), 3.f);
+    list.AddText(f.fonts.small, size, at, color, label.c_str());
+  }
+}
+
+void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
+  if (!f.shot.camera) return;
+  const Scene& scene = f.shot.scene;
+  const double duration = f.shot.timeline.duration();
+  // Sample the scripted camera's path and the points it looks at.
+  std::vector<Vec3> eyes, targets;
+  const int samples = 400;
+  for (int k = 0; k <= samples; ++k) {
+    const CameraPose pose = f.shot.camera->pose(duration * k / samples);
+    eyes.push_back(pose.location);
+    targets.push_back(pose.look_at);
+  }
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  const auto grow = [&](const Vec3& p, double margin) {
+    x0 = std::min(x0, p.x() - margin);
+    x1 = std::max(x1, p.x() + margin);
+    y0 = std::min(y0, p.y() - margin);
+    y1 = std::max(y1, p.y() + margin);
+  };
+  for (const Rail& r : scene.rails) {
+    grow(r.a, 0.25);
+    grow(r.b, 0.25);
+  }
+  for (const Pocket& p : scene.pockets) grow(p.center, 0.25);
+  for (const Vec3& e : eyes) grow(e, 0.15);
+  if (x1 <= x0 || y1 <= y0) return;
+
+  const float scale = ui_scale(f);
+  const float margin = 10 * scale;
+  const float box_w = static_cast<float>(f.width) * 0.3f;
+  const float box_h = std::min(static_cast<float>(f.height) * 0.45f, box_w * static_cast<float>((y1 - y0) / (x1 - x0)));
+  const float pixels_per_m = std::min(box_w / static_cast<float>(x1 - x0), box_h / static_cast<float>(y1 - y0));
+  const float w = pixels_per_m * static_cast<float>(x1 - x0), h = pixels_per_m * static_cast<float>(y1 - y0);
+  const ImVec2 origin(static_cast<float>(f.width) - margin - w, margin);
+  const auto map = [&](const Vec3& p) {
+    return ImVec2(origin.x + static_cast<float>(p.x() - x0) * pixels_per_m,
+                  origin.y + static_cast<float>(y1 - p.y()) * pixels_per_m);
+  };
+  list.AddRectFilled(ImVec2(origin.x - 4, origin.y - 4), ImVec2(origin.x + w + 4, origin.y + h + 4),
+                     IM_COL32(14, 16, 20, 215), 6.f);
+
+  // The playing surface between the cushions, the cushions, the pockets, the balls now.
+  for (const Rail& r : scene.rails) {
+    list.AddLine(map(r.a), map(r.b), IM_COL32(40, 150, 90, 255), 3.f * scale);
+  }
+  for (const Pocket& p : scene.pockets)
+    list.AddCircleFilled(map(p.center), static_cast<float>(p.radius) * pixels_per_m, IM_COL32(0, 0, 0, 255), 20);
+  const std::vector<BallState> balls = f.shot.timeline.states(f.time);
+  const float ball_r = std::max(2.f, static_cast<float>(scene.physics.ball_radius) * pixels_per_m);
+  for (std::size_t i = 0; i < balls.size() && i < scene.balls.size(); ++i) {
+    if (balls[i].motion == Motion::pocketed) continue;
+    list.AddCircleFilled(map(balls[i].position), ball_r, ball_ui_color(scene.balls[i].number), 12);
+  }
+
+  // Path of the camera (bright up to now) and of what it looks at.
+  std::vector<ImVec2> looked, past, future;
+  for (std::size_t k = 0; k < eyes.size(); ++k) {
+    const double t = duration * static_cast<double>(k) / samples;
+    looked.push_back(map(targets[k]));
+    (t <= f.time ? past : future).push_back(map(eyes[k]));
+  }
+  if (!past.empty()) future.insert(future.begin(), past.back());
+  list.AddPolyline(looked.data(), static_cast<int>(looked.size()), IM_COL32(110, 200, 255, 110), ImDrawFlags_None, 1.2f * scale);
+  if (future.size() >= 2)
+    list.AddPolyline(future.data(), static_cast<int>(future.size()), IM_COL32(255, 214, 90, 110), ImDrawFlags_None, 1.5f * scale);
+  if (past.size() >= 2)
+    list.AddPolyline(past.data(), static_cast<int>(past.size()), IM_COL32(255, 214, 90, 255), ImDrawFlags_None, 2.f * scale);
+
+  // Where the camera is now, its horizontal field of view, and where it looks.
+  const CameraPose now = f.shot.camera->pose(f.time);
+  const ImVec2 eye = map(now.location), look = map(now.look_at);
+  Vec3 dir = now.look_at - now.location;
+  dir.z() = 0;
+  if (dir.norm() > 1e-6) {
+    dir.normalize();
+    const double half = kCameraFovDeg * std::numbers::pi / 360.0;
+    const double reach = 0.6;
+    for (double side : {-1.0, 1.0}) {
+      const double c = std::cos(side * half), s = std::sin(side * half);
+      const Vec3 edge(dir.x() * c - dir.y() * s, dir.x() * s + dir.y() * c, 0);
+      list.AddLine(eye, map(now.location + edge * reach), IM_COL32(255, 255, 255, 150), 1.2f * scale);
+    }
+  }
+  list.AddLine(eye, look, IM_COL32(110, 200, 255, 220), 1.2f * scale);
+  list.AddCircleFilled(look, 3.f * scale, IM_COL32(110, 200, 255, 255), 12);
+  list.AddCircleFilled(eye, 4.5f * scale, IM_COL32(255, 214, 90, 255), 16);
+  list.AddCircle(eye, 4.5f * scale, IM_COL32(0, 0, 0, 255), 16, 1.f);
+  text_with_shadow(list, f.fonts.small, f.fonts.small_size, ImVec2(origin.x + 2, origin.y + h - f.fonts.small_size - 1),
+                   IM_COL32(220, 220, 220, 230), "camera from above");
+}
+
+void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "t = %.3f s", f.time);
+  std::string text = buffer;
+  if (const Event* e = latest_event(f.shot.timeline, f.time)) {
+    std::snprintf(buffer, sizeof buffer, "  \xE2\x80\xA2  after event %d (%.3f s): ", e->index, e->time);
+    text += buffer + event_label(*e);
+  }
+  if (const CameraShot* c = camera_shot_at(f.shot, f.time)) {
+    text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c);
+    if (f.shot.camera->pose(f.time).interpolating) text += " (interpolating)";
+  }
+  const float size = f.fonts.regular_size;
+  const ImVec2 extent = f.fonts.regular->CalcTextSizeA(size, 1e9f, 0, text.c_str());
+  const float pad = 6;
+  const ImVec2 at(pad + 4, static_cast<float>(f.height) - extent.y - pad - 4);
+  list.AddRectFilled(ImVec2(at.x - pad, at.y - pad / 2), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad / 2),
+                     IM_COL32(0, 0, 0, 150), 4.f);
+  list.AddText(f.fonts.regular, size, at, IM_COL32(235, 235, 235, 255), text.c_str());
+}
+
+void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspect) {
+  if (!f.shot.camera) return;
+  const Projector project = projector(f);
+  const double duration = f.shot.timeline.duration();
+  std::vector<Vec3> path;
+  for (int k = 0; k <= 400; ++k) path.push_back(f.shot.camera->pose(duration * k / 400).location);
+  draw_projected_path(list, project, path, IM_COL32(255, 214, 90, 150), 1.5f);
+
+  const ViewCamera scripted = scripted_view(f.shot, f.time);
+  Vec3 forward = scripted.target - scripted.eye;
+  if (forward.norm() < 1e-9) return;
+  forward.normalize();
+  const Vec3 right = forward.cross(view_up(scripted)).normalized();
+  const Vec3 up = right.cross(forward);
+  const double depth = 0.35;  // m, how far the drawn frustum reaches
+  const double half_w = std::tan(scripted.hfov_deg * std::numbers::pi / 360.0) * depth, half_h = half_w / aspect;
+  const Vec3 centre = scripted.eye + forward * depth;
+  const Vec3 corners[4] = {centre + right * half_w + up * half_h, centre - right * half_w + up * half_h,
+                           centre - right * half_w - up * half_h, centre + right * half_w - up * half_h};
+  const ImU32 color = IM_COL32(255, 214, 90, 255);
+  ImVec2 eye, c[4];
+  bool ok = project(scripted.eye, eye);
+  for (int k = 0; k < 4; ++k) ok = project(corners[k], c[k]) && ok;
+  if (ok) {
+    for (int k = 0; k < 4; ++k) {
+      list.AddLine(eye, c[k], color, 1.5f);
+      list.AddLine(c[k], c[(k + 1) % 4], color, 2.f);
+    }
+    ImVec2 top;
+    if (project(centre + up * half_h * 1.3, top)) list.AddTriangleFilled(c[0], c[1], top, IM_COL32(255, 214, 90, 160));
+  }
+  ImVec2 from, to;
+  if (project(scripted.eye, from) && project(scripted.target, to)) {
+    list.AddLine(from, to, IM_COL32(110, 200, 255, 160), 1.f);
+    list.AddCircleFilled(to, 4.f, IM_COL32(110, 200, 255, 255), 12);
+  }
+}
+
+void draw_overlays(ImDrawList& list, const OverlayFrame& frame, const PreviewOverlays& overlays) {
+  if (overlays.paths) draw_ball_paths(list, frame);
+  if (overlays.events) draw_event_markers(list, frame);
+  if (overlays.camera) draw_camera_map(list, frame);
+  if (overlays.paths || overlays.events || overlays.camera) draw_status_line(list, frame);
+}
+
+}  // namespace bsim

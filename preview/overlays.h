@@ -1,0 +1,34 @@
+#pragma once
+// Drawn over the 3D picture in 2D: every ball's path, event markers, the camera seen from above,
+// a line of text saying where in the shot the picture is, and the scripted camera as a frustum.
+#include "fonts.h"
+#include "preview_options.h"
+#include "view.h"
+
+struct ImDrawList;
+
+namespace bsim {
+
+struct Shot;
+
+struct OverlayFrame {
+  const Shot& shot;
+  double time = 0;           ///< s
+  ViewCamera camera;         ///< the camera the picture is drawn from
+  double width = 0, height = 0;  ///< px
+  const UiFonts& fonts;
+};
+
+void draw_ball_paths(ImDrawList& list, const OverlayFrame& frame);
+void draw_event_markers(ImDrawList& list, const OverlayFrame& frame);
+/// The scripted camera's path and view wedge over a top view of the table, in the top-right corner.
+void draw_camera_map(ImDrawList& list, const OverlayFrame& frame);
+/// "t = 1.500 s · event 3 ball 0 – ball 5 · follow ball 0 · interpolating" along the bottom.
+void draw_status_line(ImDrawList& list, const OverlayFrame& frame);
+/// The scripted camera at `time` as a frustum and its path, seen from the frame's (free) camera.
+void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& frame, double aspect);
+
+/// Every overlay the options ask for (and the status line when any is on).
+void draw_overlays(ImDrawList& list, const OverlayFrame& frame, const PreviewOverlays& overlays);
+
+}  // namespace bsim

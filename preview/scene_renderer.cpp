@@ -1,0 +1,262 @@
+#include "scene_renderer.h"
+
+#include <Eigen/Geometry>
+
+#include "ball_model.h"
+#include "gl_api.h"
+#include "shaders.h"
+#include "shot.h"
+#include "table_model.h"
+
+namespace bsim {
+
+namespace {
+
+constexpr int kNumberCell = 128;    // px per digit cell: sharp even in close-ups
+constexpr float kShadowAlpha = 0.6f;
+
+struct Program {
+  GLuint id = 0;
+  GLint model = -1, normal_matrix = -1, view_projection = -1, color = -1, number = -1, striped = -1, alpha = -1,
+        eye = -1, numbers = -1;
+};
+
+Eigen::Matrix3f to_matrix3(const Eigen::Matrix4f& m) { return m.block<3, 3>(0, 0); }
+
+}  // namespace
+
+FrameState scripted_frame(const Shot& shot, double t) {
+  FrameState frame;
+  frame.balls = shot.timeline.states(t);
+  if (shot.cue) frame.cue = shot.cue->pose(t);
+  frame.camera = scripted_view(shot, t);
+  return frame;
+}
+
+struct SceneRenderer::Impl {
+  Program programs[kMaterialCount];
+  Program* current = nullptr;
+  GpuMesh cloth, tops, body, pockets, bed_holes, top_holes, sphere, cue, shadow;
+  GLuint numbers = 0;
+  // Multisampled target, resized on demand.
+  GLuint fbo = 0, color_rb = 0, depth_rb = 0;
+  int fbo_width = 0, fbo_height = 0, samples = 0;
+  int wanted_samples = 0, built_for = -1;
+
+  ~Impl() {
+    release_target();
+    if (numbers) glDeleteTextures(1, &numbers);
+    for (Program& p : programs)
+      if (p.id) glDeleteProgram(p.id);
+  }
+
+  void release_target() {
+    if (fbo) glDeleteFramebuffers(1, &fbo);
+    if (color_rb) glDeleteRenderbuffers(1, &color_rb);
+    if (depth_rb) glDeleteRenderbuffers(1, &depth_rb);
+    fbo = color_rb = depth_rb = 0;
+    fbo_width = fbo_height = 0;
+  }
+
+  void ensure_target(int width, int height) {
+    if (fbo && width == fbo_width && height == fbo_height && built_for == wanted_samples) return;
+    release_target();
+    built_for = wanted_samples;
+    GLint max_samples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    samples = std::min(wanted_samples, static_cast<int>(max_samples));
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glGenRenderbuffers(1, &color_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, color_rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb);
+    glGenRenderbuffers(1, &depth_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      release_target();  // draw straight into the default framebuffer instead
+    } else {
+      fbo_width = width;
+      fbo_height = height;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  void set_model(const Eigen::Matrix4f& model) {
+    glUniformMatrix4fv(current->model, 1, GL_FALSE, model.data());
+    const Eigen::Matrix3f normal = to_matrix3(model).inverse().transpose();
+    glUniformMatrix3fv(current->normal_matrix, 1, GL_FALSE, normal.data());
+  }
+
+  void use(Material m) {
+    current = &programs[static_cast<int>(m)];
+    glUseProgram(current->id);
+  }
+};
+
+SceneRenderer::SceneRenderer() : impl_(std::make_unique<Impl>()) {}
+SceneRenderer::~SceneRenderer() = default;
+
+bool SceneRenderer::init(std::string& error) {
+  Impl& r = *impl_;
+  for (int m = 0; m < kMaterialCount; ++m) {
+    Program& p = r.programs[m];
+    p.id = build_scene_program(static_cast<Material>(m), error);
+    if (!p.id) return false;
+    const auto loc = [&](const char* name) { return glGetUniformLocation(p.id, name); };
+    p.model = loc("u_model");
+    p.normal_matrix = loc("u_normal_matrix");
+    p.view_projection = loc("u_view_projection");
+    p.color = loc("u_color");
+    p.number = loc("u_number");
+    p.striped = loc("u_striped");
+    p.alpha = loc("u_alpha");
+    p.eye = loc("u_eye");
+    p.numbers = loc("u_numbers");
+  }
+  r.sphere.upload(make_sphere_mesh(48, 32));
+  r.cue.upload(make_cue_mesh());
+  r.shadow.upload(make_shadow_quad());
+
+  const std::vector<std::uint8_t> atlas = make_number_atlas(kNumberCell);
+  glGenTextures(1, &r.numbers);
+  glBindTexture(GL_TEXTURE_2D, r.numbers);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kNumberCell * 4, kNumberCell * 4, 0, GL_RED, GL_UNSIGNED_BYTE, atlas.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return true;
+}
+
+void SceneRenderer::set_multisampling(int samples) { impl_->wanted_samples = samples; }
+
+void SceneRenderer::set_scene(const Scene& scene) {
+  const TableModel table = build_table_model(scene);
+  impl_->cloth.upload(table.cloth);
+  impl_->tops.upload(table.tops);
+  impl_->body.upload(table.body);
+  impl_->pockets.upload(table.pockets);
+  impl_->bed_holes.upload(table.bed_holes);
+  impl_->top_holes.upload(table.top_holes);
+}
+
+void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height) {
+  Impl& r = *impl_;
+  r.ensure_target(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
+  glViewport(0, 0, width, height);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glStencilMask(0xFF);
+  glClearColor(0.018f, 0.016f, 0.02f, 1.f);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+  const double aspect = static_cast<double>(width) / std::max(height, 1);
+  const Eigen::Matrix4f view_projection = projection_matrix(frame.camera, aspect) * view_matrix(frame.camera);
+  for (const Program& p : r.programs) {
+    glUseProgram(p.id);
+    glUniformMatrix4fv(p.view_projection, 1, GL_FALSE, view_projection.data());
+    glUniform3f(p.eye, float(frame.camera.eye.x()), float(frame.camera.eye.y()), float(frame.camera.eye.z()));
+    glUniform1i(p.numbers, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.numbers);
+
+  // Pocket holes are cut with the stencil: the circles mark bit 1 (on the bed plane) and bit 2 (on the
+  // top plane) wherever they project, and each plane is drawn only outside its own circles. That is
+  // exact for a plane, and the pockets' insides then show through.
+  r.use(Material::flat);
+  r.set_model(Eigen::Matrix4f::Identity());
+  glEnable(GL_STENCIL_TEST);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glStencilMask(1);
+  glStencilFunc(GL_ALWAYS, 1, 1);
+  r.bed_holes.draw();
+  glStencilMask(2);
+  glStencilFunc(GL_ALWAYS, 2, 2);
+  r.top_holes.draw();
+  glStencilMask(0);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+
+  r.use(Material::table);
+  r.set_model(Eigen::Matrix4f::Identity());
+  glStencilFunc(GL_EQUAL, 0, 1);
+  r.cloth.draw();
+  glStencilFunc(GL_EQUAL, 0, 2);
+  r.tops.draw();
+  glDisable(GL_STENCIL_TEST);
+  r.body.draw();
+  r.pockets.draw();
+
+  const double radius = scene.physics.ball_radius;
+  r.use(Material::ball);
+  for (std::size_t i = 0; i < frame.balls.size() && i < scene.balls.size(); ++i) {
+    const BallState& s = frame.balls[i];
+    if (s.motion == Motion::pocketed) continue;
+    const int number = scene.balls[i].number;
+    Eigen::Affine3d model = Eigen::Translation3d(s.position) * s.orientation.normalized() * Eigen::Scaling(radius);
+    r.set_model(model.matrix().cast<float>());
+    const Vec3 color = ball_color(number);
+    glUniform3f(r.current->color, float(color.x()), float(color.y()), float(color.z()));
+    glUniform1i(r.current->number, number);
+    glUniform1i(r.current->striped, ball_striped(number) ? 1 : 0);
+    r.sphere.draw();
+  }
+
+  if (frame.cue.visible && frame.cue.axis.norm() > 1e-9) {
+    const Quat turn = Quat::FromTwoVectors(Vec3::UnitX(), frame.cue.axis.normalized());
+    const Eigen::Affine3d model = Eigen::Translation3d(frame.cue.tip) * turn;
+    r.use(Material::cue);
+    r.set_model(model.matrix().cast<float>());
+    r.cue.draw();
+  }
+
+  // Contact shadows: soft dark discs laid over the cloth.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.f, -4.f);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  r.use(Material::shadow);
+  for (const BallState& s : frame.balls) {
+    if (s.motion == Motion::pocketed || s.position.z() < 0.5 * radius) continue;
+    // A ball in the air (or sinking) casts a fainter, wider shadow.
+    const double lift = std::clamp((s.position.z() - radius) / (4 * radius), -1.0, 1.0);
+    const double size = radius * (1.45 + 0.6 * std::abs(lift));
+    const Eigen::Affine3d model =
+        Eigen::Translation3d(Vec3(s.position.x(), s.position.y(), 0)) * Eigen::Scaling(size, size, 1.0);
+    r.set_model(model.matrix().cast<float>());
+    glUniform1f(r.current->alpha, float(kShadowAlpha * (1.0 - 0.6 * std::abs(lift))));
+    r.shadow.draw();
+  }
+  glDisable(GL_BLEND);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
+  glUseProgram(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+
+  if (r.fbo) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+}
+
+}  // namespace bsim

@@ -1,0 +1,50 @@
+#pragma once
+// Draws one frame of the shot with OpenGL: the table, the balls (coloured, striped, numbered, turned
+// by their orientation), the stick and soft contact shadows, seen from a ViewCamera. Shared by the
+// headless snapshots, the animatic and the window; needs a current GL 3.3 core context.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ball_state.h"
+#include "cue_script.h"
+#include "mesh.h"
+#include "scene.h"
+#include "view.h"
+
+namespace bsim {
+
+struct Shot;
+
+/// Everything that moves, at one instant.
+struct FrameState {
+  std::vector<BallState> balls;  ///< file order
+  CuePose cue;
+  ViewCamera camera;
+};
+
+/// The shot at time t, seen from its scripted camera.
+FrameState scripted_frame(const Shot& shot, double t);
+
+class SceneRenderer {
+ public:
+  SceneRenderer();
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  bool init(std::string& error);
+  /// Samples per pixel for antialiasing: 0 (none, fastest), 2 or 4. A software rasteriser pays about
+  /// twice the frame time for 4, so the animatic and the window default to 0 and snapshots use 4.
+  void set_multisampling(int samples);
+  /// Rebuilds the table for `scene` (after a reload).
+  void set_scene(const Scene& scene);
+  /// Draws into framebuffer 0 at width x height (antialiased through a multisampled buffer).
+  void draw(const Scene& scene, const FrameState& frame, int width, int height);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bsim

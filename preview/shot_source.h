@@ -1,0 +1,33 @@
+#pragma once
+// Where the scene comes from (a file or the built-in break) and turning it into a Shot.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diagnostics.h"
+#include "shot.h"
+
+namespace bsim {
+
+struct SceneSource {
+  std::optional<std::string> path;  ///< none: the built-in break
+  std::string shown_path;           ///< how diagnostics name it
+  std::string name;                 ///< Scene::name
+  bool strict = false;
+};
+
+SceneSource scene_source(const std::optional<std::string>& path, bool strict);
+
+struct LoadedShot {
+  std::unique_ptr<Shot> shot;            ///< null on any error
+  std::vector<Diagnostic> diagnostics;
+  std::string read_error;                ///< set when the file cannot be read
+  /// Every problem as the lines a user sees: "PATH:LINE:COL: error: ...".
+  std::vector<std::string> messages;
+};
+
+/// Reads and loads the scene. Never exits.
+LoadedShot load_source(const SceneSource& source);
+
+}  // namespace bsim

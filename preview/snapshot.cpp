@@ -1,0 +1,89 @@
+// --at: one frame of the shot, drawn headless, with optional overlays.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include <imgui.h>
+
+#include "commands.h"
+#include "headless_canvas.h"
+#include "overlays.h"
+#include "scene_renderer.h"
+#include "timeline_picture.h"
+
+namespace bsim {
+
+namespace {
+/// Snapshots are single frames, so they can afford antialiasing.
+constexpr int kSnapshotSamples = 4;
+/// Without --size the timeline is wider than a frame: a long shot's events need the room.
+constexpr int kTimelineWidth = 1600, kTimelineMinHeight = 360, kTimelineMaxHeight = 1200;
+}  // namespace
+
+std::optional<double> resolve_time(const TimeSpec& at, const Timeline& timeline, std::string& error) {
+  if (at.event < 0) return std::clamp(at.seconds, 0.0, timeline.duration());
+  const auto count = static_cast<int>(timeline.events().size());
+  if (at.event >= count) {
+    error = "--at event:" + std::to_string(at.event) + ": this shot has " + std::to_string(count) +
+            " events, numbered 0 to " + std::to_string(count - 1) + " (see --timeline)";
+    return std::nullopt;
+  }
+  return timeline.events()[static_cast<std::size_t>(at.event)].time;
+}
+
+float picture_text_px(int height) { return std::clamp(static_cast<float>(height) / 720.f * 17.f, 11.f, 34.f); }
+
+int run_snapshot(const PreviewOptions& options, const Shot& shot) {
+  std::string error;
+  const std::optional<double> t = resolve_time(*options.at, shot.timeline, error);
+  if (!t) {
+    std::cerr << "billiards-preview: " << error << "\n";
+    return 2;
+  }
+  if (options.at->event < 0 && options.at->seconds > shot.timeline.duration())
+    std::cerr << "billiards-preview: warning: --at " << options.at->seconds << " is after the end of the shot; showing "
+              << shot.timeline.duration() << " s\n";
+  HeadlessCanvas canvas;
+  SceneRenderer renderer;
+  if (!canvas.open(options.width, options.height, picture_text_px(options.height), error) || !renderer.init(error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return 1;
+  }
+  renderer.set_multisampling(kSnapshotSamples);
+  renderer.set_scene(shot.scene);
+  const FrameState frame = scripted_frame(shot, *t);
+  renderer.draw(shot.scene, frame, options.width, options.height);
+  ImDrawList* list = canvas.begin_2d();
+  draw_overlays(*list, OverlayFrame{shot, *t, frame.camera, double(options.width), double(options.height), canvas.fonts()},
+                options.overlays);
+  canvas.end_2d();
+  if (!canvas.write_png(*options.output, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int run_timeline_picture(const PreviewOptions& options, const Shot& shot) {
+  // Without --size, tall enough to list every event (about five columns of 19 px lines).
+  const int rows = (static_cast<int>(shot.timeline.events().size()) + 4) / 5;
+  const int width = options.size_given ? options.width : kTimelineWidth;
+  const int height = options.size_given ? options.height : std::clamp(330 + rows * 19, kTimelineMinHeight, kTimelineMaxHeight);
+  const float text_px = options.size_given ? std::clamp(std::min(height / 36.f, width / 90.f), 11.f, 20.f) : 16.f;
+  std::string error;
+  HeadlessCanvas canvas;
+  if (!canvas.open(width, height, text_px, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return 1;
+  }
+  ImDrawList* list = canvas.begin_2d();
+  draw_timeline(*list, timeline_data(shot), canvas.fonts(), {0, 0, float(width), float(height)});
+  canvas.end_2d();
+  if (!canvas.write_png(*options.output, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace bsim

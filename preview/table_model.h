@@ -1,0 +1,26 @@
+#pragma once
+// The table as meshes, built from the scene's cushions and pockets: cloth, cushions at nose height,
+// the wooden frame with its sights, the pocket holes, and a floor and legs for context.
+#include <vector>
+
+#include "mesh.h"
+#include "scene.h"
+
+namespace bsim {
+
+struct TableModel {
+  MeshData cloth;      ///< the bed, z = 0 (pocket holes are cut out of it with the stencil)
+  MeshData tops;       ///< the frame's and cushions' top faces, all at top_height (holes cut likewise)
+  MeshData body;       ///< cushion faces, frame sides, legs, floor
+  MeshData pockets;    ///< inside of each pocket: its wall and bottom, seen through the holes
+  MeshData bed_holes;  ///< pocket circles on the bed plane (stencil masks)
+  MeshData top_holes;  ///< pocket circles at the frame's top height (stencil masks)
+  double top_height = 0;  ///< m, the frame's top above the bed
+};
+
+/// Cloth colour (linear RGB), shared with the shadows and overlays that sit on it.
+Vec3 cloth_color();
+
+TableModel build_table_model(const Scene& scene);
+
+}  // namespace bsim

@@ -1,0 +1,70 @@
+#pragma once
+// The timeline of a shot as a picture: events (coloured by type, numbered), pocket drops, the camera
+// descriptions as labelled spans starting at the event they name, the interpolation windows, the cue
+// phases, and a list of every event. Used for --timeline and, compact, as the window's scrub bar.
+#include <string>
+#include <vector>
+
+#include "cue_script.h"
+#include "event.h"
+#include "fonts.h"
+#include "scene.h"
+
+struct ImDrawList;
+
+namespace bsim {
+
+struct Shot;
+
+struct TimelineEventMark {
+  int index = 0;
+  double time = 0;  ///< s
+  EventType type = EventType::start;
+  std::string label;  ///< "ball 0 – ball 5"
+};
+
+struct TimelineDrop {
+  double time = 0;  ///< s
+  int ball = 0;     ///< file-order index
+  int pocket = 0;
+};
+
+struct TimelineCameraSpan {
+  double begin = 0, end = 0;  ///< s
+  int event = 0;              ///< the event number the description names (65535: the last)
+  CameraMode mode = CameraMode::hover;
+  std::string label;          ///< "follow ball 0"
+};
+
+struct TimelineWindow {
+  double begin = 0, event_time = 0, end = 0;  ///< s
+};
+
+/// What the picture shows, as plain values (so it can be drawn for a made-up shot too).
+struct TimelineData {
+  std::string title;
+  double duration = 0;  ///< s
+  std::vector<TimelineEventMark> events;
+  std::vector<TimelineDrop> drops;
+  std::vector<TimelineCameraSpan> camera;
+  std::vector<TimelineWindow> windows;
+  std::vector<CuePhaseSpan> cue;
+};
+
+TimelineData timeline_data(const Shot& shot);
+
+struct TimelineLayout {
+  float x = 0, y = 0, width = 0, height = 0;  ///< px, the area to fill
+  bool compact = false;    ///< scrub bar: only the rows and the axis, no title, list or legend
+  double cursor = -1;      ///< s, a playhead drawn when >= 0
+};
+
+/// Draws the timeline. Returns the x of time 0 and the pixels per second used (for hit testing).
+struct TimelineAxis {
+  float x0 = 0;
+  float pixels_per_second = 1;
+  double time_at(float x) const { return (x - x0) / pixels_per_second; }
+};
+TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout);
+
+}  // namespace bsim
