@@ -102,7 +102,6 @@ class Parser {
   SceneSourceMap& source_map() { return map_; }
   bool empty() const { return lexed_.tokens.empty(); }
   bool camera_seen() const { return camera_seen_; }
-  const std::vector<std::pair<std::string_view, double>>& params() const { return params_; }
 
  private:
   // ---- diagnostics
@@ -291,7 +290,7 @@ class Parser {
   void param(const Token& keyword) {
     const Token& name = take("a parameter name (" + param_names() + ")");
     const std::optional<ParamSpec> spec = find_param(name.text);
-    if (!spec) fail(name.loc, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
+    if (!spec) fail_at_value(name, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
     SourceLoc value_loc;
     const double value = number("parameter '" + std::string(spec->name) + "'", &value_loc);
     if (!param_in_range(*spec, value))

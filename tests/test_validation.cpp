@@ -82,6 +82,10 @@ TEST_SUITE("validation: tokens") {
   TEST_CASE("a keyword where a value belongs: the line before is short") {
     expect_error("cue 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\n", 2, 1,
                  {"expected a number for the cue's heading in degrees, found 'ball'"});
+    // The keyword still starts its own line, so the short line costs one error, not two.
+    CHECK(parse_scene("cue 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 1 x\n", "t").diagnostics.size() == 2);
+    CHECK(parse_scene("param\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\n", "t")
+              .diagnostics.size() == 2);
   }
 
   TEST_CASE("missing tokens at the end of the file point just past the last token") {
