@@ -20,18 +20,18 @@ constexpr double kPathStep = 1.0 / 240.0;  // s between path samples: smooth at 
 
 struct Projector {
   Eigen::Matrix4f view_projection;
-  double width, height;
+  double width, height, left, top;
   bool operator()(const Vec3& p, ImVec2& out) const {
     double x = 0, y = 0;
     if (!project_to_pixels(view_projection, p, width, height, x, y)) return false;
-    out = ImVec2(static_cast<float>(x), static_cast<float>(y));
+    out = ImVec2(static_cast<float>(left + x), static_cast<float>(top + y));
     return true;
   }
 };
 
 Projector projector(const OverlayFrame& f) {
   const double aspect = f.width / std::max(f.height, 1.0);
-  return {projection_matrix(f.camera, aspect) * view_matrix(f.camera), f.width, f.height};
+  return {projection_matrix(f.camera, aspect) * view_matrix(f.camera), f.width, f.height, f.left, f.top};
 }
 
 float ui_scale(const OverlayFrame& f) { return static_cast<float>(std::clamp(f.height / 720.0, 0.5, 2.0)); }
@@ -163,7 +163,7 @@ void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
   const float box_h = std::min(static_cast<float>(f.height) * 0.45f, box_w * static_cast<float>((y1 - y0) / (x1 - x0)));
   const float pixels_per_m = std::min(box_w / static_cast<float>(x1 - x0), box_h / static_cast<float>(y1 - y0));
   const float w = pixels_per_m * static_cast<float>(x1 - x0), h = pixels_per_m * static_cast<float>(y1 - y0);
-  const ImVec2 origin(static_cast<float>(f.width) - margin - w, margin);
+  const ImVec2 origin(static_cast<float>(f.left + f.width) - margin - w, static_cast<float>(f.top) + margin);
   const auto map = [&](const Vec3& p) {
     return ImVec2(origin.x + static_cast<float>(p.x() - x0) * pixels_per_m,
                   origin.y + static_cast<float>(y1 - p.y()) * pixels_per_m);
@@ -236,7 +236,7 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
   const float size = f.fonts.regular_size;
   const ImVec2 extent = f.fonts.regular->CalcTextSizeA(size, 1e9f, 0, text.c_str());
   const float pad = 6;
-  const ImVec2 at(pad + 4, static_cast<float>(f.height) - extent.y - pad - 4);
+  const ImVec2 at(static_cast<float>(f.left) + pad + 4, static_cast<float>(f.top + f.height) - extent.y - pad - 4);
   list.AddRectFilled(ImVec2(at.x - pad, at.y - pad / 2), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad / 2),
                      IM_COL32(0, 0, 0, 150), 4.f);
   list.AddText(f.fonts.regular, size, at, IM_COL32(235, 235, 235, 255), text.c_str());

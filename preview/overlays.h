@@ -15,8 +15,9 @@ struct OverlayFrame {
   const Shot& shot;
   double time = 0;           ///< s
   ViewCamera camera;         ///< the camera the picture is drawn from
-  double width = 0, height = 0;  ///< px
+  double width = 0, height = 0;  ///< px, the picture's size
   const UiFonts& fonts;
+  double left = 0, top = 0;      ///< px, where the picture sits in the draw list (a window's view)
 };
 
 void draw_ball_paths(ImDrawList& list, const OverlayFrame& frame);

@@ -55,13 +55,14 @@ struct SceneRenderer::Impl {
     if (color_rb) glDeleteRenderbuffers(1, &color_rb);
     if (depth_rb) glDeleteRenderbuffers(1, &depth_rb);
     fbo = color_rb = depth_rb = 0;
-    fbo_width = fbo_height = 0;
   }
 
   void ensure_target(int width, int height) {
-    if (fbo && width == fbo_width && height == fbo_height && built_for == wanted_samples) return;
+    if (width == fbo_width && height == fbo_height && built_for == wanted_samples) return;
     release_target();
     built_for = wanted_samples;
+    fbo_width = width;
+    fbo_height = height;
     GLint max_samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     samples = std::min(wanted_samples, static_cast<int>(max_samples));
@@ -75,12 +76,8 @@ struct SceneRenderer::Impl {
     glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      release_target();  // draw straight into the default framebuffer instead
-    } else {
-      fbo_width = width;
-      fbo_height = height;
-    }
+    // Without a usable offscreen buffer, draw straight into the default framebuffer (no antialiasing).
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) release_target();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -146,12 +143,18 @@ void SceneRenderer::set_scene(const Scene& scene) {
   impl_->top_holes.upload(table.top_holes);
 }
 
-void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height) {
+void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y) {
   Impl& r = *impl_;
   r.ensure_target(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
-  glViewport(0, 0, width, height);
   glDisable(GL_SCISSOR_TEST);
+  if (r.fbo) {
+    glViewport(0, 0, width, height);
+  } else {
+    glViewport(x, y, width, height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, width, height);
+  }
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
@@ -248,13 +251,14 @@ void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width,
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
+  glDisable(GL_SCISSOR_TEST);
   glUseProgram(0);
   glBindTexture(GL_TEXTURE_2D, 0);
 
   if (r.fbo) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 }

@@ -39,8 +39,8 @@ class SceneRenderer {
   void set_multisampling(int samples);
   /// Rebuilds the table for `scene` (after a reload).
   void set_scene(const Scene& scene);
-  /// Draws into framebuffer 0 at width x height (antialiased through a multisampled buffer).
-  void draw(const Scene& scene, const FrameState& frame, int width, int height);
+  /// Draws a width x height picture into framebuffer 0 with its lower-left corner at (x, y).
+  void draw(const Scene& scene, const FrameState& frame, int width, int height, int x = 0, int y = 0);
 
  private:
   struct Impl;

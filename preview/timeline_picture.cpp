@@ -123,6 +123,12 @@ TimelineData timeline_data(const Shot& shot) {
   return data;
 }
 
+float compact_timeline_height(const UiFonts& fonts) {
+  const float text = fonts.regular_size, small = fonts.small_size;
+  return std::round(text * 0.3f) + (small + 2) + (small + 6) + 2 + (small + 8) + 2 + (text + 10) + 2 + (small + 6) +
+         (small + 8);
+}
+
 TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout) {
   const float text = fonts.regular_size, small = fonts.small_size;
   const float pad = std::round(text * 0.6f);

@@ -65,6 +65,9 @@ struct TimelineAxis {
   float pixels_per_second = 1;
   double time_at(float x) const { return (x - x0) / pixels_per_second; }
 };
+/// px a compact timeline needs with these fonts.
+float compact_timeline_height(const UiFonts& fonts);
+
 TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout);
 
 }  // namespace bsim

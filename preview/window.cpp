@@ -1,4 +1,217 @@
+// The interactive window: GLFW + the shared renderer + Dear ImGui panels (see viewer_ui.h).
+// Under a test it scrubs through the shot by itself (--quit-after) and saves its last frame (--screenshot).
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
 #include "commands.h"
+#include "fonts.h"
+#include "gl_api.h"
+#include "png_writer.h"
+#include "scene_renderer.h"
+#include "viewer_state.h"
+#include "viewer_ui.h"
+
 namespace bsim {
-int run_window(const PreviewOptions&, const SceneSource&) { return 1; }
+
+namespace {
+
+constexpr double kReloadPoll = 0.25;  // s between looks at the scene file's time stamp
+
+std::string g_glfw_error;
+void remember_glfw_error(int, const char* description) { g_glfw_error = description ? description : ""; }
+
+void (*glfw_proc(const char* name))() { return glfwGetProcAddress(name); }
+
+bool has_display() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
 }
+
+struct GlfwSession {
+  GLFWwindow* window = nullptr;
+  bool imgui_glfw = false, imgui_gl = false;
+  ~GlfwSession() {
+    if (imgui_gl) ImGui_ImplOpenGL3_Shutdown();
+    if (imgui_glfw) ImGui_ImplGlfw_Shutdown();
+    if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
+    if (window) glfwDestroyWindow(window);
+    glfwTerminate();
+  }
+};
+
+// The key bindings (listed in the window's help line and README).
+void handle_keys(ViewerState& state, GLFWwindow* window) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return;
+  const bool shift = io.KeyShift;
+  if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) {
+    if (state.time >= state.duration()) state.set_time(0);
+    state.playing = !state.playing;
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) shift ? state.step_event(1) : state.step_frames(1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) shift ? state.step_event(-1) : state.step_frames(-1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN) || ImGui::IsKeyPressed(GLFW_KEY_PERIOD)) state.step_event(1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP) || ImGui::IsKeyPressed(GLFW_KEY_COMMA)) state.step_event(-1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) state.set_time(0);
+  if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) state.set_time(state.duration());
+  if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) state.free_camera = !state.free_camera;
+  if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state.overlays.paths = !state.overlays.paths;
+  if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.overlays.events = !state.overlays.events;
+  if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) state.overlays.camera = !state.overlays.camera;
+  if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) state.antialias = !state.antialias;
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) load_into(state);
+  if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
+    glfwSetWindowShouldClose(window, GLFW_TRUE);
+}
+
+// Mouse on the 3D view drives the free camera: left drag orbits, right (or middle) drag pans, the wheel zooms.
+void handle_mouse(ViewerState& state, const ViewRect& view) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!state.free_camera || io.WantCaptureMouse) return;
+  const bool inside = io.MousePos.x >= view.x && io.MousePos.x < view.x + view.width && io.MousePos.y >= view.y &&
+                      io.MousePos.y < view.y + view.height;
+  if (inside && io.MouseWheel != 0) state.orbit.zoom(io.MouseWheel);
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) state.orbit.orbit(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
+    state.orbit.pan(io.MouseDelta.x, io.MouseDelta.y, view.height);
+}
+
+bool save_screenshot(const std::string& path, int width, int height) {
+  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  std::string error;
+  if (!write_png(path, pixels, width, height, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_window(const PreviewOptions& options, const SceneSource& source) {
+  if (!has_display()) {
+    std::cerr << "billiards-preview: no display for the window (DISPLAY is not set); "
+                 "use --at SECONDS -o FILE.png, --timeline -o FILE.png or --movie FILE.mp4\n";
+    return 2;
+  }
+  glfwSetErrorCallback(remember_glfw_error);
+  GlfwSession session;
+  if (!glfwInit()) {
+    std::cerr << "billiards-preview: no display for the window (" << g_glfw_error << ")\n";
+    return 2;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_DEPTH_BITS, 24);
+  glfwWindowHint(GLFW_STENCIL_BITS, 8);
+  const std::string title = "billiards-preview \xE2\x80\x94 " + source.shown_path;
+  // The window is the picture plus room for the controls below it.
+  session.window = glfwCreateWindow(options.width, options.height + kControlsHeight, title.c_str(), nullptr, nullptr);
+  if (!session.window) {
+    std::cerr << "billiards-preview: error: cannot open an OpenGL 3.3 window (" << g_glfw_error << ")\n";
+    return 1;
+  }
+  glfwMakeContextCurrent(session.window);
+  glfwSwapInterval(options.quit_after > 0 ? 0 : 1);
+  const char* missing = nullptr;
+  if (!load_gl_table(glfw_proc, &missing)) {
+    std::cerr << "billiards-preview: error: the window's OpenGL lacks " << missing << "\n";
+    return 1;
+  }
+
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  const UiFonts fonts = add_ui_fonts(*io.Fonts, 16.f);
+  ImGui::StyleColorsDark();
+  session.imgui_glfw = ImGui_ImplGlfw_InitForOpenGL(session.window, true);
+  session.imgui_gl = ImGui_ImplOpenGL3_Init("#version 330 core");
+  SceneRenderer renderer;
+  std::string error;
+  if (!session.imgui_glfw || !session.imgui_gl || !renderer.init(error)) {
+    std::cerr << "billiards-preview: error: " << (error.empty() ? "cannot set up the window's drawing" : error) << "\n";
+    return 1;
+  }
+
+  ViewerState state;
+  state.source = source;
+  state.fps = options.fps;
+  state.overlays = options.overlays;
+  if (load_into(state)) renderer.set_scene(state.shot->scene);
+  for (const std::string& line : state.messages) std::cerr << line << "\n";
+  FileWatch watch(source.path);
+
+  const double started = glfwGetTime();
+  double last_poll = started;
+  bool quit = false;
+  while (!quit) {
+    glfwPollEvents();
+    const double now = glfwGetTime();
+    if (now - last_poll >= kReloadPoll) {
+      last_poll = now;
+      if (watch.changed()) {
+        if (load_into(state)) renderer.set_scene(state.shot->scene);
+        for (const std::string& line : state.messages) std::cerr << line << "\n";
+      }
+    }
+    // A test drives the window by itself: it scrubs from start to end over --quit-after seconds.
+    if (options.quit_after > 0) {
+      const double progress = std::min((now - started) / options.quit_after, 1.0);
+      state.set_time(progress * state.duration());
+      quit = progress >= 1.0;
+    } else if (state.playing) {
+      state.set_time(state.time + io.DeltaTime * state.speed);
+      if (state.time >= state.duration()) state.playing = false;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handle_keys(state, session.window);
+    int fb_width = 0, fb_height = 0;
+    glfwGetFramebufferSize(session.window, &fb_width, &fb_height);
+    const ViewRect view = view_rect(io.DisplaySize.x, io.DisplaySize.y, options.width, options.height);
+    handle_mouse(state, view);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb_width, fb_height);
+    glClearColor(0.07f, 0.075f, 0.085f, 1.f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    if (state.shot && view.width >= 1 && view.height >= 1) {
+      // ImGui works in window units, GL in framebuffer pixels; they differ on high-density screens.
+      const double sx = fb_width / std::max(1.0, double(io.DisplaySize.x));
+      const double sy = fb_height / std::max(1.0, double(io.DisplaySize.y));
+      FrameState frame = scripted_frame(*state.shot, state.time);
+      if (state.free_camera) frame.camera = state.orbit.view();
+      renderer.set_multisampling(state.antialias ? 4 : 0);
+      const int w = static_cast<int>(view.width * sx), h = static_cast<int>(view.height * sy);
+      renderer.draw(state.shot->scene, frame, w, h, static_cast<int>(view.x * sx),
+                    fb_height - static_cast<int>((view.y + view.height) * sy));
+      draw_view_overlays(state, frame.camera, view, fonts);
+    }
+    draw_controls(state, fonts, io.DisplaySize.x, io.DisplaySize.y);
+    ImGui::Render();
+    glViewport(0, 0, fb_width, fb_height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (glfwWindowShouldClose(session.window)) quit = true;
+    if (quit && options.screenshot && !save_screenshot(*options.screenshot, fb_width, fb_height)) return 1;
+    glfwSwapBuffers(session.window);
+  }
+  return state.shot ? 0 : 1;
+}
+
+}  // namespace bsim

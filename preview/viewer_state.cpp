@@ -1,0 +1,101 @@
+#include "viewer_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace bsim {
+
+namespace {
+constexpr double kDegPerPixel = 0.3;  // orbit speed of a mouse drag
+constexpr double kMinDistance = 0.15, kMaxDistance = 20.0;  // m
+}  // namespace
+
+ViewCamera OrbitCamera::view() const {
+  const double yaw = yaw_deg * std::numbers::pi / 180, pitch = pitch_deg * std::numbers::pi / 180;
+  ViewCamera v;
+  v.target = target;
+  v.eye = target + distance * Vec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+  return v;
+}
+
+void OrbitCamera::orbit(double dx, double dy) {
+  yaw_deg -= dx * kDegPerPixel;
+  pitch_deg = std::clamp(pitch_deg + dy * kDegPerPixel, -85.0, 89.0);
+}
+
+void OrbitCamera::pan(double dx, double dy, double view_height_px) {
+  const ViewCamera v = view();
+  const Vec3 forward = (v.target - v.eye).normalized();
+  const Vec3 right = forward.cross(Vec3(0, 0, 1)).normalized();
+  const Vec3 up = right.cross(forward);
+  // Move the target so the point under the cursor follows it.
+  const double metres_per_px =
+      2 * distance * std::tan(vertical_fov_deg(v.hfov_deg, 16.0 / 9.0) * std::numbers::pi / 360) / view_height_px;
+  target += (-dx * right + dy * up) * metres_per_px;
+}
+
+void OrbitCamera::zoom(double steps) { distance = std::clamp(distance * std::pow(0.88, steps), kMinDistance, kMaxDistance); }
+
+double ViewerState::duration() const { return shot ? shot->timeline.duration() : 0; }
+
+void ViewerState::set_time(double t) { time = std::clamp(t, 0.0, duration()); }
+
+void ViewerState::step_frames(int frames) {
+  // Land on frame boundaries, as the movie samples them.
+  const double frame = std::round(time * fps) + frames;
+  set_time(frame / fps);
+  playing = false;
+}
+
+void ViewerState::step_event(int direction) {
+  if (!shot) return;
+  const auto& events = shot->timeline.events();
+  constexpr double kSame = 1e-9;  // s; events closer than this count as the one we are on
+  if (direction > 0) {
+    for (const Event& e : events)
+      if (e.time > time + kSame) {
+        set_time(e.time);
+        break;
+      }
+  } else {
+    for (auto it = events.rbegin(); it != events.rend(); ++it)
+      if (it->time < time - kSame) {
+        set_time(it->time);
+        break;
+      }
+  }
+  playing = false;
+}
+
+bool load_into(ViewerState& state) {
+  LoadedShot loaded = load_source(state.source);
+  state.messages = std::move(loaded.messages);
+  state.load_failed = !loaded.shot;
+  if (!loaded.shot) return false;
+  state.shot = std::move(loaded.shot);
+  state.timeline = timeline_data(*state.shot);
+  state.set_time(state.time);  // keep the time, within the new shot
+  ++state.reloads;
+  return true;
+}
+
+FileWatch::FileWatch(std::optional<std::string> path) {
+  if (path) path_ = *path;
+  changed();
+}
+
+bool FileWatch::changed() {
+  if (!path_) return false;
+  std::error_code ec;
+  const bool exists = std::filesystem::is_regular_file(*path_, ec);
+  const auto stamp = exists ? std::filesystem::last_write_time(*path_, ec) : std::filesystem::file_time_type{};
+  const auto size = exists ? std::filesystem::file_size(*path_, ec) : 0;
+  const bool different = exists != exists_ || stamp != stamp_ || size != size_;
+  exists_ = exists;
+  stamp_ = stamp;
+  size_ = size;
+  return different;
+}
+
+}  // namespace bsim

@@ -1,0 +1,71 @@
+#pragma once
+// What the interactive window keeps between frames: the loaded shot (and the last problems), the
+// time and play state, the camera choice with the free orbit camera, the overlays, and the watch
+// on the scene file for hot reload.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "preview_options.h"
+#include "shot_source.h"
+#include "timeline_picture.h"
+#include "view.h"
+
+namespace bsim {
+
+struct OrbitCamera {
+  Vec3 target{0, 0, 0};
+  double yaw_deg = -60;    ///< around z, from +x
+  double pitch_deg = 40;   ///< above the table plane
+  double distance = 4.2;   ///< m
+
+  ViewCamera view() const;
+  void orbit(double dx_px, double dy_px);
+  void pan(double dx_px, double dy_px, double view_height_px);
+  void zoom(double wheel_steps);
+};
+
+struct ViewerState {
+  SceneSource source;
+  std::unique_ptr<Shot> shot;         ///< the last scene that loaded; null until one does
+  std::vector<std::string> messages;  ///< errors and warnings of the last load, as printed
+  bool load_failed = false;           ///< the last load had errors (the previous shot stays shown)
+  int reloads = 0;
+  TimelineData timeline;              ///< the scrub bar's contents, for the current shot
+
+  double time = 0;        ///< s
+  bool playing = false;
+  double speed = 1.0;
+  int fps = 30;           ///< step size of the frame keys
+  bool free_camera = false;
+  OrbitCamera orbit;
+  PreviewOverlays overlays;
+  bool antialias = false;
+
+  double duration() const;
+  void set_time(double t);
+  void step_frames(int frames);
+  /// Jumps to the next (+1) or previous (-1) event.
+  void step_event(int direction);
+};
+
+/// Loads the source into the state; on errors keeps the previous shot and records the messages.
+/// Returns true when a new shot replaced the old one.
+bool load_into(ViewerState& state);
+
+/// Notices when the scene file changes on disk (by time stamp and size).
+class FileWatch {
+ public:
+  explicit FileWatch(std::optional<std::string> path);
+  /// True once per change since the last call.
+  bool changed();
+
+ private:
+  std::optional<std::filesystem::path> path_;
+  std::filesystem::file_time_type stamp_{};
+  std::uintmax_t size_ = 0;
+  bool exists_ = false;
+};
+
+}  // namespace bsim

@@ -1,0 +1,180 @@
+#include "viewer_ui.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "labels.h"
+#include "overlays.h"
+#include "shot.h"
+#include "timeline_picture.h"
+
+namespace bsim {
+
+namespace {
+
+constexpr float kEventListWidth = 300;  // px
+constexpr double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0};
+constexpr const char* kKeyHelp =
+    "Space play/pause   \xE2\x86\x90 \xE2\x86\x92 frame   Shift+\xE2\x86\x90 \xE2\x86\x92 or , . event   Home End   "
+    "C scripted/free camera   P paths   E events   M camera map   A antialias   R reload   Q quit";
+
+void transport(ViewerState& state) {
+  if (ImGui::Button("|<")) state.set_time(0);
+  ImGui::SameLine();
+  if (ImGui::Button("<< event")) state.step_event(-1);
+  ImGui::SameLine();
+  if (ImGui::Button("< frame")) state.step_frames(-1);
+  ImGui::SameLine();
+  if (ImGui::Button(state.playing ? "  pause  " : "  play  ")) {
+    if (!state.playing && state.time >= state.duration()) state.set_time(0);
+    state.playing = !state.playing;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("frame >")) state.step_frames(1);
+  ImGui::SameLine();
+  if (ImGui::Button("event >>")) state.step_event(1);
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) state.set_time(state.duration());
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  char speed[16];
+  std::snprintf(speed, sizeof speed, "%gx", state.speed);
+  if (ImGui::BeginCombo("speed", speed)) {
+    for (double s : kSpeeds) {
+      std::snprintf(speed, sizeof speed, "%gx", s);
+      if (ImGui::Selectable(speed, s == state.speed)) state.speed = s;
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::Text("t = %.3f s / %.3f s   frame %d", state.time, state.duration(),
+              static_cast<int>(std::lround(state.time * state.fps)));
+}
+
+void switches(ViewerState& state) {
+  if (ImGui::RadioButton("scripted camera", !state.free_camera)) state.free_camera = false;
+  ImGui::SameLine();
+  if (ImGui::RadioButton("free orbit camera", state.free_camera)) state.free_camera = true;
+  ImGui::SameLine(0, 30);
+  ImGui::Checkbox("paths", &state.overlays.paths);
+  ImGui::SameLine();
+  ImGui::Checkbox("events", &state.overlays.events);
+  ImGui::SameLine();
+  ImGui::Checkbox("camera map", &state.overlays.camera);
+  ImGui::SameLine(0, 30);
+  ImGui::Checkbox("antialias", &state.antialias);
+}
+
+// The compact timeline as a slider: click or drag anywhere on it to set the time.
+void scrub_bar(ViewerState& state, const UiFonts& fonts) {
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = compact_timeline_height(fonts);
+  ImGui::InvisibleButton("scrub", ImVec2(width, height));
+  TimelineLayout layout{at.x, at.y, width, height, true, state.time};
+  const TimelineAxis axis = draw_timeline(*ImGui::GetWindowDrawList(), state.timeline, fonts, layout);
+  if (ImGui::IsItemActive() && state.shot) {
+    state.set_time(axis.time_at(ImGui::GetIO().MousePos.x));
+    state.playing = false;
+  }
+}
+
+void event_list(ViewerState& state, float window_height) {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kEventListWidth, std::max(120.f, window_height - kControlsHeight - 16)),
+                           ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Events (click to jump)") && state.shot) {
+    const Event* current = nullptr;
+    for (const Event& e : state.shot->timeline.events())
+      if (e.time <= state.time + 1e-9) current = &e;
+    for (const Event& e : state.shot->timeline.events()) {
+      char label[160];
+      std::snprintf(label, sizeof label, "%3d  %7.3f s  %s", e.index, e.time, event_label(e).c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(event_color(e.type)));
+      if (ImGui::Selectable(label, &e == current)) {
+        state.set_time(e.time);
+        state.playing = false;
+      }
+      ImGui::PopStyleColor();
+    }
+    for (const PocketDrop& d : state.shot->timeline.pocket_drops()) {
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pocket_color()), "     %7.3f s  ball %d into pocket %d", d.time,
+                         d.ball, d.pocket);
+    }
+  }
+  ImGui::End();
+}
+
+void problems(const ViewerState& state, float window_width) {
+  if (state.messages.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(window_width / 2, 8), ImGuiCond_Always, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(window_width - 40, 400));
+  ImGui::SetNextWindowBgAlpha(0.9f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+  ImGui::Begin(state.load_failed ? "The scene has errors" : "Warnings", nullptr, flags);
+  for (const std::string& line : state.messages) {
+    const bool is_error = line.find(": error:") != std::string::npos;
+    ImGui::TextColored(is_error ? ImVec4(1.f, 0.45f, 0.4f, 1.f) : ImVec4(1.f, 0.85f, 0.4f, 1.f), "%s", line.c_str());
+  }
+  if (state.load_failed)
+    ImGui::TextUnformatted(state.shot ? "Showing the last version that loaded; fix the file and save to reload."
+                                      : "Fix the file and save: it reloads by itself.");
+  ImGui::End();
+}
+
+}  // namespace
+
+ViewRect view_rect(float window_width, float window_height, int picture_width, int picture_height) {
+  const float area_h = std::max(0.f, window_height - kControlsHeight);
+  const float aspect = static_cast<float>(picture_width) / static_cast<float>(std::max(picture_height, 1));
+  ViewRect r;
+  r.width = std::min(window_width, area_h * aspect);
+  r.height = r.width / aspect;
+  r.x = std::floor((window_width - r.width) / 2);
+  r.y = std::floor((area_h - r.height) / 2);
+  r.width = std::floor(r.width);
+  r.height = std::floor(r.height);
+  return r;
+}
+
+void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, const ViewRect& view, const UiFonts& fonts) {
+  if (!state.shot) return;
+  ImDrawList& list = *ImGui::GetBackgroundDrawList();
+  const OverlayFrame frame{*state.shot, state.time, camera, view.width, view.height, fonts, view.x, view.y};
+  list.PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
+  if (state.free_camera) draw_scripted_frustum(list, frame, static_cast<double>(view.width) / view.height);
+  draw_overlays(list, frame, state.overlays);
+  const char* which = state.free_camera ? "free orbit camera (drag: orbit, right-drag: pan, wheel: zoom)"
+                                        : "scripted camera";
+  list.AddText(fonts.small, fonts.small_size, ImVec2(view.x + view.width - fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, 0, which).x - 8,
+                                                     view.y + view.height - fonts.small_size - 6),
+               IM_COL32(220, 220, 220, 200), which);
+  list.PopClipRect();
+}
+
+void draw_controls(ViewerState& state, const UiFonts& fonts, float window_width, float window_height) {
+  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoSavedSettings;
+  ImGui::SetNextWindowPos(ImVec2(0, window_height - kControlsHeight));
+  ImGui::SetNextWindowSize(ImVec2(window_width, kControlsHeight));
+  ImGui::Begin("controls", nullptr, fixed);
+  transport(state);
+  scrub_bar(state, fonts);
+  switches(state);
+  ImGui::PushFont(fonts.small);
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("%s", kKeyHelp);
+  ImGui::PopTextWrapPos();
+  ImGui::PopFont();
+  ImGui::End();
+  event_list(state, window_height);
+  problems(state, window_width);
+}
+
+}  // namespace bsim

@@ -1,0 +1,162 @@
+// Golden pictures of the preview: a frame of a made-up table (a rack, turned balls, the stick) and a
+// made-up timeline, drawn in-process and compared with tests/golden/preview/*.png within a tolerance.
+// The inputs are built here, not simulated, so only a change to the drawing moves the pictures.
+//
+// Regenerate after an intended change to the drawing (then look at the new pictures before committing):
+//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests --source-file='*test_preview_golden.cpp'
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+#include <stb_image.h>
+
+#include "headless_canvas.h"
+#include "png_writer.h"
+#include "scene_renderer.h"
+#include "timeline_picture.h"
+
+using namespace bsim;
+
+namespace {
+
+std::filesystem::path golden_path(const std::string& name) {
+  return std::filesystem::path(BSIM_SOURCE_DIR) / "tests" / "golden" / "preview" / name;
+}
+
+Scene rack_scene() {
+  Scene scene;
+  scene.name = "golden";
+  scene.rails = standard_rails();
+  scene.pockets = standard_pockets();
+  const double r = scene.physics.ball_radius, d = 2 * r + 0.0005;
+  const int order[15] = {1, 9, 2, 10, 8, 3, 11, 7, 14, 4, 5, 13, 15, 6, 12};
+  scene.balls.push_back(Ball{0, Vec3(0.0, -0.1, r), Vec3::Zero(), Vec3::Zero(), Quat::Identity(), {}});
+  int k = 0;
+  for (int row = 0; row < 5; ++row)
+    for (int j = 0; j <= row; ++j) {
+      // Turn every ball differently so stripes and numbers show at many angles.
+      const Quat turn(Eigen::AngleAxisd(0.35 * k, Vec3(std::cos(k), std::sin(k), 0.4).normalized()));
+      scene.balls.push_back(Ball{order[k], Vec3(0.45 + row * d * std::sqrt(3.0) / 2, (j - row / 2.0) * d, r),
+                                 Vec3::Zero(), Vec3::Zero(), turn, {}});
+      ++k;
+    }
+  return scene;
+}
+
+FrameState rack_frame(const Scene& scene) {
+  FrameState frame;
+  for (const Ball& b : scene.balls) frame.balls.push_back(BallState{b.position, Vec3::Zero(), Vec3::Zero(), b.orientation, Motion::stationary});
+  frame.cue.visible = true;
+  frame.cue.tip = Vec3(-0.035, -0.108, 0.03);
+  frame.cue.axis = Vec3(-1, -0.2, 0.12).normalized();
+  frame.camera.eye = Vec3(-0.42, -0.55, 0.36);
+  frame.camera.target = Vec3(0.42, 0.0, 0.0);
+  return frame;
+}
+
+TimelineData made_up_timeline() {
+  TimelineData data;
+  data.title = "golden  \xE2\x80\x94  6.00 s, 8 events (0 to 7), 1 pocketed";
+  data.duration = 6.0;
+  const std::pair<double, EventType> events[] = {{0.0, EventType::start},     {2.5, EventType::cue},
+                                                 {2.9, EventType::ball_ball}, {3.05, EventType::ball_rail},
+                                                 {3.1, EventType::ball_ball}, {3.6, EventType::ball_rail},
+                                                 {4.4, EventType::ball_rail}, {6.0, EventType::end}};
+  int index = 0;
+  for (const auto& [time, type] : events) data.events.push_back({index++, time, type, "made-up event"});
+  data.drops.push_back({4.9, 3, 2});
+  data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover"},
+                 {2.5, 3.1, 1, CameraMode::follow, "follow ball 0"},
+                 {3.1, 6.0, 4, CameraMode::look, "look ball 3"}};
+  data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}};
+  data.cue = {{CuePhase::approach, 0.0, 0.9},
+              {CuePhase::preflight, 0.9, 2.25},
+              {CuePhase::impact, 2.25, 2.6},
+              {CuePhase::retraction, 2.6, 3.3}};
+  return data;
+}
+
+struct Comparison {
+  double mean = 0;      ///< mean absolute difference per channel, 0-255
+  double outliers = 0;  ///< fraction of pixels with a channel off by more than kOutlier
+};
+constexpr int kOutlier = 48;
+// Another compiler or Mesa build may move edges by a pixel and shading by a level or two.
+constexpr double kMaxMean = 2.0;
+constexpr double kMaxOutliers = 0.01;
+
+Comparison compare(const std::vector<std::uint8_t>& rgba_bottom_up, int width, int height, const std::string& golden) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* expected = stbi_load(golden.c_str(), &w, &h, &channels, 3);
+  REQUIRE_MESSAGE(expected, "no golden picture " << golden << "; make it with BSIM_UPDATE_GOLDENS=1");
+  REQUIRE(w == width);
+  REQUIRE(h == height);
+  Comparison c;
+  long long total = 0, outliers = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::uint8_t* got = &rgba_bottom_up[(static_cast<std::size_t>(height - 1 - y) * width + x) * 4];
+      const unsigned char* want = &expected[(static_cast<std::size_t>(y) * width + x) * 3];
+      int worst = 0;
+      for (int k = 0; k < 3; ++k) {
+        const int d = std::abs(int(got[k]) - int(want[k]));
+        total += d;
+        worst = std::max(worst, d);
+      }
+      outliers += worst > kOutlier;
+    }
+  stbi_image_free(expected);
+  c.mean = static_cast<double>(total) / (3.0 * width * height);
+  c.outliers = static_cast<double>(outliers) / (static_cast<double>(width) * height);
+  return c;
+}
+
+void check_against_golden(HeadlessCanvas& canvas, const std::string& name) {
+  const std::string golden = golden_path(name).string();
+  std::string error;
+  if (std::getenv("BSIM_UPDATE_GOLDENS")) {
+    std::filesystem::create_directories(golden_path("").parent_path());
+    REQUIRE_MESSAGE(canvas.write_png(golden, error), error);
+    MESSAGE("rewrote " << golden);
+    return;
+  }
+  const Comparison c = compare(canvas.pixels(), canvas.width(), canvas.height(), golden);
+  if (c.mean > kMaxMean || c.outliers > kMaxOutliers) {
+    const std::string actual = (std::filesystem::temp_directory_path() / ("actual-" + name)).string();
+    canvas.write_png(actual, error);
+    FAIL_CHECK(name << " differs from its golden picture (mean difference " << c.mean << ", " << c.outliers * 100
+                    << "% of pixels far off); this run drew " << actual);
+  }
+}
+
+}  // namespace
+
+TEST_SUITE("preview golden pictures") {
+  TEST_CASE("a frame: table, pockets, numbered and striped balls turned every way, the stick, shadows") {
+    HeadlessCanvas canvas;
+    SceneRenderer renderer;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(480, 270, 13, error), error);
+    REQUIRE_MESSAGE(renderer.init(error), error);
+    const Scene scene = rack_scene();
+    renderer.set_multisampling(4);
+    renderer.set_scene(scene);
+    renderer.draw(scene, rack_frame(scene), 480, 270);
+    check_against_golden(canvas, "frame.png");
+  }
+
+  TEST_CASE("the timeline: event marks and numbers, a pocket drop, camera spans, windows, cue phases, the list") {
+    HeadlessCanvas canvas;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(800, 300, 14, error), error);
+    ImDrawList* list = canvas.begin_2d();
+    draw_timeline(*list, made_up_timeline(), canvas.fonts(), {0, 0, 800, 300});
+    canvas.end_2d();
+    check_against_golden(canvas, "timeline.png");
+  }
+}

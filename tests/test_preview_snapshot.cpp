@@ -1,0 +1,172 @@
+// billiards-preview headless, end to end: snapshots of the requested size with real detail, the same
+// bytes every run, `event:N` as the instant of event N, the timeline picture, the animatic, and the
+// one-line refusal to open a window without a display.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <stb_image.h>
+
+#include "shot.h"
+#include "support.h"
+
+using namespace bsim;
+using bsim::test::bin;
+using bsim::test::run_command;
+using bsim::test::TempDir;
+
+namespace {
+
+// The cue ball sent into a small cluster: a few collisions and a cushion within a couple of seconds.
+constexpr const char* kScene = R"(cue 0 0
+ball 0  -0.6 0.0  0.028575   2.5 0 0   1 0 0 0
+ball 1   0.2 0.01 0.028575   0 0 0     1 0 0 0
+ball 9   0.3 0.05 0.028575   0 0 0     0.7071 0.7071 0 0
+ball 8   0.3 -0.04 0.028575  0 0 0     1 0 0 0
+camera
+event 0 0 0 hover -1.5 -1.1 1.0   0 0 0
+event 2 0.3 0.3 follow 0 -0.6 0 0.3
+endcamera
+)";
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+  int distinct_colours() const {
+    std::set<unsigned> seen;
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3)
+      seen.insert(unsigned(rgb[i]) << 16 | unsigned(rgb[i + 1]) << 8 | rgb[i + 2]);
+    return static_cast<int>(seen.size());
+  }
+};
+
+Image load_png(const std::string& path) {
+  Image image;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+  REQUIRE_MESSAGE(data, "cannot read " << path);
+  image.rgb.assign(data, data + static_cast<std::size_t>(image.width) * image.height * 3);
+  stbi_image_free(data);
+  return image;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string preview(const std::string& args) { return bin("billiards-preview") + " " + args; }
+
+}  // namespace
+
+TEST_SUITE("preview snapshots") {
+  TEST_CASE("a snapshot is a detailed picture of the requested size, the same bytes every time") {
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", kScene);
+    const std::string a = (dir.path / "a.png").string(), b = (dir.path / "b.png").string();
+    const auto first = run_command(preview(scene + " --at 2.9 --size 320x180 -o " + a));
+    INFO(first.err);
+    REQUIRE(first.exit_code == 0);
+    const Image image = load_png(a);
+    CHECK(image.width == 320);
+    CHECK(image.height == 180);
+    CHECK(image.distinct_colours() > 200);
+    REQUIRE(run_command(preview(scene + " --at 2.9 --size 320x180 -o " + b)).exit_code == 0);
+    CHECK(slurp(a) == slurp(b));
+  }
+
+  TEST_CASE("--at event:N shows the instant of event N, and a missing event is a usage error") {
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", kScene);
+    const ShotResult loaded = load_shot(kScene, "cluster");
+    REQUIRE(loaded.shot);
+    const auto& events = loaded.shot->timeline.events();
+    REQUIRE(events.size() >= 4);
+    // The time printed with enough digits to read back as the same double.
+    std::ostringstream seconds;
+    seconds.precision(17);
+    seconds << events[2].time;
+    const std::string by_event = (dir.path / "e.png").string(), by_time = (dir.path / "t.png").string();
+    REQUIRE(run_command(preview(scene + " --at event:2 --size 160x90 -o " + by_event)).exit_code == 0);
+    REQUIRE(run_command(preview(scene + " --at " + seconds.str() + " --size 160x90 -o " + by_time)).exit_code == 0);
+    CHECK(slurp(by_event) == slurp(by_time));
+
+    const std::string missing = (dir.path / "m.png").string();
+    const auto bad = run_command(preview(scene + " --at event:" + std::to_string(events.size()) + " -o " + missing));
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("numbered 0 to " + std::to_string(events.size() - 1)) != std::string::npos);
+    CHECK_FALSE(std::ifstream(missing).good());
+  }
+
+  TEST_CASE("different times give different pictures; the overlays add to the picture") {
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", kScene);
+    const std::string early = (dir.path / "early.png").string(), late = (dir.path / "late.png").string();
+    const std::string marked = (dir.path / "marked.png").string();
+    REQUIRE(run_command(preview(scene + " --at 0.5 --size 160x90 -o " + early)).exit_code == 0);
+    REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 -o " + late)).exit_code == 0);
+    REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 --overlay paths,events,camera -o " + marked)).exit_code == 0);
+    CHECK(slurp(early) != slurp(late));
+    CHECK(slurp(late) != slurp(marked));
+  }
+
+  TEST_CASE("a scene error is reported with its location and writes nothing") {
+    TempDir dir;
+    const std::string scene =
+        dir.file("bad.scn", "cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 99 0.5 0 0.028575 0 0 0 1 0 0 0\n");
+    const std::string out = (dir.path / "x.png").string();
+    const auto r = run_command(preview(scene + " --at 1 -o " + out));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find(scene + ":3:") != std::string::npos);
+    CHECK_FALSE(std::ifstream(out).good());
+  }
+
+  TEST_CASE("the timeline picture has the requested size, or a wide default") {
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", kScene);
+    const std::string sized = (dir.path / "sized.png").string(), wide = (dir.path / "wide.png").string();
+    REQUIRE(run_command(preview(scene + " --timeline --size 800x200 -o " + sized)).exit_code == 0);
+    const Image small = load_png(sized);
+    CHECK(small.width == 800);
+    CHECK(small.height == 200);
+    CHECK(small.distinct_colours() > 40);
+    REQUIRE(run_command(preview(scene + " --timeline -o " + wide)).exit_code == 0);
+    CHECK(load_png(wide).width == 1600);
+  }
+
+  TEST_CASE("the animatic is an MP4 with video and sound as long as its frames") {
+    if (run_command("command -v ffmpeg && command -v ffprobe").exit_code != 0) {
+      MESSAGE("ffmpeg is not installed: animatic not tested");
+      return;
+    }
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", kScene);
+    const std::string movie = (dir.path / "a.mp4").string();
+    const auto r = run_command(preview(scene + " --movie " + movie + " --size 160x90 --fps 8"));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto probe = run_command("ffprobe -v error -show_entries stream=codec_type,width,nb_frames -of csv=p=0 " + movie);
+    CHECK(probe.out.find("video") != std::string::npos);
+    CHECK(probe.out.find("audio") != std::string::npos);
+    const ShotResult loaded = load_shot(kScene, "cluster");
+    REQUIRE(loaded.shot);
+    const int frames = static_cast<int>(loaded.shot->timeline.duration() * 8 + 1e-9) + 1;
+    CHECK(probe.out.find("160," + std::to_string(frames)) != std::string::npos);
+    CHECK_FALSE(std::ifstream(movie + ".partial").good());
+  }
+
+  TEST_CASE("without a display the window says so in one line and exits 2") {
+    const auto r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + bin("billiards-preview"));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("no display") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}

@@ -1,0 +1,112 @@
+// The interactive window: under Xvfb it opens, scrubs through the shot by itself, quits and leaves
+// a screenshot that is a real picture; and its hot reload keeps the last good shot and the time
+// when the file on disk turns bad, reporting the error's line and column.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <stb_image.h>
+
+#include "support.h"
+#include "viewer_state.h"
+#include "viewer_ui.h"
+
+using namespace bsim;
+using bsim::test::bin;
+using bsim::test::run_command;
+using bsim::test::TempDir;
+
+namespace {
+
+constexpr const char* kScene = R"(cue 0 0
+ball 0  -0.75 0.0  0.028575   1.6 0 0   1 0 0 0
+ball 1   0.25 0.02 0.028575   0 0 0     1 0 0 0
+camera
+event 0 0 0       hover  -1.9 -1.1 0.9   -0.6 0 0
+event 1 0.3 0.5   follow 0   -0.7 0 0.35
+endcamera
+)";
+
+}  // namespace
+
+TEST_SUITE("preview window") {
+  TEST_CASE("under Xvfb the window opens, scrubs, quits by itself and saves a screenshot") {
+    if (run_command("command -v xvfb-run").exit_code != 0) {
+      MESSAGE("xvfb-run is not installed: window smoke test skipped");
+      return;
+    }
+    TempDir dir;
+    const std::string scene = dir.file("tour.scn", kScene);
+    const std::string shot = (dir.path / "window.png").string();
+    const auto r = run_command("xvfb-run -a -s '-screen 0 1024x768x24' " + bin("billiards-preview") + " " + scene +
+                               " --size 640x360 --overlay events --quit-after 1.5 --screenshot " + shot);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(shot.c_str(), &width, &height, &channels, 3);
+    REQUIRE(pixels);
+    CHECK(width == 640);
+    CHECK(height == 360 + kControlsHeight);
+    std::set<unsigned> colours;
+    long long cloth = 0;
+    for (int i = 0; i < width * height; ++i) {
+      const unsigned char* p = pixels + 3 * i;
+      colours.insert(unsigned(p[0]) << 16 | unsigned(p[1]) << 8 | p[2]);
+      cloth += p[1] > p[0] + 30 && p[1] > p[2] + 20;  // green: the table is in view
+    }
+    stbi_image_free(pixels);
+    CHECK(colours.size() > 500);
+    CHECK(cloth > width * height / 20);
+  }
+
+  TEST_CASE("hot reload: a bad edit keeps the shot and the time and reports line and column; a fix reloads") {
+    TempDir dir;
+    const std::string path = dir.file("live.scn", kScene);
+    ViewerState state;
+    state.source = scene_source(path, false);
+    FileWatch watch(path);
+    CHECK_FALSE(watch.changed());
+    REQUIRE(load_into(state));
+    REQUIRE(state.shot);
+    state.set_time(3.0);
+    const Shot* first = state.shot.get();
+
+    std::string broken = kScene;
+    broken.replace(broken.find("follow 0"), 8, "follow 17");  // no ball 17
+    std::ofstream(path, std::ios::binary) << broken;
+    CHECK(watch.changed());
+    CHECK_FALSE(load_into(state));
+    CHECK(state.load_failed);
+    CHECK(state.shot.get() == first);
+    CHECK(state.time == 3.0);
+    REQUIRE_FALSE(state.messages.empty());
+    CHECK(state.messages.front().find(path + ":6:") == 0);
+
+    std::ofstream(path, std::ios::binary) << kScene << "# edited\n";
+    CHECK(watch.changed());
+    CHECK(load_into(state));
+    CHECK_FALSE(state.load_failed);
+    CHECK(state.shot.get() != first);
+    CHECK(state.time == 3.0);
+  }
+
+  TEST_CASE("frame and event stepping land on frames and events") {
+    ViewerState state;
+    state.source = scene_source(std::nullopt, false);
+    REQUIRE(load_into(state));
+    state.fps = 30;
+    state.set_time(0);
+    state.step_frames(3);
+    CHECK(state.time == doctest::Approx(0.1));
+    state.step_event(1);
+    const auto& events = state.shot->timeline.events();
+    REQUIRE(events.size() >= 2);
+    CHECK(state.time == events[1].time);
+    state.step_event(-1);
+    CHECK(state.time == events[0].time);
+    state.set_time(1e9);
+    CHECK(state.time == state.duration());
+  }
+}
