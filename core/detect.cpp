@@ -15,18 +15,36 @@ Poly circle_gap(const Vec3& c, const Vec3& b, const Vec3& a, double d) {
   return Poly{{dot2(c, c) - d * d, 2 * dot2(b, c), dot2(b, b) + 2 * dot2(a, c), 2 * dot2(a, b), dot2(a, a)}};
 }
 
+/// The first contact time given f, a measure of separation with f(0) = separation now: f > 0 apart,
+/// and f = level(x) when the two overlap by x (level(0) = 0, decreasing). See detect.h for the rules.
+template <class Level>
+std::optional<double> first_contact(const Poly& f, double gap, double closing, double horizon, Level level) {
+  if (gap > kTouchDistance) return first_descent(f, 0, horizon);
+  if (closing > kMinClosingSpeed) return 0.0;
+  const double overlap = std::max(0.0, -gap);
+  auto overlap_reaches = [&](double x, double h) -> std::optional<double> {
+    Poly g = f;
+    g.c[0] -= level(x);
+    return g.c[0] > 0 ? first_descent(g, 0, h) : std::optional<double>(0.0);
+  };
+  if (overlap >= kMaxPushOverlap) return closing > 0 ? std::optional<double>(0.0) : overlap_reaches(overlap + kContactSlop, horizon);
+  const std::optional<double> slop = overlap_reaches(overlap + kContactSlop, horizon);
+  if (!slop || *slop >= kPushInterval) return slop;
+  const std::optional<double> deep = overlap_reaches(kMaxPushOverlap, std::min(kPushInterval, horizon));
+  if (deep) return deep;
+  return kPushInterval <= horizon ? std::optional<double>(kPushInterval) : std::nullopt;
+}
+
 /// First time the relative motion c + b t + a t^2 (of a point about a centre) comes within d, in the plane.
 std::optional<double> circle_contact(const Vec3& c, const Vec3& b, const Vec3& a, double d, double horizon) {
-  Poly f = circle_gap(c, b, a, d);
-  const double gap = std::sqrt(f.c[0] + d * d) - d;
-  if (gap <= kTouchDistance) {
-    const double closing = -f.c[1] / (2 * (gap + d));
-    if (closing > kMinClosingSpeed) return 0.0;
-    // Touching but not closing: collide only once the overlap grows by the slop.
-    f.c[0] -= std::min(f.c[0], 0.0) - 2 * d * kContactSlop;
-  }
-  if (f.c[0] <= 0) return std::nullopt;
-  return first_descent(f, 0, horizon);
+  // Cheap rejection: the box the relative motion sweeps stays farther than d from the centre.
+  const SweptBox box = swept_box(Path{c, b, 2 * a}, horizon);
+  for (int k = 0; k < 2; ++k)
+    if (box.lo[k] > d || box.hi[k] < -d) return std::nullopt;
+  const Poly f = circle_gap(c, b, a, d);
+  const double distance = std::sqrt(f.c[0] + d * d);
+  const double closing = distance > 0 ? -f.c[1] / (2 * distance) : 0.0;
+  return first_contact(f, distance - d, closing, horizon, [d](double x) { return x * x - 2 * d * x; });
 }
 
 void widen(SweptBox& box, const Vec3& p) {
@@ -78,12 +96,11 @@ std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, doub
     const double u = dir.dot(Vec3(ball.at(t).x() - rail.a.x(), ball.at(t).y() - rail.a.y(), 0));
     return u >= 0 && u <= length;
   };
-  if (s.c[0] <= kTouchDistance) {
-    if (-s.c[1] > kMinClosingSpeed && on_segment(0)) return 0.0;
-    s.c[0] -= std::min(s.c[0], 0.0) - kContactSlop;
-  }
-  if (s.c[0] <= 0) return std::nullopt;
-  const std::optional<double> t = first_descent(s, 0, horizon);
+  std::optional<double> t;
+  if (s.c[0] <= kTouchDistance && -s.c[1] > kMinClosingSpeed)
+    t = on_segment(0) ? std::optional<double>(0.0) : std::nullopt;
+  else
+    t = first_contact(s, s.c[0], -s.c[1], horizon, [](double x) { return -x; });
   // Past the end points the ball meets the cushion's end (next_ball_point) first.
   if (t && on_segment(*t)) return t;
   return std::nullopt;
@@ -95,7 +112,7 @@ std::optional<double> next_ball_point(const Path& ball, const Vec3& point, doubl
 
 std::optional<double> next_pocket_entry(const Path& ball, const Pocket& pocket, double horizon) {
   const Poly f = circle_gap(ball.p - pocket.center, ball.v, 0.5 * ball.a, pocket.radius);
-  if (f.c[0] <= 0) return ball.moves() ? std::optional<double>(0.0) : std::nullopt;
+  if (f.c[0] <= 0) return 0.0;  // over the hole already: it drops at once
   return first_descent(f, 0, horizon);
 }
 

@@ -4,9 +4,12 @@
 // before `horizon`. Positions are quadratic in time, so a distance test is a polynomial of degree 4
 // (ball-ball, cushion end, pocket) or 2 (cushion line), solved exactly by roots.h.
 //
-// Contacts already in place at t = 0 count only when the two close at more than kMinClosingSpeed;
-// a touching pair that is not closing is reported once it overlaps by kContactSlop (so round-off in a
-// resting or just-resolved contact never gives a false hit, and a real one is never missed).
+// Contacts already in place at t = 0 count only when the two close at more than kMinClosingSpeed.
+// A touching pair that is not closing (a resting contact, one just resolved, or one ball pressing on
+// another: the pusher's cloth friction drives it on) becomes a contact once it overlaps by
+// kContactSlop, but no sooner than kPushInterval unless the overlap would pass kMaxPushOverlap first.
+// So round-off never gives a false hit, a real one is never missed, and a sustained push is a train of
+// gentle contacts at most ~1 kHz with the overlap bounded, instead of an endless chatter.
 #include <optional>
 
 #include "motion.h"
@@ -16,10 +19,16 @@ namespace bsim {
 
 /// m, distance within which two surfaces count as touching (round-off of positions is ~1e-15 m).
 inline constexpr double kTouchDistance = 1e-11;
-/// m/s, closing speed above which touching surfaces collide at once.
-inline constexpr double kMinClosingSpeed = 1e-9;
+/// m/s, closing speed above which touching surfaces collide at once. Slower, the contact waits as a
+/// push does: this ends the geometric series of ever smaller contacts (a Zeno sequence) that pairwise
+/// impulses make of a ball nudging another or of a cluster of three touching balls.
+inline constexpr double kMinClosingSpeed = 1e-5;
 /// m, overlap a touching, non-closing contact may reach before it is resolved as a collision.
 inline constexpr double kContactSlop = 1e-10;
+/// s, shortest time between two contacts of a pair that touches without closing (a push).
+inline constexpr double kPushInterval = 1e-2;
+/// m, largest overlap a push may reach within kPushInterval (far below a real ball's elastic compression).
+inline constexpr double kMaxPushOverlap = 1e-6;
 
 /// Axis-aligned box a path sweeps on [0, horizon].
 struct SweptBox {

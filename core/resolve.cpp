@@ -65,6 +65,29 @@ std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const Ball
   return {classify(ra, params), classify(rb, params)};
 }
 
+std::pair<BallState, BallState> resolve_push(const BallState& a, const BallState& b, const PhysicsParams& params) {
+  BallState ra = a, rb = b;
+  const double vn = closing_speed(a, b);
+  if (!(vn > 0)) return {ra, rb};
+  const double m = params.ball_mass, R = params.ball_radius;
+  const Vec3 n = horizontal_unit(b.position - a.position);
+  auto rolls = [](const BallState& s) { return s.motion != Motion::sliding; };
+  auto inverse_mass = [&](const BallState& s) { return rolls(s) ? 5.0 / (7.0 * m) : 1.0 / m; };
+  const double j = vn / (inverse_mass(a) + inverse_mass(b));
+  auto push = [&](BallState& s, double sign) {
+    s.velocity += sign * j * inverse_mass(s) * n;
+    if (rolls(s)) {
+      const Vec3 locked = Vec3(0, 0, 1).cross(s.velocity) / R;
+      s.spin.x() = locked.x();
+      s.spin.y() = locked.y();
+    }
+    s = classify(s, params);
+  };
+  push(ra, -1);
+  push(rb, 1);
+  return {ra, rb};
+}
+
 Vec3 cushion_contact_point(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params) {
   return ball.position + params.ball_radius * cushion_normal(toward, nose_height, params);
 }

@@ -26,6 +26,13 @@ double closing_speed(const BallState& a, const BallState& b);
 /// Touching balls a and b -> after the impact. Unchanged when they are not closing.
 std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const BallState& b, const PhysicsParams& params);
 
+/// A push: a gentle contact after which the two would at once press together again (one ball driving
+/// another, as in a follow shot at close range or two balls rolling on side by side). Instead of a
+/// bounce the closing speed is removed, without friction, and a ball rolling (or at rest) stays rolling:
+/// the cloth's static friction acts with the push, so it answers with its rolling mass 7/5 m. Energy
+/// is lost as in any plastic impact.
+std::pair<BallState, BallState> resolve_push(const BallState& a, const BallState& b, const PhysicsParams& params);
+
 /// Where the nose of a cushion at `nose_height` touches the ball; `toward` is the horizontal unit vector
 /// from the ball's centre toward the cushion.
 Vec3 cushion_contact_point(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params);

@@ -7,8 +7,10 @@ namespace bsim {
 
 namespace {
 
-/// Relative width to which a root is narrowed: a few hundred ulps, far below any physical time scale.
-double tolerance(double x) { return 1e-14 * std::max(1.0, std::abs(x)); }
+/// Width to which a root is narrowed, relative to max(1, |t|): far below any physical time scale
+/// (a ball at 10 m/s moves 1e-11 m), yet above the round-off band of a polynomial near its root, so
+/// Newton's answer can be bracketed instead of wandering in the noise.
+double tolerance(double x) { return 1e-12 * std::max(1.0, std::abs(x)); }
 
 struct Bracket {
   double lo, hi;
@@ -18,7 +20,7 @@ struct Bracket {
 /// (f(lo) > 0) == lo_positive and (f(hi) > 0) != lo_positive throughout.
 Bracket refine(const Poly& f, const Poly& df, double lo, double hi, bool lo_positive) {
   double x = 0.5 * (lo + hi);
-  for (int i = 0; i < 300 && hi - lo > tolerance(hi); ++i) {
+  for (int i = 0; i < 200 && hi - lo > tolerance(hi); ++i) {
     const double fx = f(x);
     if ((fx > 0) == lo_positive)
       lo = x;

@@ -27,7 +27,7 @@ struct Roots {
 Roots roots_in(const Poly& f, double lo, double hi);
 
 /// The first time in [lo, hi] at which f comes down to <= 0, given f(lo) > 0: the last time before it
-/// at which f is still > 0 (within a relative 1e-14), or nullopt when f stays > 0 on [lo, hi].
+/// at which f is still > 0 (within 1e-12 max(1, t)), or nullopt when f stays > 0 on [lo, hi].
 std::optional<double> first_descent(const Poly& f, double lo, double hi);
 
 }  // namespace bsim

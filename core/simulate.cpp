@@ -46,12 +46,16 @@ class Simulator {
     segments_.resize(static_cast<std::size_t>(n_));
     version_.assign(static_cast<std::size_t>(n_), 0);
     own_time_.assign(static_cast<std::size_t>(n_), kInf);
+    tracks_.resize(static_cast<std::size_t>(n_));
     for (int i = 0; i < n_; ++i) {
       const Ball& ball = scene.balls[static_cast<std::size_t>(i)];
       BallState s;
       s.position = ball.position;
+      s.position.z() = R;  // on the bed (the parser allows round-off)
       s.orientation = ball.orientation;
       segments_[static_cast<std::size_t>(i)].push_back({0.0, s, -1});
+      tracks_[static_cast<std::size_t>(i)].path.p = s.position;
+      tracks_[static_cast<std::size_t>(i)].box = {s.position, s.position};
     }
     for (const Rail& rail : scene.rails) {
       reach_.push_back(cushion_reach(R, rail.a.z()));
@@ -88,6 +92,21 @@ class Simulator {
   std::vector<std::vector<MotionSegment>> segments_;
   std::vector<unsigned> version_;
   std::vector<double> own_time_;  ///< s, each ball's next event of its own: its paths hold until then
+
+  /// Each ball's path and the box it sweeps until own_time_, cached for the pair tests.
+  struct Track {
+    Path path;        ///< from t0
+    double t0 = 0;
+    SweptBox box{};   ///< from the last scheduling time to own_time_
+    bool live = true; ///< on the bed
+  };
+  std::vector<Track> tracks_;
+
+  Path path_from(int i, double t) const {
+    const Track& track = tracks_[static_cast<std::size_t>(i)];
+    const double dt = t - track.t0;
+    return {track.path.at(dt), track.path.velocity_at(dt), track.path.a};
+  }
   std::vector<double> reach_;
   std::vector<SweptBox> rail_boxes_;
   std::priority_queue<Candidate, std::vector<Candidate>, Later> queue_;
@@ -139,26 +158,24 @@ class Simulator {
       s.velocity = ball.velocity;
       s.spin = ball.spin;
       s = classify(s, params_);
+      const bool over_pocket = std::any_of(scene_.pockets.begin(), scene_.pockets.end(), [&](const Pocket& p) {
+        return Vec3(s.position.x() - p.center.x(), s.position.y() - p.center.y(), 0).norm() < p.radius;
+      });
       if (i == target)
         add_event(EventType::cue, t, {i}, -1, s.velocity.norm(), s.position, {current(i).start}, {s});
-      if (s.motion != Motion::stationary) {
-        begin_segment(i, t, s);
-        changed.push_back(i);
-      }
+      if (s.motion != Motion::stationary) begin_segment(i, t, s);
+      if (s.motion != Motion::stationary || over_pocket) changed.push_back(i);
     }
     reschedule(changed, t);
   }
 
   void reschedule(const std::vector<int>& changed, double t) {
     for (int i : changed) schedule_own(i, t);
-    for (std::size_t k = 0; k < changed.size(); ++k) {
-      const int i = changed[k];
-      for (int j = 0; j < n_; ++j) {
-        if (j == i) continue;
-        const bool done = std::find(changed.begin(), changed.begin() + static_cast<long>(k), j) !=
-                          changed.begin() + static_cast<long>(k);
-        if (!done) schedule_pair(std::min(i, j), std::max(i, j), t);
-      }
+    std::vector<char> done(static_cast<std::size_t>(n_), 0);
+    for (int i : changed) {
+      for (int j = 0; j < n_; ++j)
+        if (j != i && !done[static_cast<std::size_t>(j)]) schedule_pair(std::min(i, j), std::max(i, j), t);
+      done[static_cast<std::size_t>(i)] = 1;
     }
   }
 
@@ -170,12 +187,15 @@ class Simulator {
 
   /// The ball's next transition, cushion contact or pocket entry.
   void schedule_own(int i, double t) {
+    const MotionSegment& seg = current(i);
+    Track& track = tracks_[static_cast<std::size_t>(i)];
+    track.t0 = seg.t0;
+    track.path = path_of(seg.start, params_);
+    track.live = on_bed(seg.start);
     own_time_[static_cast<std::size_t>(i)] = kInf;
-    const BallState s = state_at(i, t);
-    if (!on_bed(s)) return;
-    const double transition = transition_time(s, params_);
+    if (!track.live) return;
+    const double transition = seg.t0 + transition_time(seg.start, params_) - t;
     double horizon = std::min(transition, cap_ - t);
-    own_time_[static_cast<std::size_t>(i)] = t + horizon;
     Candidate best;
     best.a = i;
     bool found = false;
@@ -184,20 +204,20 @@ class Simulator {
       best.kind = Kind::transition;
       found = true;
     }
-    const Path path = path_of(s, params_);
+    const Path path = path_from(i, t);
+    const SweptBox box = swept_box(path, horizon);
+    auto consider = [&](std::optional<double> dt, Kind kind, int rank, int b, int end) {
+      ++tests_;
+      if (!dt || (found && *dt >= best.time)) return;
+      best.time = *dt;
+      best.kind = kind;
+      best.rank = rank;
+      best.b = b;
+      best.end = end;
+      horizon = *dt;
+      found = true;
+    };
     if (path.moves()) {
-      const SweptBox box = swept_box(path, horizon);
-      auto consider = [&](std::optional<double> dt, Kind kind, int rank, int b, int end) {
-        ++tests_;
-        if (!dt || (found && *dt >= best.time)) return;
-        best.time = *dt;
-        best.kind = kind;
-        best.rank = rank;
-        best.b = b;
-        best.end = end;
-        horizon = *dt;
-        found = true;
-      };
       for (int r = 0; r < static_cast<int>(scene_.rails.size()); ++r) {
         const double reach = reach_[static_cast<std::size_t>(r)];
         if (!boxes_within(box, rail_boxes_[static_cast<std::size_t>(r)], reach)) continue;
@@ -205,28 +225,29 @@ class Simulator {
         consider(next_ball_point(path, rail(r).a, reach, horizon), Kind::cushion_end, 1, n_ + r, 0);
         consider(next_ball_point(path, rail(r).b, reach, horizon), Kind::cushion_end, 1, n_ + r, 1);
       }
-      for (int p = 0; p < static_cast<int>(scene_.pockets.size()); ++p) {
-        const Pocket& pocket = scene_.pockets[static_cast<std::size_t>(p)];
-        if (!boxes_within(box, {pocket.center, pocket.center}, pocket.radius)) continue;
-        consider(next_pocket_entry(path, pocket, horizon), Kind::pocket, 2, p, 0);
-      }
     }
+    // Pockets even for a ball at rest: one left over a hole drops.
+    for (int p = 0; p < static_cast<int>(scene_.pockets.size()); ++p) {
+      const Pocket& pocket = scene_.pockets[static_cast<std::size_t>(p)];
+      if (!boxes_within(box, {pocket.center, pocket.center}, pocket.radius)) continue;
+      consider(next_pocket_entry(path, pocket, horizon), Kind::pocket, 2, p, 0);
+    }
+    if (found) horizon = best.time;
+    own_time_[static_cast<std::size_t>(i)] = t + horizon;
+    track.box = swept_box(path, horizon);
     if (!found) return;
-    own_time_[static_cast<std::size_t>(i)] = t + best.time;
     best.time += t;
     push(best);
   }
 
   void schedule_pair(int i, int j, double t) {
-    const BallState si = state_at(i, t), sj = state_at(j, t);
-    if (!on_bed(si) || !on_bed(sj)) return;
-    const Path pi = path_of(si, params_), pj = path_of(sj, params_);
-    if (!pi.moves() && !pj.moves()) return;
-    const double horizon = std::min(own_time_[static_cast<std::size_t>(i)], own_time_[static_cast<std::size_t>(j)]) - t;
+    const Track &ti = tracks_[static_cast<std::size_t>(i)], &tj = tracks_[static_cast<std::size_t>(j)];
+    if (!ti.live || !tj.live || (!ti.path.moves() && !tj.path.moves())) return;
     const double distance = 2 * params_.ball_radius;
-    if (!boxes_within(swept_box(pi, horizon), swept_box(pj, horizon), distance)) return;
+    if (!boxes_within(ti.box, tj.box, distance)) return;
+    const double horizon = std::min(own_time_[static_cast<std::size_t>(i)], own_time_[static_cast<std::size_t>(j)]) - t;
     ++tests_;
-    const std::optional<double> dt = next_ball_ball(pi, pj, distance, horizon);
+    const std::optional<double> dt = next_ball_ball(path_from(i, t), path_from(j, t), distance, horizon);
     if (!dt) return;
     Candidate c;
     c.time = t + *dt;
@@ -235,6 +256,41 @@ class Simulator {
     c.b = j;
     c.kind = Kind::ball_ball;
     push(c);
+  }
+
+  /// Moves two overlapping balls apart along their line of centres to touching. Only a push
+  /// (detect.h) lets balls overlap, by at most kMaxPushOverlap, so this moves them by a micrometre at most.
+  void separate(BallState& a, BallState& b) const {
+    Vec3 n(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0);
+    const double d = n.norm(), overlap = 2 * params_.ball_radius - d;
+    if (!(overlap > 0) || d == 0) return;
+    n /= d;
+    a.position -= 0.5 * overlap * n;
+    b.position += 0.5 * overlap * n;
+  }
+
+  /// A gentle contact after which the two would at once press together again (one ball pushing
+  /// another) is resolved without bounce, so a push is a short train of contacts, not an endless
+  /// series of ever smaller bounces.
+  std::pair<BallState, BallState> resolve_pair(const BallState& a, const BallState& b, double speed) const {
+    if (speed < kPushSpeed) {
+      auto result = resolve_push(a, b, params_);
+      const Path pa = path_of(result.first, params_), pb = path_of(result.second, params_);
+      const Vec3 c = pb.p - pa.p, v = pb.v - pa.v, acc = 0.5 * (pb.a - pa.a);
+      const double curvature = v.x() * v.x() + v.y() * v.y() + 2 * (acc.x() * c.x() + acc.y() * c.y());
+      if (curvature < 0) return result;
+    }
+    return resolve_ball_ball(a, b, params_);
+  }
+
+  BallState resolve_cushion(const BallState& s, const Vec3& toward, double h) const {
+    if (cushion_closing_speed(s, toward, h, params_) < kPushSpeed) {
+      PhysicsParams plastic = params_;
+      plastic.e_rail = 0;
+      const BallState result = resolve_ball_cushion(s, toward, h, plastic);
+      if (path_of(result, params_).a.dot(toward) > 0) return result;  // it presses on into the cushion
+    }
+    return resolve_ball_cushion(s, toward, h, params_);
   }
 
   void handle(const Candidate& c) {
@@ -246,11 +302,18 @@ class Simulator {
         break;
       }
       case Kind::ball_ball: {
-        const BallState a = state_at(c.a, t), b = state_at(c.b, t);
-        const auto [na, nb] = resolve_ball_ball(a, b, params_);
+        BallState a = state_at(c.a, t), b = state_at(c.b, t);
+        const double speed = closing_speed(a, b);
+        if (!(speed > 0)) {
+          // A resting contact that did not press after all: nothing to resolve.
+          schedule_pair(c.a, c.b, t);
+          break;
+        }
+        separate(a, b);
+        const auto [na, nb] = resolve_pair(a, b, speed);
         const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
-        add_event(EventType::ball_ball, t, {c.a, c.b}, -1, closing_speed(a, b),
-                  a.position + params_.ball_radius * n, {a, b}, {na, nb});
+        add_event(EventType::ball_ball, t, {c.a, c.b}, -1, speed, a.position + params_.ball_radius * n, {a, b},
+                  {na, nb});
         begin_segment(c.a, t, na);
         begin_segment(c.b, t, nb);
         reschedule({c.a, c.b}, t);
@@ -260,19 +323,28 @@ class Simulator {
       case Kind::cushion_end: {
         const int r = c.b - n_;
         const Rail& cushion = rail(r);
-        const BallState s = state_at(c.a, t);
+        BallState s = state_at(c.a, t);
+        const double h = cushion.a.z(), reach = reach_[static_cast<std::size_t>(r)];
         Vec3 toward;
+        double overlap;
         if (c.kind == Kind::cushion) {
           const Vec3 dir = Vec3(cushion.b.x() - cushion.a.x(), cushion.b.y() - cushion.a.y(), 0).normalized();
           toward = Vec3(-dir.y(), dir.x(), 0);
+          overlap = reach + toward.dot(Vec3(s.position.x() - cushion.a.x(), s.position.y() - cushion.a.y(), 0));
         } else {
           const Vec3& point = c.end == 0 ? cushion.a : cushion.b;
-          toward = Vec3(point.x() - s.position.x(), point.y() - s.position.y(), 0).normalized();
+          const Vec3 to(point.x() - s.position.x(), point.y() - s.position.y(), 0);
+          toward = to.normalized();
+          overlap = reach - to.norm();
         }
-        const double h = cushion.a.z();
-        const BallState ns = resolve_ball_cushion(s, toward, h, params_);
-        add_event(EventType::ball_rail, t, {c.a}, r, cushion_closing_speed(s, toward, h, params_),
-                  cushion_contact_point(s, toward, h, params_), {s}, {ns});
+        const double speed = cushion_closing_speed(s, toward, h, params_);
+        if (!(speed > 0)) {
+          schedule_own(c.a, t);
+          break;
+        }
+        if (overlap > 0) s.position -= overlap * toward;  // back to touching (see separate())
+        const BallState ns = resolve_cushion(s, toward, h);
+        add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
         begin_segment(c.a, t, ns);
         reschedule({c.a}, t);
         break;
@@ -290,6 +362,7 @@ class Simulator {
         segments_[static_cast<std::size_t>(c.a)].push_back({t + fall, rest, c.b});
         drops_.push_back({t, c.a, c.b});
         own_time_[static_cast<std::size_t>(c.a)] = kInf;
+        tracks_[static_cast<std::size_t>(c.a)].live = false;
         break;
       }
     }

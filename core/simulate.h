@@ -17,6 +17,9 @@ inline constexpr double kDurationStep = 1.0;
 /// s after the cue strike at which a shot that never comes to rest (say, mu_roll = 0) is cut off.
 inline constexpr double kMaxShotTime = 600.0;
 
+/// m/s, closing speed below which a contact that would at once press again (a push) does not bounce.
+inline constexpr double kPushSpeed = 0.01;
+
 struct SimulationResult {
   std::vector<std::vector<MotionSegment>> segments;  ///< per ball, in time order; orientations not yet set
   std::vector<Event> events;                         ///< numbered, start to end

@@ -1,0 +1,112 @@
+// bench: how fast the physics runs, and a soak that looks for faults in many random breaks.
+//   bench                 figures for a break, a two-ball shot and a 100-ball table; a 1,000-break soak
+//   bench --soak N        the soak over N seeded breaks (100000 for the full run)
+//   bench --runs N        timed runs per scene (default 2000, fewer for the stress table)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "random_scenes.h"
+#include "shot_checks.h"
+#include "simulate.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+template <class F>
+double median_us(int runs, F&& f) {
+  std::vector<double> us;
+  us.reserve(static_cast<std::size_t>(runs));
+  for (int k = 0; k < runs; ++k) {
+    const auto t0 = Clock::now();
+    f();
+    us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+  }
+  return median(us);
+}
+
+void figures(const char* name, const bsim::Scene& scene, int runs) {
+  const bsim::SimulationResult probe = bsim::simulate_events(scene);
+  const long events = static_cast<long>(probe.events.size());
+  long segments = 0;
+  for (const auto& list : probe.segments) segments += static_cast<long>(list.size());
+  for (int k = 0; k < 3; ++k) bsim::simulate_events(scene);  // warm the caches
+  volatile std::size_t sink = 0;
+  const double physics = median_us(runs, [&] { sink = sink + bsim::simulate_events(scene).events.size(); });
+  const double full = median_us(runs, [&] { sink = sink + bsim::simulate(scene).events().size(); });
+  std::printf("%-12s %4zu balls %6ld events %6ld segments %7ld tests  %10.1f us/shot  %10.1f us with orientation  %9.0f events/s\n",
+              name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
+              static_cast<double>(events) / (physics * 1e-6));
+}
+
+int soak(long count) {
+  bsim::checks::Faults sum;
+  long events = 0, drops = 0, faulty = 0;
+  const auto t0 = Clock::now();
+  for (long seed = 1; seed <= count; ++seed) {
+    const bsim::Scene scene = bsim::scenes::random_break(static_cast<std::uint64_t>(seed));
+    const bsim::Timeline timeline = bsim::simulate(scene);
+    const bsim::checks::Faults f = bsim::checks::find_faults(scene, timeline);
+    events += static_cast<long>(timeline.events().size());
+    drops += static_cast<long>(timeline.pocket_drops().size());
+    sum.overlaps += f.overlaps;
+    sum.escapes += f.escapes;
+    sum.nans += f.nans;
+    sum.missed += f.missed;
+    sum.energy_gains += f.energy_gains;
+    sum.deepest = std::max(sum.deepest, f.deepest);
+    if (f.total() > 0 && faulty++ < 10)
+      std::printf("  seed %ld: %ld overlaps, %ld escapes, %ld NaN, %ld missed, %ld energy gains\n", seed, f.overlaps,
+                  f.escapes, f.nans, f.missed, f.energy_gains);
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("soak: %ld random breaks, %ld events, %ld balls pocketed, %.1f s\n", count, events, drops, seconds);
+  std::printf("soak: %ld overlaps, %ld rail escapes, %ld NaN, %ld missed contacts, %ld energy gains (%ld faulty breaks)\n",
+              sum.overlaps, sum.escapes, sum.nans, sum.missed, sum.energy_gains, faulty);
+  std::printf("soak: deepest overlap of two balls or a ball and a cushion: %.3g m (faults from %.3g m)\n", sum.deepest,
+              bsim::checks::kFaultTolerance);
+  return sum.total() == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  long soak_count = 1000;
+  int runs = 2000;
+  bool soak_only = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    if ((arg == "--soak" || arg == "--runs") && k + 1 < argc) {
+      const long value = std::strtol(argv[++k], nullptr, 10);
+      if (value <= 0) {
+        std::fprintf(stderr, "bench: %s needs a positive count\n", arg.c_str());
+        return 2;
+      }
+      if (arg == "--soak") {
+        soak_count = value;
+        soak_only = true;
+      } else {
+        runs = static_cast<int>(value);
+      }
+    } else {
+      std::fprintf(stderr, "usage: bench [--soak N] [--runs N]\n");
+      return 2;
+    }
+  }
+  if (!soak_only) {
+    figures("break", bsim::scenes::standard_break(), runs);
+    figures("two-ball", bsim::scenes::two_ball_shot(), runs);
+    figures("stress-100", bsim::scenes::stress_table(100, 7), std::max(5, runs / 50));
+  }
+  return soak(soak_count);
+}
