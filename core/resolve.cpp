@@ -98,25 +98,39 @@ double cushion_closing_speed(const BallState& ball, const Vec3& toward, double n
 
 BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params) {
   BallState out = ball;
-  const Vec3 normal = cushion_normal(toward, nose_height, params);
-  const double approach = ball.velocity.dot(normal);
-  if (!(approach > 0)) return out;
-  const double m = params.ball_mass;
-  const Vec3 arm = params.ball_radius * normal;
+  const double vn = Vec3(ball.velocity.x(), ball.velocity.y(), 0).dot(toward);  // horizontal approach
+  if (!(vn > 0)) return out;
+  const double m = params.ball_mass, R = params.ball_radius, e = params.e_rail, mu = params.mu_rail;
+  const double sin_lift = std::clamp((nose_height - R) / R, -0.99, 0.99);
+  const double cos_lift = std::sqrt(1 - sin_lift * sin_lift);
+  // Contact frame: n from the centre to the nose; e1 along the cushion; e2 completes the tangent plane.
+  const Vec3 n = cos_lift * toward + Vec3(0, 0, sin_lift);
+  const Vec3 e1 = Vec3(0, 0, 1).cross(toward);
+  const Vec3 e2 = -sin_lift * toward + Vec3(0, 0, cos_lift);
+  const Vec3 arm = R * n;
+  const Vec3 slip = ball.velocity + ball.spin.cross(arm);
+  const double u1 = slip.dot(e1), u2 = slip.dot(e2);
 
-  // Normal impulse through the centre (no torque): restitution on the approach speed.
-  Vec3 impulse = -(1 + params.e_rail) * m * approach * normal;
-
-  // Friction against the slip of the contact point in the tangent plane (Han's stick/slip branches):
-  // the point moves 7/(2m) per unit tangential impulse.
-  const Vec3 point_velocity = ball.velocity + ball.spin.cross(arm);
-  const Vec3 slip = point_velocity - point_velocity.dot(normal) * normal;
-  const double slip_speed = slip.norm();
-  if (slip_speed > 0 && params.mu_rail > 0) {
-    const double jt = std::min(params.mu_rail * (1 + params.e_rail) * m * approach, 2.0 * m * slip_speed / 7.0);
-    impulse -= (jt / slip_speed) * slip;
+  // Impulses: P along -n at the nose, F = F1 e1 + F2 e2 friction there, and the bed's B along +z under
+  // the ball, which keeps it on the bed (B = P sin - F2 cos). Restitution acts on the horizontal
+  // approach: the ball leaves at e times it, m dv_n = -P cos - F2 sin = -(1 + e) m vn. The nose's slip
+  // then changes by 7/(2m) F1 along e1 and by (1 + e) vn sin + 5/(2m) F2 along e2, so it sticks with
+  // F1 = -2m u1 / 7, F2 = -2m (u2 + (1 + e) vn sin) / 5, unless that needs more than mu P: then the
+  // friction slides, in the same direction, at mu P (Coulomb).
+  double f1 = -2.0 * m * u1 / 7.0, f2 = -2.0 * m * (u2 + (1 + e) * vn * sin_lift) / 5.0;
+  auto normal_impulse = [&](double friction2) { return ((1 + e) * m * vn - friction2 * sin_lift) / cos_lift; };
+  const double stick = std::hypot(f1, f2);
+  if (stick > mu * normal_impulse(f2)) {
+    const double scale = mu * (1 + e) * m * vn / (stick * cos_lift + mu * f2 * sin_lift);
+    f1 *= scale;
+    f2 *= scale;
   }
-  apply_impulse(out, arm, impulse, params);
+  const double p = normal_impulse(f2);
+  const Vec3 friction = f1 * e1 + f2 * e2;
+  const double inertia = 0.4 * m * R * R;
+  out.velocity += (-p * n + friction + (p * sin_lift - f2 * cos_lift) * Vec3(0, 0, 1)) / m;
+  out.velocity.z() = 0;  // exactly what the bed's impulse does, without round-off
+  out.spin += arm.cross(friction) / inertia;
   return classify(out, params);
 }
 

@@ -9,8 +9,10 @@
 //
 //  Ball-cushion: after Han, "Dynamics in carom and three cushion billiards", J. Mech. Sci. Tech.
 //  19(4), 2005: the impulse acts at the nose, which touches the ball at height h above the bed, along
-//  the line to the ball's centre; restitution e_rail on the normal approach speed there, friction mu_rail
-//  against the slip of that point. The cushion therefore also acts on the ball's spin.
+//  the line to the ball's centre, with friction mu_rail against the slip of that point (stick or slide),
+//  so the cushion also acts on the ball's spin. Unlike Han, the bed's reaction is part of the impact,
+//  so the ball stays on the bed, and restitution e_rail applies to the horizontal approach: the ball
+//  always leaves the cushion at e_rail times the speed it came in with.
 //
 // The bed keeps balls on it: a vertical velocity an impulse would give is dropped (no jumps).
 #include <utility>

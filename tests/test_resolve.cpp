@@ -1,0 +1,206 @@
+// Collision models: conservation and dissipation laws, the frictionless textbook limits, the
+// friction limits (stick and slip), and the cushion acting at its nose height.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "bench/physics_print.h"
+#include "bench/random_scenes.h"
+#include "motion.h"
+#include "resolve.h"
+#include "scene.h"
+
+using namespace bsim;
+
+namespace {
+
+const double kR = PhysicsParams{}.ball_radius;
+
+BallState ball(double x, double y, Vec3 v, Vec3 w = Vec3(0, 0, 0)) {
+  BallState s;
+  s.position = Vec3(x, y, kR);
+  s.velocity = v;
+  s.spin = w;
+  s.motion = Motion::sliding;
+  return s;
+}
+
+PhysicsParams params(double e_ball, double mu_ball) {
+  PhysicsParams p;
+  p.e_ball = e_ball;
+  p.mu_ball = mu_ball;
+  return p;
+}
+
+double energy(const BallState& a, const BallState& b, const PhysicsParams& p) {
+  return kinetic_energy(a, p) + kinetic_energy(b, p);
+}
+
+/// Angular momentum of a ball about the origin: r x m v + I w.
+Vec3 angular_momentum(const BallState& s, const PhysicsParams& p) {
+  return s.position.cross(p.ball_mass * s.velocity) + 0.4 * p.ball_mass * kR * kR * s.spin;
+}
+
+}  // namespace
+
+TEST_SUITE("resolve") {
+  TEST_CASE("frictionless elastic head-on: the balls exchange velocities and keep their spins") {
+    const PhysicsParams p = params(1, 0);
+    const BallState a = ball(0, 0, Vec3(2, 0, 0), Vec3(3, 4, 5)), b = ball(2 * kR, 0, Vec3(0, 0, 0));
+    const auto [na, nb] = resolve_ball_ball(a, b, p);
+    CHECK(na.velocity.x() == 0);
+    CHECK(nb.velocity.x() == 2);
+    CHECK(na.spin == a.spin);
+    CHECK(nb.spin == b.spin);
+  }
+
+  TEST_CASE("frictionless cut: the object ball leaves along the line of centres, the cue ball along the tangent") {
+    const PhysicsParams p = params(1, 0);
+    const double cut = 0.4;
+    const BallState a = ball(0, 0, Vec3(1, 0, 0));
+    const BallState b = ball(2 * kR * std::cos(cut), 2 * kR * std::sin(cut), Vec3(0, 0, 0));
+    const auto [na, nb] = resolve_ball_ball(a, b, p);
+    CHECK(std::atan2(nb.velocity.y(), nb.velocity.x()) == doctest::Approx(cut));
+    CHECK(nb.velocity.norm() == doctest::Approx(std::cos(cut)));
+    CHECK(na.velocity.dot(nb.velocity) == doctest::Approx(0).epsilon(1e-15));
+  }
+
+  TEST_CASE("restitution e along the line of centres: the closing speed comes back as e times it") {
+    for (double e : {0.0, 0.5, 0.95}) {
+      CAPTURE(e);
+      const PhysicsParams p = params(e, 0.05);
+      const BallState a = ball(0, 0, Vec3(1.5, 0.2, 0), Vec3(0, 30, 0)), b = ball(2 * kR, 0, Vec3(-0.3, 0, 0));
+      const double before = closing_speed(a, b);
+      const auto [na, nb] = resolve_ball_ball(a, b, p);
+      CHECK(closing_speed(na, nb) == doctest::Approx(-e * before));
+    }
+  }
+
+  TEST_CASE("ball-ball on random inputs: momentum and angular momentum conserved, energy never created") {
+    scenes::Rng rng(11);
+    for (int k = 0; k < 500; ++k) {
+      const PhysicsParams p = params(rng.uniform(0, 1), rng.uniform(0, 0.3));
+      const double angle = rng.uniform(0, 2 * M_PI);
+      const Vec3 n(std::cos(angle), std::sin(angle), 0);
+      auto random_vec = [&](double s) { return Vec3(rng.uniform(-s, s), rng.uniform(-s, s), rng.uniform(-s, s)); };
+      const BallState a = ball(0, 0, Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0), random_vec(100));
+      const BallState b = ball(2 * kR * n.x(), 2 * kR * n.y(), Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0), random_vec(100));
+      if (closing_speed(a, b) <= 0) continue;
+      const auto [na, nb] = resolve_ball_ball(a, b, p);
+      CAPTURE(a);
+      CAPTURE(b);
+      const Vec3 momentum = a.velocity + b.velocity, after = na.velocity + nb.velocity;
+      // Horizontal momentum is exact; the bed takes any vertical impulse (no jumps).
+      CHECK(after.x() == doctest::Approx(momentum.x()).epsilon(1e-12).scale(1));
+      CHECK(after.y() == doctest::Approx(momentum.y()).epsilon(1e-12).scale(1));
+      CHECK(energy(na, nb, p) <= energy(a, b, p) * (1 + 1e-12));
+      // About the vertical, the contact impulses conserve angular momentum.
+      const double lz = (angular_momentum(a, p) + angular_momentum(b, p)).z();
+      const double lz_after = (angular_momentum(na, p) + angular_momentum(nb, p)).z();
+      CHECK(lz_after == doctest::Approx(lz).epsilon(1e-9).scale(1e-6));
+    }
+  }
+
+  TEST_CASE("friction: a small slip sticks (the contact points end up matched), a large one slides at mu") {
+    const PhysicsParams p = params(1, 0.2);
+    const double cut = 0.5;
+    const Vec3 n(std::cos(cut), std::sin(cut), 0);
+    const BallState b = ball(2 * kR * n.x(), 2 * kR * n.y(), Vec3(0, 0, 0));
+    auto tangential_slip = [&](const BallState& s1, const BallState& s2) {
+      const Vec3 d = s2.position - s1.position, m = Vec3(d.x(), d.y(), 0).normalized();
+      const Vec3 u = (s1.velocity + s1.spin.cross(kR * m)) - (s2.velocity + s2.spin.cross(-kR * m));
+      const Vec3 ut = u - u.dot(m) * m;
+      return Vec3(ut.x(), ut.y(), 0).norm();
+    };
+    // A nearly full hit: the slip is small against the friction available, so the contact sticks.
+    const BallState a = ball(0, 0, Vec3(1, 0, 0));
+    const BallState straight = ball(std::sqrt(4 * kR * kR - 1e-8), 0.0001, Vec3(0, 0, 0));
+    CHECK(tangential_slip(a, straight) > 0);
+    const auto [sa, sb] = resolve_ball_ball(a, straight, p);
+    CHECK(tangential_slip(sa, sb) == doctest::Approx(0).epsilon(1e-12).scale(1));
+    // The cut: throw turns the object ball off the line of centres, toward the cue ball's path.
+    const auto [na, nb] = resolve_ball_ball(a, b, p);
+    const double throw_angle = cut - std::atan2(nb.velocity.y(), nb.velocity.x());
+    CHECK(throw_angle > 0);
+    CHECK(throw_angle < 0.1);
+    // mu_ball = 0 gives exactly the textbook direction.
+    const auto [fa, fb] = resolve_ball_ball(a, b, params(1, 0));
+    CHECK(std::atan2(fb.velocity.y(), fb.velocity.x()) == doctest::Approx(cut).epsilon(1e-15));
+  }
+
+  TEST_CASE("no impulse when the balls are not closing") {
+    const PhysicsParams p = params(0.9, 0.1);
+    const BallState a = ball(0, 0, Vec3(-1, 0, 0)), b = ball(2 * kR, 0, Vec3(0, 0, 0));
+    const auto [na, nb] = resolve_ball_ball(a, b, p);
+    CHECK(na.velocity == a.velocity);
+    CHECK(nb.velocity == b.velocity);
+  }
+
+  TEST_CASE("a push removes the closing speed and keeps rolling balls rolling, losing energy") {
+    const PhysicsParams p;
+    BallState a = ball(0, 0, Vec3(0.3, 0, 0), Vec3(0, 0.3 / kR, 0)), b = ball(2 * kR, 0, Vec3(0.29, 0, 0), Vec3(0, 0.29 / kR, 0));
+    a = classify(a, p);
+    b = classify(b, p);
+    const auto [na, nb] = resolve_push(a, b, p);
+    CHECK(closing_speed(na, nb) == doctest::Approx(0).epsilon(1e-15));
+    CHECK(na.motion == Motion::rolling);
+    CHECK(nb.motion == Motion::rolling);
+    CHECK(na.velocity.x() + nb.velocity.x() == doctest::Approx(0.59));
+    CHECK(energy(na, nb, p) < energy(a, b, p));
+  }
+
+  TEST_CASE("cushion: a head-on ball leaves at e_rail times its approach; the nose above its centre spins it") {
+    PhysicsParams p;
+    const Vec3 toward(1, 0, 0);
+    const BallState s = ball(0, 0, Vec3(1, 0, 0));
+    const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
+    CHECK(out.velocity.x() == doctest::Approx(-p.e_rail));
+    CHECK(out.velocity.y() == doctest::Approx(0).scale(1));
+    CHECK(out.velocity.z() == 0);
+    // Friction at the nose, above the centre, leaves the ball turning about the cushion's axis; without
+    // friction, or with the nose at the centre's height, it does not.
+    CHECK(out.spin.y() > 0);
+    CHECK(out.spin.x() == doctest::Approx(0).scale(1));
+    const double lift = std::asin((kStandardNoseHeight - kR) / kR);
+    CHECK(cushion_closing_speed(s, toward, kStandardNoseHeight, p) == doctest::Approx(std::cos(lift)));
+    PhysicsParams smooth = p;
+    smooth.mu_rail = 0;
+    CHECK(resolve_ball_cushion(s, toward, kStandardNoseHeight, smooth).spin.norm() == 0);
+    CHECK(resolve_ball_cushion(s, toward, kR, p).spin.norm() == doctest::Approx(0).scale(1));
+  }
+
+  TEST_CASE("cushion: friction at the nose acts on spin; mirroring the approach mirrors the result") {
+    const PhysicsParams p;
+    const Vec3 toward(0, 1, 0);
+    const BallState s = ball(0, 0, Vec3(0.7, 0.7, 0), Vec3(-0.7 / kR, 0.7 / kR, 10));
+    const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
+    CHECK(out.velocity.y() < 0);
+    CHECK(out.spin != s.spin);
+    CHECK(kinetic_energy(out, p) < kinetic_energy(s, p));
+    BallState mirrored = s;
+    mirrored.velocity.x() = -s.velocity.x();
+    mirrored.spin = Vec3(s.spin.x(), -s.spin.y(), -s.spin.z());  // reflection x -> -x of an axial vector
+    const BallState mirrored_out = resolve_ball_cushion(mirrored, toward, kStandardNoseHeight, p);
+    CHECK(mirrored_out.velocity.x() == doctest::Approx(-out.velocity.x()));
+    CHECK(mirrored_out.velocity.y() == doctest::Approx(out.velocity.y()));
+    CHECK(mirrored_out.spin.z() == doctest::Approx(-out.spin.z()));
+  }
+
+  TEST_CASE("cushion on random inputs: energy never created, and the ball leaves the cushion") {
+    scenes::Rng rng(5);
+    for (int k = 0; k < 500; ++k) {
+      PhysicsParams p;
+      p.e_rail = rng.uniform(0, 1);
+      p.mu_rail = rng.uniform(0, 0.5);
+      const double angle = rng.uniform(0, 2 * M_PI);
+      const Vec3 toward(std::cos(angle), std::sin(angle), 0);
+      const BallState s = ball(0, 0, Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0),
+                               Vec3(rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(-100, 100)));
+      if (s.velocity.dot(toward) <= 0) continue;
+      CAPTURE(s);
+      const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
+      CHECK(kinetic_energy(out, p) <= kinetic_energy(s, p) * (1 + 1e-12));
+      CHECK(cushion_closing_speed(out, toward, kStandardNoseHeight, p) <= 1e-12);
+    }
+  }
+}
