@@ -1,0 +1,160 @@
+// events.json and trajectory.csv: the exact layout of the spec, numbers that read back to the same
+// doubles, and the same bytes from the binary as from the library.
+#include <doctest/doctest.h>
+
+#include <charconv>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "bench/random_scenes.h"
+#include "frames.h"
+#include "number_format.h"
+#include "outputs.h"
+#include "shot.h"
+#include "support.h"
+
+using namespace bsim;
+
+namespace {
+
+Shot shot_of(Scene scene) {
+  Shot shot;
+  shot.scene = std::move(scene);
+  shot.timeline = simulate(shot.scene);
+  return shot;
+}
+
+std::string events_json(const Shot& shot) {
+  std::ostringstream out;
+  write_events_json(shot, out);
+  return out.str();
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(text);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  return out;
+}
+
+double parse(const std::string& s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  REQUIRE(ec == std::errc());
+  REQUIRE(end == s.data() + s.size());
+  return v;
+}
+
+}  // namespace
+
+TEST_SUITE("events.json") {
+  TEST_CASE("a ball left at rest: the whole file, byte for byte") {
+    Scene scene = scenes::standard_table();
+    scene.balls.push_back(scenes::ball_at(7, 0.1, -0.2, scene.physics));
+    const std::string expected =
+        "{\n"
+        "  \"duration\": 3,\n"
+        "  \"events\": [\n"
+        "    {\"index\": 0, \"time\": 0, \"type\": \"start\"},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"speed\": 0},\n"
+        "    {\"index\": 2, \"time\": 3, \"type\": \"end\"}\n"
+        "  ],\n"
+        "  \"pocketed\": [],\n"
+        "  \"final\": [\n"
+        "    {\"ball\": 0, \"number\": 7, \"position\": [0.1, -0.2, 0.028575], \"pocketed\": false}\n"
+        "  ]\n"
+        "}\n";
+    CHECK(events_json(shot_of(scene)) == expected);
+  }
+
+  TEST_CASE("every event type, pocket drops and final states are written with numbers that read back exactly") {
+    Scene scene = scenes::standard_table();
+    // Ball 0 sends ball 1 into the top-right corner pocket; ball 2 runs into the left cushion.
+    scene.balls.push_back(scenes::ball_at(0, 0.6, 0.2, scene.physics, Vec3(2.0, 1.15, 0)));
+    scene.balls.push_back(scenes::ball_at(5, 0.95, 0.4, scene.physics));
+    scene.balls.push_back(scenes::ball_at(12, -0.8, -0.3, scene.physics, Vec3(-1.0, 0, 0)));
+    const Shot shot = shot_of(scene);
+    const std::string json = events_json(shot);
+    bool rail = false, ball_ball = false;
+    for (const Event& e : shot.timeline.events()) {
+      const std::string head = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
+                               ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
+      CHECK(json.find(head) != std::string::npos);
+      if (e.type == EventType::ball_rail) {
+        rail = true;
+        CHECK(json.find(head + ", \"balls\": [" + std::to_string(e.balls[0]) + "], \"rail\": " + std::to_string(e.rail) +
+                        ", \"speed\": " + format_number(e.speed) + "}") != std::string::npos);
+      }
+      if (e.type == EventType::ball_ball) {
+        ball_ball = true;
+        CHECK(json.find(head + ", \"balls\": [0, 1], \"speed\": " + format_number(e.speed) + "}") != std::string::npos);
+      }
+      CHECK(parse(format_number(e.time)) == e.time);
+    }
+    CHECK(rail);
+    CHECK(ball_ball);
+    REQUIRE(shot.timeline.pocket_drops().size() == 1);
+    const PocketDrop& drop = shot.timeline.pocket_drops()[0];
+    CHECK(json.find("\"pocketed\": [\n    {\"time\": " + format_number(drop.time) + ", \"ball\": 1, \"pocket\": 2}\n  ]") !=
+          std::string::npos);
+    CHECK(json.find("{\"ball\": 1, \"number\": 5, \"position\": [") != std::string::npos);
+    CHECK(json.find("\"pocketed\": true}") != std::string::npos);
+    CHECK(json.find("\"duration\": " + format_number(shot.timeline.duration()) + ",") != std::string::npos);
+  }
+
+  TEST_CASE("trajectory.csv: one row per ball per frame from 0 to the duration, exact states, named motions") {
+    const Shot shot = shot_of(scenes::two_ball_shot());
+    const int fps = 24;
+    std::ostringstream out;
+    write_trajectory_csv(shot, fps, out);
+    const std::vector<std::string> lines = split(out.str(), '\n');
+    REQUIRE(!lines.empty());
+    CHECK(lines[0] == "time,ball,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,state");
+    const int frames = frame_count(shot.timeline.duration(), fps);
+    CHECK(frames == static_cast<int>(shot.timeline.duration()) * fps + 1);
+    REQUIRE(lines.size() == 1 + static_cast<std::size_t>(frames * shot.timeline.ball_count()));
+    const std::set<std::string> names = {"stationary", "sliding", "rolling", "spinning", "falling", "pocketed"};
+    for (std::size_t row = 1; row < lines.size(); row += 37) {
+      const std::vector<std::string> cells = split(lines[row], ',');
+      REQUIRE(cells.size() == 16);
+      const int frame = static_cast<int>((row - 1) / 2), ball = static_cast<int>((row - 1) % 2);
+      CHECK(parse(cells[0]) == frame_time(frame, fps));
+      CHECK(cells[1] == std::to_string(ball));
+      const BallState s = shot.timeline.state(ball, frame_time(frame, fps));
+      CHECK(parse(cells[2]) == s.position.x());
+      CHECK(parse(cells[7]) == s.velocity.z());
+      CHECK(parse(cells[11]) == s.orientation.w());
+      CHECK(names.count(cells[15]) == 1);
+      CHECK(cells[15] == to_string(s.motion));
+    }
+  }
+
+  TEST_CASE("billiards-export --events-only writes the same bytes as the library, twice") {
+    test::TempDir dir;
+    const std::string text =
+        "cue 0 10\n"
+        "ball 0 -0.6 -0.1 0.028575  2.4 0.42 0  1 0 0 0\n"
+        "ball 9 0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
+        "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+    const std::string scene = dir.file("shot.scn", text);
+    for (const char* out : {"a", "b"}) {
+      const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scene +
+                                                      "' --events-only -o '" + (dir.path / out).string() + "'");
+      INFO(r.err);
+      REQUIRE(r.exit_code == 0);
+    }
+    auto slurp = [](const std::filesystem::path& p) {
+      std::ifstream in(p, std::ios::binary);
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    };
+    const ShotResult loaded = load_shot(text, "shot");
+    REQUIRE(loaded.shot);
+    CHECK(slurp(dir.path / "a" / "events.json") == events_json(*loaded.shot));
+    CHECK(slurp(dir.path / "a" / "events.json") == slurp(dir.path / "b" / "events.json"));
+    CHECK(slurp(dir.path / "a" / "trajectory.csv") == slurp(dir.path / "b" / "trajectory.csv"));
+  }
+}

@@ -1,0 +1,210 @@
+// The shot as a timeline: its shape (start, cue, events, end), exact states at any time, ordering of
+// simultaneous events, cushion ends, pocket drops, determinism, and physical sanity over random scenes.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "bench/physics_print.h"
+#include "bench/random_scenes.h"
+#include "bench/shot_checks.h"
+#include "constants.h"
+#include "motion.h"
+#include "pocket_fall.h"
+#include "simulate.h"
+
+using namespace bsim;
+
+namespace {
+
+const double kR = PhysicsParams{}.ball_radius;
+
+Scene table_with(std::vector<Ball> balls) {
+  Scene scene = scenes::standard_table();
+  scene.balls = std::move(balls);
+  return scene;
+}
+
+Ball ball(int number, double x, double y, double vx = 0, double vy = 0) {
+  return scenes::ball_at(number, x, y, PhysicsParams{}, Vec3(vx, vy, 0));
+}
+
+std::vector<const Event*> of_type(const Timeline& timeline, EventType type) {
+  std::vector<const Event*> out;
+  for (const Event& e : timeline.events())
+    if (e.type == type) out.push_back(&e);
+  return out;
+}
+
+}  // namespace
+
+TEST_SUITE("simulate") {
+  TEST_CASE("start at 0, all at rest until the cue at kCueLeadTime, end a whole number of seconds after the last rest") {
+    const Timeline timeline = simulate(table_with({ball(0, -0.5, 0.1, 1.2, 0.3), ball(3, 0.4, -0.2)}));
+    const auto& events = timeline.events();
+    REQUIRE(events.size() >= 3);
+    CHECK(events.front().type == EventType::start);
+    CHECK(events.front().time == 0);
+    CHECK(events[1].type == EventType::cue);
+    CHECK(events[1].time == kCueLeadTime);
+    CHECK(events[1].balls == std::vector<int>{0});
+    CHECK(events[1].speed == doctest::Approx(std::hypot(1.2, 0.3)));
+    CHECK(timeline.cue_time() == kCueLeadTime);
+    CHECK(events.back().type == EventType::end);
+    for (std::size_t k = 0; k < events.size(); ++k) {
+      CHECK(events[k].index == static_cast<int>(k));
+      if (k > 0) CHECK(events[k - 1].time <= events[k].time);
+    }
+    const double end = timeline.duration();
+    CHECK(end == std::floor(end));
+    double last_rest = 0;
+    for (int i = 0; i < timeline.ball_count(); ++i) last_rest = std::max(last_rest, timeline.segments(i).back().t0);
+    CHECK(end >= last_rest + kEndHold);
+    CHECK(end < last_rest + kEndHold + kDurationStep);
+    for (double t : {0.0, 1.0, kCueLeadTime - 1e-9}) {
+      const BallState s = timeline.state(0, t);
+      CHECK(s.motion == Motion::stationary);
+      CHECK(s.position == Vec3(-0.5, 0.1, kR));
+    }
+    for (int i = 0; i < timeline.ball_count(); ++i) {
+      const BallState s = timeline.state(i, end);
+      CHECK(s.velocity.norm() == 0);
+      CHECK(s.spin.norm() == 0);
+    }
+  }
+
+  TEST_CASE("state(t) is the closed form from the segment in force, continuous across events") {
+    const Timeline timeline = simulate(table_with({ball(0, -0.8, 0, 2.0, 0.5), ball(1, 0.1, 0.15)}));
+    for (int i = 0; i < timeline.ball_count(); ++i) {
+      const auto& segments = timeline.segments(i);
+      for (std::size_t k = 1; k < segments.size(); ++k) {
+        const MotionSegment &previous = segments[k - 1], &next = segments[k];
+        if (previous.start.motion == Motion::falling) continue;
+        const BallState end = evolve(previous.start, timeline.physics(), next.t0 - previous.t0);
+        CHECK((end.position - next.start.position).norm() < 1e-12);
+        const double mid = 0.5 * (previous.t0 + next.t0);
+        CHECK((timeline.state(i, mid).position - evolve(previous.start, timeline.physics(), mid - previous.t0).position)
+                  .norm() == 0);
+      }
+    }
+  }
+
+  TEST_CASE("two hits at one instant are both events, ordered by ball index, and resolved pairwise") {
+    // The cue ball meets balls 1 and 2, placed symmetrically about its path, at the same time.
+    const double x = 0.3 + std::sqrt(3.0) * kR;
+    const Timeline timeline = simulate(table_with({ball(0, -0.3, 0, 1.5, 0), ball(1, x, kR), ball(2, x, -kR)}));
+    const auto hits = of_type(timeline, EventType::ball_ball);
+    REQUIRE(hits.size() >= 2);
+    CHECK(hits[0]->balls == std::vector<int>{0, 1});
+    CHECK(hits[1]->balls == std::vector<int>{0, 2});
+    CHECK(hits[0]->time == hits[1]->time);
+    CHECK(hits[1]->index == hits[0]->index + 1);
+    // The pair is resolved one after the other, so the two object balls leave nearly mirrored.
+    const BallState one = hits[0]->after[1], two = hits[1]->after[1];
+    CHECK(one.velocity.y() > 0);
+    CHECK(two.velocity.y() < 0);
+    CHECK(one.velocity.x() > 0);
+    CHECK(two.velocity.x() > 0);
+  }
+
+  TEST_CASE("a ball at a cushion's end point strikes the jaw: a ball-rail event at the end point") {
+    // Just beside the side pocket's jaw, the first end of rail 1 at (0.065, 0.635).
+    const Timeline timeline = simulate(table_with({ball(0, 0.062, 0.3, 0, 1.0)}));
+    const auto rails = of_type(timeline, EventType::ball_rail);
+    REQUIRE_FALSE(rails.empty());
+    CHECK(rails[0]->rail == 1);
+    CHECK(rails[0]->where.x() == doctest::Approx(0.065).epsilon(1e-9));
+    CHECK(rails[0]->where.y() == doctest::Approx(0.635).epsilon(1e-9));
+    CHECK(rails[0]->where.z() == doctest::Approx(kStandardNoseHeight).epsilon(1e-9));
+    CHECK(rails[0]->after[0].velocity.y() < 0);
+    CHECK(rails[0]->after[0].velocity.x() < 0);  // the jaw's corner sends it off sideways
+    CHECK(timeline.pocket_drops().empty());
+  }
+
+  TEST_CASE("a ball rolled into a corner pocket falls, settles below the bed, and takes no further part") {
+    const double speed = 1.0, d = 0.3;
+    const Timeline timeline = simulate(table_with({ball(0, 1.27 - d, 0.635 - d, speed, speed)}));
+    REQUIRE(timeline.pocket_drops().size() == 1);
+    const PocketDrop drop = timeline.pocket_drops()[0];
+    CHECK(drop.ball == 0);
+    CHECK(drop.pocket == 2);
+    CHECK(timeline.state(0, drop.time - 1e-6).motion != Motion::falling);
+    const BallState falling = timeline.state(0, drop.time + 0.05);
+    CHECK(falling.motion == Motion::falling);
+    CHECK(falling.position.z() < kR);
+    const BallState rest = timeline.state(0, timeline.duration());
+    CHECK(rest.motion == Motion::pocketed);
+    CHECK(rest.position.z() == doctest::Approx(kR - kPocketDepth));
+    CHECK(std::hypot(rest.position.x() - 1.27, rest.position.y() - 0.635) < 0.08);
+    for (const Event& e : timeline.events())
+      if (e.type == EventType::ball_rail || e.type == EventType::ball_ball) CHECK(e.time < drop.time);
+  }
+
+  TEST_CASE("a slow ball over the lip rolls over the edge before it falls") {
+    const Pocket pocket{Vec3(0, 0, 0), 0.06, {}};
+    BallState entry;
+    entry.position = Vec3(-0.06, 0, kR);
+    entry.velocity = Vec3(0.1, 0, 0);  // well below sqrt(g R) = 0.53 m/s
+    entry.motion = Motion::falling;
+    const PhysicsParams params;
+    const BallState early = fall_state(entry, pocket, params, 0.01);
+    // Pivoting on the lip: the centre stays R from it.
+    CHECK((early.position - Vec3(-0.06, 0, 0)).norm() == doctest::Approx(kR).epsilon(1e-9));
+    const double settle = fall_duration(entry, pocket, params);
+    CHECK(settle > 0.1);
+    CHECK(fall_state(entry, pocket, params, settle).motion == Motion::pocketed);
+    CHECK(std::hypot(fall_state(entry, pocket, params, settle).position.x(), 0) < pocket.radius);
+  }
+
+  TEST_CASE("the same scene gives the same timeline, bit for bit") {
+    const Scene scene = scenes::random_break(42);
+    const Timeline a = simulate(scene), b = simulate(scene);
+    REQUIRE(a.events().size() == b.events().size());
+    for (std::size_t k = 0; k < a.events().size(); ++k) {
+      CHECK(a.events()[k].time == b.events()[k].time);
+      CHECK(a.events()[k].balls == b.events()[k].balls);
+      CHECK(a.events()[k].speed == b.events()[k].speed);
+    }
+    for (int i = 0; i < a.ball_count(); ++i) {
+      const BallState sa = a.state(i, 3.7), sb = b.state(i, 3.7);
+      CHECK(sa.position == sb.position);
+      CHECK(sa.orientation.coeffs() == sb.orientation.coeffs());
+    }
+  }
+
+  TEST_CASE("random breaks and scattered tables: no overlap, nobody past a cushion, no NaN, energy never rises") {
+    std::vector<Scene> scenes_to_check;
+    for (std::uint64_t seed = 1; seed <= 25; ++seed) scenes_to_check.push_back(scenes::random_break(seed));
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) scenes_to_check.push_back(scenes::stress_table(30, seed));
+    for (const Scene& scene : scenes_to_check) {
+      const Timeline timeline = simulate(scene);
+      const checks::Faults faults = checks::find_faults(scene, timeline);
+      CAPTURE(scene.name);
+      CHECK(faults.overlaps == 0);
+      CHECK(faults.escapes == 0);
+      CHECK(faults.nans == 0);
+      CHECK(faults.missed == 0);
+      CHECK(faults.energy_gains == 0);
+      // Energy of the balls on the bed, after each event, never rises.
+      double previous = INFINITY;
+      for (const Event& e : timeline.events()) {
+        if (e.time < timeline.cue_time()) continue;
+        double energy = 0;
+        for (int i = 0; i < timeline.ball_count(); ++i) {
+          const BallState s = checks::detail::state_at(timeline, i, e.time);
+          if (checks::detail::on_bed(s)) energy += kinetic_energy(s, timeline.physics());
+        }
+        CHECK(energy <= previous * (1 + 1e-12) + 1e-15);
+        previous = energy;
+      }
+    }
+  }
+
+  TEST_CASE("a shot that would never end is cut off") {
+    Scene scene;
+    scene.physics.mu_roll = 0;
+    scene.balls.push_back(ball(0, 0, 0, 1, 0));
+    const SimulationResult result = simulate_events(scene);
+    CHECK(result.cut_off);
+    CHECK(result.events.back().time == std::ceil(kCueLeadTime + kMaxShotTime + kEndHold));
+  }
+}
