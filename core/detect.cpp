@@ -27,7 +27,7 @@ std::optional<double> first_contact(const Poly& f, double gap, double closing, d
     g.c[0] -= level(x);
     return g.c[0] > 0 ? first_descent(g, 0, h) : std::optional<double>(0.0);
   };
-  if (overlap >= kMaxPushOverlap) return closing > 0 ? std::optional<double>(0.0) : overlap_reaches(overlap + kContactSlop, horizon);
+  if (overlap >= kMaxPushOverlap) return overlap_reaches(overlap + kContactSlop, horizon);
   const std::optional<double> slop = overlap_reaches(overlap + kContactSlop, horizon);
   if (!slop || *slop >= kPushInterval) return slop;
   const std::optional<double> deep = overlap_reaches(kMaxPushOverlap, std::min(kPushInterval, horizon));

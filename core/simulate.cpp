@@ -68,10 +68,15 @@ class Simulator {
     const double t_cue = kCueLeadTime;
     cap_ = t_cue + kMaxShotTime;
     strike(t_cue);
+    long handled = 0;
     while (!queue_.empty()) {
       const Candidate c = queue_.top();
       queue_.pop();
       if (c.version_a != version(c.a) || (c.kind == Kind::ball_ball && c.version_b != version(c.b))) continue;
+      if (++handled > kMaxSteps) {
+        cut_off_ = true;  // a safety net: no known scene comes near it
+        break;
+      }
       handle(c);
     }
     finish(t_cue);
@@ -372,10 +377,11 @@ class Simulator {
     double settled = t_cue;
     for (int i = 0; i < n_; ++i) {
       const MotionSegment& seg = current(i);
-      if (seg.start.motion == Motion::stationary || seg.start.motion == Motion::pocketed) {
+      if (!cut_off_ && (seg.start.motion == Motion::stationary || seg.start.motion == Motion::pocketed)) {
         settled = std::max(settled, seg.t0);
       } else {
-        settled = std::max(settled, cap_);
+        // Still moving: stop the shot where the simulation stopped.
+        settled = std::max(settled, cut_off_ ? seg.t0 : cap_);
         cut_off_ = true;
       }
     }

@@ -17,6 +17,9 @@ inline constexpr double kDurationStep = 1.0;
 /// s after the cue strike at which a shot that never comes to rest (say, mu_roll = 0) is cut off.
 inline constexpr double kMaxShotTime = 600.0;
 
+/// Events and transitions after which a shot is cut off (a safety net against a runaway simulation).
+inline constexpr long kMaxSteps = 2'000'000;
+
 /// m/s, closing speed below which a contact that would at once press again (a push) does not bounce.
 inline constexpr double kPushSpeed = 0.01;
 
@@ -25,7 +28,7 @@ struct SimulationResult {
   std::vector<Event> events;                         ///< numbered, start to end
   std::vector<PocketDrop> drops;
   long candidates_tested = 0;  ///< contact tests run (for the bench)
-  bool cut_off = false;        ///< the shot reached kMaxShotTime still moving
+  bool cut_off = false;        ///< the shot reached kMaxShotTime (or kMaxSteps) still moving
 };
 
 /// Runs the shot's physics: events and closed-form motion segments, without orientations.

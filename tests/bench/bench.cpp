@@ -51,11 +51,13 @@ void figures(const char* name, const bsim::Scene& scene, int runs) {
 
 int soak(long count) {
   bsim::checks::Faults sum;
-  long events = 0, drops = 0, faulty = 0;
+  long events = 0, drops = 0, faulty = 0, cut_offs = 0;
   const auto t0 = Clock::now();
   for (long seed = 1; seed <= count; ++seed) {
     const bsim::Scene scene = bsim::scenes::random_break(static_cast<std::uint64_t>(seed));
-    const bsim::Timeline timeline = bsim::simulate(scene);
+    bsim::SimulationResult result = bsim::simulate_events(scene);
+    cut_offs += result.cut_off ? 1 : 0;
+    const bsim::Timeline timeline(scene, std::move(result.segments), std::move(result.events), std::move(result.drops));
     const bsim::checks::Faults f = bsim::checks::find_faults(scene, timeline);
     events += static_cast<long>(timeline.events().size());
     drops += static_cast<long>(timeline.pocket_drops().size());
@@ -71,11 +73,12 @@ int soak(long count) {
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("soak: %ld random breaks, %ld events, %ld balls pocketed, %.1f s\n", count, events, drops, seconds);
-  std::printf("soak: %ld overlaps, %ld rail escapes, %ld NaN, %ld missed contacts, %ld energy gains (%ld faulty breaks)\n",
-              sum.overlaps, sum.escapes, sum.nans, sum.missed, sum.energy_gains, faulty);
+  std::printf("soak: %ld overlaps, %ld rail escapes, %ld NaN, %ld missed contacts, %ld energy gains, %ld cut off "
+              "(%ld faulty breaks)\n",
+              sum.overlaps, sum.escapes, sum.nans, sum.missed, sum.energy_gains, cut_offs, faulty);
   std::printf("soak: deepest overlap of two balls or a ball and a cushion: %.3g m (faults from %.3g m)\n", sum.deepest,
               bsim::checks::kFaultTolerance);
-  return sum.total() == 0 ? 0 : 1;
+  return sum.total() == 0 && cut_offs == 0 ? 0 : 1;
 }
 
 }  // namespace
