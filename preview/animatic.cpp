@@ -124,13 +124,14 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   FfmpegPipe ffmpeg;
   bool ok = ffmpeg.start(args, error);
   const bool overlays = options.overlays.paths || options.overlays.events || options.overlays.camera;
+  const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
   for (int k = 0; ok && k < frames; ++k) {
     const double t = frame_time(k, fps);
     const FrameState frame = scripted_frame(shot, t);
     renderer.draw(shot.scene, frame, width, height);
     if (overlays) {
       ImDrawList* list = canvas.begin_2d();
-      draw_overlays(*list, OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts()},
+      draw_overlays(*list, OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
                     options.overlays);
       canvas.end_2d();
     }

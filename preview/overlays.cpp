@@ -73,32 +73,72 @@ const CameraShot* camera_shot_at(const Shot& shot, double t) {
   return found;
 }
 
-std::vector<Vec3> ball_path(const Timeline& timeline, int ball, double from, double to) {
-  std::vector<Vec3> points;
-  const double radius = timeline.physics().ball_radius;
-  for (double t = from;; t += kPathStep) {
-    const double clamped = std::min(t, to);
-    const BallState s = timeline.state(ball, clamped);
-    if (s.motion == Motion::pocketed) break;
-    // On the cloth the path lies on the bed; in a pocket it follows the drop.
-    Vec3 p = s.position;
-    p.z() = std::min(p.z() - radius, 0.0) + 0.001;
-    if (points.empty() || (p - points.back()).norm() > 1e-4) points.push_back(p);
-    if (clamped >= to) break;
-  }
-  return points;
+// Samples up to time t, then the point at t itself: the part of a path already travelled.
+std::vector<Vec3> before(const std::vector<OverlayPaths::Point>& path, double t, const Vec3& now) {
+  std::vector<Vec3> out;
+  for (const auto& p : path)
+    if (p.time <= t) out.push_back(p.where);
+  out.push_back(now);
+  return out;
+}
+
+std::vector<Vec3> after(const std::vector<OverlayPaths::Point>& path, double t, const Vec3& now) {
+  std::vector<Vec3> out{now};
+  for (const auto& p : path)
+    if (p.time > t) out.push_back(p.where);
+  return out;
+}
+
+// On the cloth a path lies on the bed; in a pocket it follows the drop.
+Vec3 path_point(const BallState& s, double radius) {
+  Vec3 p = s.position;
+  p.z() = std::min(p.z() - radius, 0.0) + 0.001;
+  return p;
 }
 
 }  // namespace
 
+OverlayPaths overlay_paths(const Shot& shot) {
+  OverlayPaths paths;
+  const Timeline& timeline = shot.timeline;
+  const double duration = timeline.duration(), radius = timeline.physics().ball_radius;
+  for (int i = 0; i < timeline.ball_count(); ++i) {
+    std::vector<OverlayPaths::Point>& path = paths.balls.emplace_back();
+    for (double t = 0;; t += kPathStep) {
+      const double at = std::min(t, duration);
+      const BallState s = timeline.state(i, at);
+      if (s.motion == Motion::pocketed) break;
+      const Vec3 p = path_point(s, radius);
+      if (path.empty() || (p - path.back().where).norm() > 1e-4) path.push_back({at, p});
+      if (at >= duration) break;
+    }
+  }
+  if (shot.camera) {
+    constexpr int kCameraSamples = 400;
+    for (int k = 0; k <= kCameraSamples; ++k) {
+      const double t = duration * k / kCameraSamples;
+      const CameraPose pose = shot.camera->pose(t);
+      paths.eyes.push_back({t, pose.location});
+      paths.targets.push_back({t, pose.look_at});
+    }
+  }
+  return paths;
+}
+
 void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
+  const OverlayPaths local = f.paths ? OverlayPaths{} : overlay_paths(f.shot);
+  const OverlayPaths& paths = f.paths ? *f.paths : local;
   const Timeline& timeline = f.shot.timeline;
   const Projector project = projector(f);
   const float scale = ui_scale(f);
-  for (int i = 0; i < timeline.ball_count(); ++i) {
+  for (int i = 0; i < timeline.ball_count() && i < static_cast<int>(paths.balls.size()); ++i) {
     const int number = f.shot.scene.balls[static_cast<std::size_t>(i)].number;
-    const std::vector<Vec3> past = ball_path(timeline, i, 0, f.time);
-    const std::vector<Vec3> future = ball_path(timeline, i, f.time, timeline.duration());
+    const BallState now = timeline.state(i, f.time);
+    const auto& path = paths.balls[static_cast<std::size_t>(i)];
+    const Vec3 here = path_point(now, timeline.physics().ball_radius);
+    const bool gone = now.motion == Motion::pocketed;
+    const std::vector<Vec3> past = gone ? before(path, f.time, path.empty() ? here : path.back().where) : before(path, f.time, here);
+    const std::vector<Vec3> future = gone ? std::vector<Vec3>{} : after(path, f.time, here);
     if (past.size() < 2 && future.size() < 2) continue;
     draw_projected_path(list, project, future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
     draw_projected_path(list, project, future, ball_ui_color(number, 120), 1.5f * scale);
@@ -133,15 +173,8 @@ void draw_event_markers(ImDrawList& list, const OverlayFrame& f) {
 void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
   if (!f.shot.camera) return;
   const Scene& scene = f.shot.scene;
-  const double duration = f.shot.timeline.duration();
-  // Sample the scripted camera's path and the points it looks at.
-  std::vector<Vec3> eyes, targets;
-  const int samples = 400;
-  for (int k = 0; k <= samples; ++k) {
-    const CameraPose pose = f.shot.camera->pose(duration * k / samples);
-    eyes.push_back(pose.location);
-    targets.push_back(pose.look_at);
-  }
+  const OverlayPaths local = f.paths ? OverlayPaths{} : overlay_paths(f.shot);
+  const OverlayPaths& paths = f.paths ? *f.paths : local;
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
   const auto grow = [&](const Vec3& p, double margin) {
     x0 = std::min(x0, p.x() - margin);
@@ -154,7 +187,7 @@ void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
     grow(r.b, 0.25);
   }
   for (const Pocket& p : scene.pockets) grow(p.center, 0.25);
-  for (const Vec3& e : eyes) grow(e, 0.15);
+  for (const auto& e : paths.eyes) grow(e.where, 0.15);
   if (x1 <= x0 || y1 <= y0) return;
 
   const float scale = ui_scale(f);
@@ -186,11 +219,8 @@ void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
 
   // Path of the camera (bright up to now) and of what it looks at.
   std::vector<ImVec2> looked, past, future;
-  for (std::size_t k = 0; k < eyes.size(); ++k) {
-    const double t = duration * static_cast<double>(k) / samples;
-    looked.push_back(map(targets[k]));
-    (t <= f.time ? past : future).push_back(map(eyes[k]));
-  }
+  for (const auto& p : paths.targets) looked.push_back(map(p.where));
+  for (const auto& p : paths.eyes) (p.time <= f.time ? past : future).push_back(map(p.where));
   if (!past.empty()) future.insert(future.begin(), past.back());
   list.AddPolyline(looked.data(), static_cast<int>(looked.size()), IM_COL32(110, 200, 255, 110), ImDrawFlags_None, 1.2f * scale);
   if (future.size() >= 2)
@@ -245,9 +275,9 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
 void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspect) {
   if (!f.shot.camera) return;
   const Projector project = projector(f);
-  const double duration = f.shot.timeline.duration();
+  const OverlayPaths local = f.paths ? OverlayPaths{} : overlay_paths(f.shot);
   std::vector<Vec3> path;
-  for (int k = 0; k <= 400; ++k) path.push_back(f.shot.camera->pose(duration * k / 400).location);
+  for (const auto& p : (f.paths ? *f.paths : local).eyes) path.push_back(p.where);
   draw_projected_path(list, project, path, IM_COL32(255, 214, 90, 150), 1.5f);
 
   const ViewCamera scripted = scripted_view(f.shot, f.time);
@@ -280,11 +310,18 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
   }
 }
 
-void draw_overlays(ImDrawList& list, const OverlayFrame& frame, const PreviewOverlays& overlays) {
+void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOverlays& overlays) {
+  if (!overlays.paths && !overlays.events && !overlays.camera) return;
+  OverlayPaths local;
+  OverlayFrame frame = given;
+  if (!frame.paths) {
+    local = overlay_paths(frame.shot);
+    frame.paths = &local;
+  }
   if (overlays.paths) draw_ball_paths(list, frame);
   if (overlays.events) draw_event_markers(list, frame);
   if (overlays.camera) draw_camera_map(list, frame);
-  if (overlays.paths || overlays.events || overlays.camera) draw_status_line(list, frame);
+  draw_status_line(list, frame);
 }
 
 }  // namespace bsim

@@ -1,6 +1,8 @@
 #pragma once
 // Drawn over the 3D picture in 2D: every ball's path, event markers, the camera seen from above,
 // a line of text saying where in the shot the picture is, and the scripted camera as a frustum.
+#include <vector>
+
 #include "fonts.h"
 #include "preview_options.h"
 #include "view.h"
@@ -11,6 +13,17 @@ namespace bsim {
 
 struct Shot;
 
+/// Paths sampled once per shot (drawing them every frame from the timeline would cost more than the frame).
+struct OverlayPaths {
+  struct Point {
+    double time;  ///< s
+    Vec3 where;
+  };
+  std::vector<std::vector<Point>> balls;  ///< per ball, on the cloth, until it is pocketed
+  std::vector<Point> eyes, targets;       ///< the scripted camera and the point it looks at
+};
+OverlayPaths overlay_paths(const Shot& shot);
+
 struct OverlayFrame {
   const Shot& shot;
   double time = 0;           ///< s
@@ -18,6 +31,7 @@ struct OverlayFrame {
   double width = 0, height = 0;  ///< px, the picture's size
   const UiFonts& fonts;
   double left = 0, top = 0;      ///< px, where the picture sits in the draw list (a window's view)
+  const OverlayPaths* paths = nullptr;  ///< the shot's paths; sampled on the spot when null
 };
 
 void draw_ball_paths(ImDrawList& list, const OverlayFrame& frame);

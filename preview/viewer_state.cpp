@@ -75,6 +75,7 @@ bool load_into(ViewerState& state) {
   if (!loaded.shot) return false;
   state.shot = std::move(loaded.shot);
   state.timeline = timeline_data(*state.shot);
+  state.paths = overlay_paths(*state.shot);
   state.set_time(state.time);  // keep the time, within the new shot
   ++state.reloads;
   return true;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "preview_options.h"
+#include "overlays.h"
 #include "shot_source.h"
 #include "timeline_picture.h"
 #include "view.h"
@@ -33,6 +34,7 @@ struct ViewerState {
   bool load_failed = false;           ///< the last load had errors (the previous shot stays shown)
   int reloads = 0;
   TimelineData timeline;              ///< the scrub bar's contents, for the current shot
+  OverlayPaths paths;                 ///< the overlays' paths, for the current shot
 
   double time = 0;        ///< s
   bool playing = false;

@@ -146,7 +146,7 @@ ViewRect view_rect(float window_width, float window_height, int picture_width, i
 void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, const ViewRect& view, const UiFonts& fonts) {
   if (!state.shot) return;
   ImDrawList& list = *ImGui::GetBackgroundDrawList();
-  const OverlayFrame frame{*state.shot, state.time, camera, view.width, view.height, fonts, view.x, view.y};
+  const OverlayFrame frame{*state.shot, state.time, camera, view.width, view.height, fonts, view.x, view.y, &state.paths};
   list.PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
   if (state.free_camera) draw_scripted_frustum(list, frame, static_cast<double>(view.width) / view.height);
   draw_overlays(list, frame, state.overlays);
