@@ -155,8 +155,6 @@ BallState after_transition(const BallState& s, const PhysicsParams& params) {
   switch (s.motion) {
     case Motion::sliding: {
       // The slip is zero now by construction: roll (or rest) exactly.
-      out.spin.x() = 0;
-      out.spin.y() = 0;
       const Vec3 locked = kUp.cross(out.velocity) / params.ball_radius;
       out.spin.x() = locked.x();
       out.spin.y() = locked.y();

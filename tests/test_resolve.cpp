@@ -79,12 +79,14 @@ TEST_SUITE("resolve") {
   TEST_CASE("ball-ball on random inputs: momentum and angular momentum conserved, energy never created") {
     scenes::Rng rng(11);
     for (int k = 0; k < 500; ++k) {
-      const PhysicsParams p = params(rng.uniform(0, 1), rng.uniform(0, 0.3));
+      const double e = rng.uniform(0, 1);
+      const PhysicsParams p = params(e, rng.uniform(0, 0.3));
       const double angle = rng.uniform(0, 2 * M_PI);
       const Vec3 n(std::cos(angle), std::sin(angle), 0);
-      auto random_vec = [&](double s) { return Vec3(rng.uniform(-s, s), rng.uniform(-s, s), rng.uniform(-s, s)); };
-      const BallState a = ball(0, 0, Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0), random_vec(100));
-      const BallState b = ball(2 * kR * n.x(), 2 * kR * n.y(), Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0), random_vec(100));
+      const Vec3 va = rng.vector(-3, 3), wa = rng.vector(-100, 100, -100, 100);
+      const Vec3 vb = rng.vector(-3, 3), wb = rng.vector(-100, 100, -100, 100);
+      const BallState a = ball(0, 0, va, wa);
+      const BallState b = ball(2 * kR * n.x(), 2 * kR * n.y(), vb, wb);
       if (closing_speed(a, b) <= 0) continue;
       const auto [na, nb] = resolve_ball_ball(a, b, p);
       CAPTURE(a);
@@ -194,8 +196,8 @@ TEST_SUITE("resolve") {
       p.mu_rail = rng.uniform(0, 0.5);
       const double angle = rng.uniform(0, 2 * M_PI);
       const Vec3 toward(std::cos(angle), std::sin(angle), 0);
-      const BallState s = ball(0, 0, Vec3(rng.uniform(-3, 3), rng.uniform(-3, 3), 0),
-                               Vec3(rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(-100, 100)));
+      const Vec3 v = rng.vector(-3, 3), w = rng.vector(-100, 100, -100, 100);
+      const BallState s = ball(0, 0, v, w);
       if (s.velocity.dot(toward) <= 0) continue;
       CAPTURE(s);
       const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);

@@ -21,6 +21,13 @@ class Rng {
   }
   /// Uniform in [lo, hi).
   double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
+  /// Each coordinate uniform in [lo, hi), drawn x, y, z in that order (argument order is unspecified in C++).
+  Vec3 vector(double lo, double hi, double z_lo = 0, double z_hi = 0) {
+    const double x = uniform(lo, hi);
+    const double y = uniform(lo, hi);
+    const double z = z_lo == z_hi ? z_lo : uniform(z_lo, z_hi);
+    return Vec3(x, y, z);
+  }
 
  private:
   std::uint64_t state_;
@@ -83,16 +90,19 @@ inline Scene random_break(std::uint64_t seed) {
   Scene scene = standard_table();
   scene.name = "random_break";
   const double R = scene.physics.ball_radius;
-  const Vec3 cue(rng.uniform(-1.1, -0.7), rng.uniform(-0.5, 0.5), R);
+  const double cue_x = rng.uniform(-1.1, -0.7);
+  const Vec3 cue(cue_x, rng.uniform(-0.5, 0.5), R);
   const double apex = 0.635;
   const double aim = std::atan2(-cue.y(), apex - cue.x()) + rng.uniform(-0.03, 0.03);
   const double speed = rng.uniform(2.0, 10.0);
   Ball b = ball_at(0, cue.x(), cue.y(), scene.physics, Vec3(speed * std::cos(aim), speed * std::sin(aim), 0));
   const double follow = rng.uniform(-0.6, 0.6) * speed / R;  // +: topspin about the axis left of travel
-  b.spin = Vec3(-std::sin(aim), std::cos(aim), 0) * follow + Vec3(0, 0, rng.uniform(-60, 60));
+  const double side = rng.uniform(-60, 60);
+  b.spin = Vec3(-std::sin(aim), std::cos(aim), 0) * follow + Vec3(0, 0, side);
   scene.balls.push_back(b);
   const double jitter = rng.uniform(0, 5e-5);
-  add_rack(scene, apex, 3 * jitter + rng.uniform(0, 3e-4), jitter, &rng);
+  const double gap = 3 * jitter + rng.uniform(0, 3e-4);
+  add_rack(scene, apex, gap, jitter, &rng);
   scene.cue.heading_deg = aim * 180 / M_PI;
   return scene;
 }
@@ -114,7 +124,8 @@ inline Scene stress_table(int count, std::uint64_t seed) {
   for (int k = 0; k < count; ++k) {
     const double x = -hx + 0.2 + (k % columns + 0.5) * dx + rng.uniform(-0.2, 0.2) * (dx - 2 * R);
     const double y = -hy + 0.2 + (k / columns + 0.5) * dy + rng.uniform(-0.2, 0.2) * (dy - 2 * R);
-    const double heading = rng.uniform(0, 2 * M_PI), speed = rng.uniform(0.5, 3.0);
+    const double heading = rng.uniform(0, 2 * M_PI);
+    const double speed = rng.uniform(0.5, 3.0);
     scene.balls.push_back(ball_at(k % 16, x, y, scene.physics, speed * Vec3(std::cos(heading), std::sin(heading), 0)));
   }
   return scene;
