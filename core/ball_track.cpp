@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "motion.h"
+#include "pocket_fall.h"
+
 namespace bsim {
 
 namespace {
@@ -22,8 +25,8 @@ bool out_of_sight(const BallState& state, double radius) {
 }
 }  // namespace
 
-BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad)
-    : timeline_(&timeline), ball_(ball) {
+BallTrack::BallTrack(const Scene& scene, const Timeline& timeline, int ball, std::optional<double> initial_heading_rad)
+    : scene_(&scene), timeline_(&timeline), ball_(ball) {
   const double duration = timeline.duration();
   const double radius = timeline.physics().ball_radius;
   const int samples = static_cast<int>(std::ceil(duration / kSampleStep)) + 1;
@@ -32,7 +35,7 @@ BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> i
   // Where the ball leaves the picture: the first sample out of sight, refined by bisection.
   hidden_time_ = std::numeric_limits<double>::infinity();
   for (int i = 0; i < samples; ++i) {
-    if (!out_of_sight(timeline.state(ball, sample_time(i)), radius)) continue;
+    if (!out_of_sight(motion_state(sample_time(i)), radius)) continue;
     if (i == 0) {
       hidden_time_ = 0;
       break;
@@ -40,7 +43,7 @@ BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> i
     double seen = sample_time(i - 1), unseen = sample_time(i);
     for (int k = 0; k < 60 && unseen - seen > 1e-12; ++k) {
       const double mid = 0.5 * (seen + unseen);
-      (out_of_sight(timeline.state(ball, mid), radius) ? unseen : seen) = mid;
+      (out_of_sight(motion_state(mid), radius) ? unseen : seen) = mid;
     }
     hidden_time_ = seen;
     break;
@@ -81,9 +84,20 @@ BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> i
   knot_integral_.push_back(integral);
 }
 
-Vec3 BallTrack::position(double t) const {
-  return timeline_->state(ball_, std::min(t, hidden_time_)).position;
+BallState BallTrack::motion_state(double t) const {
+  const std::vector<MotionSegment>& list = timeline_->segments(ball_);
+  const PhysicsParams& physics = timeline_->physics();
+  t = std::clamp(t, 0.0, timeline_->duration());
+  auto it = std::upper_bound(list.begin(), list.end(), t, [](double v, const MotionSegment& s) { return v < s.t0; });
+  if (it != list.begin()) --it;
+  const double dt = std::max(0.0, t - it->t0);
+  if (it->start.motion == Motion::falling && it->pocket >= 0 &&
+      it->pocket < static_cast<int>(scene_->pockets.size()))
+    return fall_state(it->start, scene_->pockets[static_cast<std::size_t>(it->pocket)], physics, dt);
+  return evolve(it->start, physics, std::min(dt, transition_time(it->start, physics)));
 }
+
+Vec3 BallTrack::position(double t) const { return motion_state(std::min(t, hidden_time_)).position; }
 
 double BallTrack::arc_length(double t) const {
   const double duration = timeline_->duration();

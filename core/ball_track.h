@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "scene.h"
 #include "timeline.h"
 
 namespace bsim {
@@ -12,8 +13,8 @@ class BallTrack {
  public:
   /// `initial_heading_rad` is the heading before the ball first moves (the cue's heading for the
   /// struck ball); without one, the direction of its first motion, or +x if it never moves.
-  /// `timeline` must outlive the track.
-  BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad);
+  /// `scene` and `timeline` must outlive the track.
+  BallTrack(const Scene& scene, const Timeline& timeline, int ball, std::optional<double> initial_heading_rad);
 
   /// m, the ball's centre; once it has dropped below the bed it stays at its last visible place.
   Vec3 position(double t) const;
@@ -26,9 +27,12 @@ class BallTrack {
   double hidden_time() const { return hidden_time_; }
 
  private:
+  /// Timeline::state without the orientation, whose integration would dominate the sampling.
+  BallState motion_state(double t) const;
   double arc_length(double t) const;
   double angle_integral(double s) const;
 
+  const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
   int ball_ = 0;
   double hidden_time_ = 0;

@@ -22,6 +22,8 @@ constexpr double kStrokeAmplitude = 0.09;
 constexpr double kBallToTipSpeed = 1.4;
 /// m/s, least tip speed, so a barely-moving shot still has a stroke of sensible length.
 constexpr double kMinTipSpeed = 0.1;
+/// Most of ball speed * cos(elevation) a steep stroke's tip may have at the strike.
+constexpr double kSteepSpeedShare = 0.9;
 /// s of forward stroke for an ordinary shot; bounded by the back-swing limits below.
 constexpr double kAccelTime = 0.25;
 constexpr double kMinBackswing = 0.03;  ///< m
@@ -59,7 +61,7 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
   for (const Event& event : timeline.events()) {
     if (event.type == EventType::cue && event.speed > 0) ball_speed = event.speed;
   }
-  tip_speed_ = std::max(ball_speed / kBallToTipSpeed, kMinTipSpeed);
+  ball_speed_ = ball_speed;
 
   // The lowest elevation whose stroke clears everything, else the one that comes closest.
   double best_gap = -std::numeric_limits<double>::infinity(), best = kMinElevationDeg;
@@ -70,6 +72,13 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
     if (gap >= kClearance) break;
   }
   plan_stroke(best * kDegToRad);
+  // The struck ball must stay ahead of the tip (a very slow shot, or a velocity that disagrees with
+  // the heading): shorten the follow-through until it does.
+  for (int tries = 0; tries < 8 && !follow_through_clear(); ++tries) {
+    follow_ *= 0.5;
+    follow_time_ = 2.0 * follow_ / tip_speed_;
+  }
+  if (!follow_through_clear()) follow_ = follow_time_ = 0;
 
   const double forward = cue_time_ - accel_time_;
   const double approach_end = kApproachShare * forward;
@@ -103,6 +112,10 @@ double CueScript::elevation_deg() const { return elevation_ / kDegToRad; }
 
 void CueScript::plan_stroke(double elevation) {
   elevation_ = elevation;
+  // After the strike the ball leaves level at ball_speed_; a steep tip closing on it faster than
+  // ball_speed_ * cos(elevation) would follow it in, so steep strokes are slower.
+  tip_speed_ = std::max(std::min(ball_speed_ / kBallToTipSpeed, kSteepSpeedShare * ball_speed_ * std::cos(elevation)),
+                        kMinTipSpeed);
   const Vec3 centre = scene_->balls[static_cast<std::size_t>(scene_->cue.target)].position;
   const double radius = timeline_->physics().ball_radius;
   contact_ = centre + radius * place(0, 0).axis;  // the axis passes through the ball's centre
@@ -134,6 +147,16 @@ double CueScript::stroke_clearance() const {
     gap = std::min(gap, stick_clearance(path(t), *scene_, timeline_->states(t), radius, scene_->cue.target));
   }
   return gap;
+}
+
+bool CueScript::follow_through_clear() const {
+  const double radius = timeline_->physics().ball_radius;
+  const int target = scene_->cue.target;
+  for (int i = 1; i <= 16; ++i) {
+    const double t = cue_time_ + follow_time_ * i / 16.0;
+    if (stick_ball_gap(path(t), timeline_->state(target, t).position, radius) < 0) return false;
+  }
+  return true;
 }
 
 CuePose CueScript::place(double behind, double lift) const {

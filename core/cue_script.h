@@ -46,6 +46,8 @@ class CueScript {
   void plan_stroke(double elevation);
   /// m, the least gap to the balls at rest and the cushions over the stroke, at the planned elevation.
   double stroke_clearance() const;
+  /// Whether the tip stays off the struck ball as it leaves.
+  bool follow_through_clear() const;
   CuePose path(double t) const;
 
   const Scene* scene_ = nullptr;
@@ -56,6 +58,7 @@ class CueScript {
   Vec3 heading_{1, 0, 0};    ///< unit, horizontal: the direction the stick pushes
   double elevation_ = 0;     ///< rad
   double cue_time_ = 0;      ///< s
+  double ball_speed_ = 0;    ///< m/s the strike gives the ball
   double tip_speed_ = 0;     ///< m/s at contact
   double backswing_ = 0;     ///< m behind the contact point where the forward stroke starts
   double follow_ = 0;        ///< m past the contact point where the tip stops

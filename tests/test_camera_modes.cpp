@@ -72,6 +72,20 @@ TEST_SUITE("camera_modes") {
     CHECK(shot->timeline.state(0, duration).velocity.norm() == 0);
   }
 
+  TEST_CASE("follow: before the strike the struck ball faces the cue's heading, not its velocity's") {
+    // Velocity 30.5 degrees, heading 30: within the 1 degree that passes without a warning.
+    const double v = 0.4, moving = 30.5 * M_PI / 180;
+    auto shot = load("cue 0 30\nball 0 -0.5 -0.2 0.028575 " + std::to_string(v * std::cos(moving)) + " " +
+                     std::to_string(v * std::sin(moving)) + " 0 1 0 0 0\n"
+                     "camera\nevent 0 0 0 follow 0 -1 0 1\nendcamera\n");
+    const Vec3 offset(-1, 0, 1);
+    const Vec3 start = shot->timeline.state(0, 0).position;
+    CHECK(distance(shot->camera->pose(1.0).location, follow_location(start, 30 * M_PI / 180, offset)) < 1e-9);
+    const double end = shot->timeline.duration();
+    const Vec3 stop = shot->timeline.state(0, end).position;
+    CHECK(distance(shot->camera->pose(end).location, follow_location(stop, moving, offset)) < 1e-4);
+  }
+
   TEST_CASE("follow: sideways and ahead offsets turn with the ball") {
     auto shot = load("cue 0 90\nball 0 0 -0.3 0.028575 0 0.4 0 1 0 0 0\n"
                      "camera\nevent 0 0 0 follow 0 0.5 -0.25 0.2\nendcamera\n");
@@ -96,8 +110,18 @@ TEST_SUITE("camera_modes") {
       largest = std::max(largest, distance(location, previous));
       previous = location;
     }
-    // 0.58 m from the ball; the turn is spread over at least half a second of travel.
     CHECK(largest < 0.06);
+    // The camera swings round gently: at least a third of a second from leaving +x to facing -x.
+    double left = -1, arrived = -1;
+    for (double t = 0; t <= duration && arrived < 0; t += 1.0 / 240) {
+      const CameraPose pose = shot->camera->pose(t);
+      const double angle = std::atan2(pose.look_at.y() - pose.location.y(), pose.look_at.x() - pose.location.x());
+      if (left < 0 && std::cos(angle) < std::cos(10 * M_PI / 180)) left = t;
+      if (left >= 0 && std::cos(angle) < -std::cos(10 * M_PI / 180)) arrived = t;
+    }
+    REQUIRE(left > 0);
+    REQUIRE(arrived > 0);
+    CHECK(arrived - left > 0.33);
     // At the end the ball rolls toward -x and the camera sits behind it, on the +x side.
     const Vec3 ball = shot->timeline.state(0, duration).position;
     CHECK(distance(shot->camera->pose(duration).location, ball + Vec3(0.5, 0, 0.3)) < 1e-3);
@@ -134,9 +158,7 @@ TEST_SUITE("camera_modes") {
     CHECK(distance(settled, last) == 0);
     CHECK(shot->timeline.state(0, duration).position.z() < -kR);
   }
-}
 
-TEST_SUITE("camera_modes") {
   TEST_CASE("the camera tour scene: every mode, windows around events, and no jump anywhere") {
     std::ifstream file(std::string(BSIM_SOURCE_DIR) + "/scenes/camera_tour.scn", std::ios::binary);
     REQUIRE(file);
@@ -168,6 +190,23 @@ TEST_SUITE("camera_modes") {
       CHECK(distance(pose.location, previous.location) < 0.2);
       CHECK(distance(pose.look_at, previous.look_at) < 0.1);
       previous = pose;
+    }
+  }
+
+  TEST_CASE("a ball's track is where the timeline says, up to its last visible place") {
+    // Spin curves the cue ball's sliding path; the 1-ball is pocketed.
+    auto shot = load("cue 0 39.289\nball 0 0.2 -0.3 0.028575 1.5491933 1.2675218 0 1 0 0 0\nspin 0 20 -25 30\n"
+                     "ball 1 0.75 0.15 0.028575 0 0 0 1 0 0 0\n"
+                     "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n");
+    REQUIRE(shot->timeline.pocket_drops().size() == 1);
+    for (int ball = 0; ball < 2; ++ball) {
+      const BallTrack track(shot->scene, shot->timeline, ball, 0.0);
+      const double hidden = track.hidden_time();
+      CHECK(std::isinf(hidden) == (ball == 0));
+      for (double t = 0; t <= shot->timeline.duration(); t += 0.01) {
+        const Vec3 expected = shot->timeline.state(ball, std::min(t, hidden)).position;
+        CHECK(distance(track.position(t), expected) < 1e-12);
+      }
     }
   }
 }

@@ -173,6 +173,15 @@ TEST_SUITE("cue_script") {
     CHECK(worst_clearance(*shot) >= -1e-9);
   }
 
+  TEST_CASE("a ball almost against the cushion, shot straight away: a steep stroke that does not chase the ball") {
+    auto shot = load("cue 0 180\nball 0 1.2404 0.1 0.028575 -1 0 0 1 0 0 0\n" + kCamera);
+    const double elevation = shot->cue->elevation_deg() * M_PI / 180;
+    CHECK(elevation > 40 * M_PI / 180);
+    // Slower than the ball's speed along the stick, so the tip falls behind as the ball leaves.
+    CHECK(shot->cue->tip_speed() < 1.0 * std::cos(elevation));
+    CHECK(worst_clearance(*shot) >= -1e-9);
+  }
+
   TEST_CASE("a shot with the cue heading across the table and balls about") {
     auto shot = load("cue 0 120\nball 0 0.2 -0.3 0.028575 -1 1.7320508 0 1 0 0 0\n"
                      "ball 1 0.5 -0.5 0.028575 0 0 0 1 0 0 0\nball 2 0.3 -0.55 0.028575 0 0 0 1 0 0 0\n" + kCamera);
