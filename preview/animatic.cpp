@@ -116,7 +116,9 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
       "ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
       "-f", "rawvideo", "-pix_fmt", "rgba", "-s", std::to_string(width) + "x" + std::to_string(height),
       "-framerate", std::to_string(fps), "-i", "-", "-i", wav.string(),
-      "-map", "0:v:0", "-map", "1:a:0", "-vf", "vflip",  // GL rows come bottom-up
+      "-map", "0:v:0", "-map", "1:a:0",
+      // GL rows come bottom-up; H.264 in 4:2:0 needs even sides, so an odd size gets one black line.
+      "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2",
       "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20", "-pix_fmt", "yuv420p",
       "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
   // A dead ffmpeg must show up as a failed write, not kill the process.
