@@ -1,0 +1,211 @@
+#include "sound_synth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace bsim {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Phenolic resin, the usual ball material: Young's modulus (Pa) and Poisson's ratio.
+constexpr double kBallYoungModulus = 5.4e9;
+constexpr double kBallPoisson = 0.35;
+
+/// A damped mode: frequency (Hz), decay time constant (s), weight relative to the loudest mode.
+struct Mode {
+  double frequency;
+  double decay;
+  double weight;
+};
+
+/// A raised-sine force pulse (the smooth Hertz profile) of duration tau at time t.
+double force_pulse(double t, double tau) {
+  if (t < 0 || t > tau) return 0;
+  const double s = std::sin(kPi * t / tau);
+  return s * s;
+}
+
+/// The force pulse box-filtered over each sample (8 sub-samples), so a pulse shorter than a sample
+/// or two keeps its energy instead of aliasing.
+std::vector<double> sampled_pulse(double tau, int sample_rate) {
+  constexpr int kSub = 8;
+  const int n = static_cast<int>(std::ceil(tau * sample_rate)) + 1;
+  std::vector<double> pulse(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    double sum = 0;
+    for (int k = 0; k < kSub; ++k) sum += force_pulse((i + (k + 0.5) / kSub) / sample_rate, tau);
+    pulse[static_cast<std::size_t>(i)] = sum / kSub;
+  }
+  return pulse;
+}
+
+/// Drives a two-pole resonator (one damped mode) with `input`, adding weight * its unit-peak response.
+void add_mode(const std::vector<double>& input, const Mode& mode, int sample_rate, std::vector<double>& out) {
+  const double r = std::exp(-1.0 / (mode.decay * sample_rate));
+  const double theta = 2 * kPi * mode.frequency / sample_rate;
+  const double a1 = 2 * r * std::cos(theta), a2 = r * r;
+  std::vector<double> y(out.size(), 0.0);
+  double y1 = 0, y2 = 0, peak = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const double x = i < input.size() ? input[i] : 0.0;
+    const double v = a1 * y1 - a2 * y2 + x;
+    y2 = y1;
+    y1 = v;
+    y[i] = v;
+    peak = std::max(peak, std::abs(v));
+  }
+  if (peak <= 0) return;
+  for (std::size_t i = 0; i < y.size(); ++i) out[i] += mode.weight * y[i] / peak;
+}
+
+/// Low-passed noise under an exponential envelope: the rough part of a soft impact.
+void add_noise(SoundRandom& random, double decay, double cutoff_hz, double weight, int sample_rate,
+               std::vector<double>& out) {
+  const double alpha = 1.0 - std::exp(-2 * kPi * cutoff_hz / sample_rate);
+  double state = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    state += alpha * (random.signed_unit() - state);
+    out[i] += weight * state * std::exp(-static_cast<double>(i) / (decay * sample_rate));
+  }
+}
+
+/// A mode with its frequency drawn once per hit within +-spread (drawing it every sample is hiss).
+Mode jittered(Mode mode, SoundRandom& random, double spread) {
+  mode.frequency *= 1.0 + spread * random.signed_unit();
+  return mode;
+}
+
+std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsParams& physics, int sample_rate) {
+  // Acceleration noise of a small sphere: pressure ~ a blend of the contact acceleration and its rate.
+  const double tau = hertz_contact_time(physics, speed);
+  std::vector<double> out(static_cast<std::size_t>(0.03 * sample_rate), 0.0);
+  constexpr int kSub = 8;
+  for (std::size_t i = 0; i < out.size() && static_cast<double>(i) <= tau * sample_rate + 1; ++i) {
+    double sum = 0;
+    for (int k = 0; k < kSub; ++k) {
+      const double t = (static_cast<double>(i) + (k + 0.5) / kSub) / sample_rate;
+      if (t > tau) continue;
+      sum += 0.3 * force_pulse(t, tau) + 0.7 * std::sin(2 * kPi * t / tau);
+    }
+    out[i] = sum / kSub;
+  }
+  // The faint ring of the balls and the cloth-damped table under them.
+  const std::vector<double> pulse = sampled_pulse(tau, sample_rate);
+  add_mode(pulse, jittered({5200, 0.0012, 0.18}, random, 0.04), sample_rate, out);
+  add_mode(pulse, jittered({3400, 0.0020, 0.10}, random, 0.05), sample_rate, out);
+  return out;
+}
+
+std::vector<double> cushion_thud(double speed, SoundRandom& random, int sample_rate) {
+  // The rubber nose makes a long, soft contact; the rail's wood answers with low modes.
+  const double tau = std::clamp(0.0035 * std::pow(std::max(speed, 0.05), -0.2), 0.0015, 0.006);
+  const std::vector<double> pulse = sampled_pulse(tau, sample_rate);
+  std::vector<double> out(static_cast<std::size_t>(0.25 * sample_rate), 0.0);
+  add_mode(pulse, jittered({110, 0.045, 1.0}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({240, 0.030, 0.7}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({520, 0.012, 0.45}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({1900, 0.004, 0.30}, random, 0.06), sample_rate, out);
+  add_noise(random, 0.006, 1500, 0.5, sample_rate, out);
+  return out;
+}
+
+std::vector<double> cue_tap(double speed, SoundRandom& random, const PhysicsParams& physics, int sample_rate) {
+  // Leather on phenolic: a ~1 ms contact, the tip's knock and the shaft's ring, then the ball's click.
+  const std::vector<double> pulse = sampled_pulse(0.001, sample_rate);
+  std::vector<double> out(static_cast<std::size_t>(0.1 * sample_rate), 0.0);
+  add_mode(pulse, jittered({1450, 0.008, 1.0}, random, 0.04), sample_rate, out);
+  add_mode(pulse, jittered({620, 0.018, 0.45}, random, 0.04), sample_rate, out);
+  add_mode(pulse, jittered({3300, 0.002, 0.35}, random, 0.05), sample_rate, out);
+  add_noise(random, 0.002, 4000, 0.25, sample_rate, out);
+  const std::vector<double> click = ball_click(speed, random, physics, sample_rate);
+  for (std::size_t i = 0; i < click.size() && i < out.size(); ++i) out[i] += 0.4 * click[i];
+  return out;
+}
+
+std::vector<double> pocket_rattle(SoundRandom& random, int sample_rate) {
+  // The ball lands in the pocket, then knocks about it a few times, each knock softer and sooner.
+  constexpr double kTimes[] = {0.0, 0.085, 0.14, 0.175, 0.2};
+  constexpr double kLevels[] = {1.0, 0.5, 0.3, 0.15, 0.07};
+  std::vector<double> out(static_cast<std::size_t>(0.5 * sample_rate), 0.0);
+  for (int k = 0; k < 5; ++k) {
+    const double at = k == 0 ? 0.0 : kTimes[k] * (1.0 + 0.15 * random.signed_unit());
+    const std::size_t offset = static_cast<std::size_t>(at * sample_rate);
+    std::vector<double> knock(out.size() - offset, 0.0);
+    const std::vector<double> pulse = sampled_pulse(0.0015, sample_rate);
+    add_mode(pulse, jittered({160, 0.040, 1.0}, random, 0.05), sample_rate, knock);
+    add_mode(pulse, jittered({390, 0.022, 0.6}, random, 0.05), sample_rate, knock);
+    add_mode(pulse, jittered({950, 0.009, 0.4}, random, 0.06), sample_rate, knock);
+    add_mode(pulse, jittered({2200, 0.003, 0.25}, random, 0.06), sample_rate, knock);
+    add_noise(random, 0.005, 2000, 0.4, sample_rate, knock);
+    for (std::size_t i = 0; i < knock.size(); ++i) out[offset + i] += kLevels[k] * knock[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+std::uint64_t SoundRandom::next() {
+  std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+double SoundRandom::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+double hertz_contact_time(const PhysicsParams& physics, double speed) {
+  // Two equal spheres: effective mass m/2, radius R/2, modulus E / (2 (1 - nu^2)) (Johnson, Contact Mechanics).
+  const double m = physics.ball_mass / 2;
+  const double r = physics.ball_radius / 2;
+  const double e = kBallYoungModulus / (2 * (1 - kBallPoisson * kBallPoisson));
+  const double v = std::max(speed, 1e-3);
+  return 2.87 * std::pow(m * m / (r * e * e * v), 0.2);
+}
+
+double impact_gain(SoundKind kind, double speed) {
+  // Peak force grows as v^1.2 in a Hertz contact; a compressed v^0.8 keeps soft hits audible,
+  // and a small floor keeps even a touch from vanishing. Strictly increasing in speed.
+  struct Level {
+    double reference_speed;  // m/s that reaches `level`
+    double level;
+  };
+  const Level l = [&] {
+    switch (kind) {
+      case SoundKind::ball_ball: return Level{4.0, 0.5};
+      case SoundKind::ball_rail: return Level{2.0, 0.4};
+      case SoundKind::cue: return Level{4.0, 0.35};
+      case SoundKind::pocket: return Level{1.5, 0.3};
+    }
+    return Level{1.0, 0.0};
+  }();
+  constexpr double kFloor = 0.06;
+  const double x = std::max(speed, 0.0) / l.reference_speed;
+  return l.level * (kFloor + (1 - kFloor) * std::pow(x, 0.8));
+}
+
+std::vector<float> synth_impact(SoundKind kind, double speed, std::uint64_t seed, const PhysicsParams& physics,
+                                int sample_rate) {
+  SoundRandom random(seed);
+  std::vector<double> wave;
+  switch (kind) {
+    case SoundKind::ball_ball: wave = ball_click(speed, random, physics, sample_rate); break;
+    case SoundKind::ball_rail: wave = cushion_thud(speed, random, sample_rate); break;
+    case SoundKind::cue: wave = cue_tap(speed, random, physics, sample_rate); break;
+    case SoundKind::pocket: wave = pocket_rattle(random, sample_rate); break;
+  }
+  // Fade the tail over its last 5 ms so cutting the buffer makes no click of its own.
+  const std::size_t fade = std::min(wave.size(), static_cast<std::size_t>(0.005 * sample_rate));
+  for (std::size_t i = 0; i < fade; ++i)
+    wave[wave.size() - 1 - i] *= 0.5 - 0.5 * std::cos(kPi * static_cast<double>(i) / static_cast<double>(fade));
+  double peak = 0;
+  for (double s : wave) peak = std::max(peak, std::abs(s));
+  const double scale = peak > 0 ? impact_gain(kind, speed) / peak : 0.0;
+  std::vector<float> out(wave.size());
+  for (std::size_t i = 0; i < wave.size(); ++i) out[i] = static_cast<float>(wave[i] * scale);
+  return out;
+}
+
+}  // namespace bsim

@@ -1,0 +1,40 @@
+#pragma once
+// Procedural impact sounds, one mono burst per collision, synthesised from the contact it models:
+// a Hertz force pulse heard as acceleration noise for ball on ball (Koss & Alfredson 1973; Chadwick,
+// Zheng & James 2012), the same pulse driving a few damped modes for cushion, cue tip and pocket
+// (modal synthesis after van den Doel, Kry & Pai, "FoleyAutomatic", 2001).
+#include <cstdint>
+#include <vector>
+
+#include "physics_params.h"
+
+namespace bsim {
+
+enum class SoundKind { ball_ball, ball_rail, cue, pocket };
+
+/// A small deterministic generator (splitmix64), so sounds never depend on the standard library's
+/// distributions.
+class SoundRandom {
+ public:
+  explicit SoundRandom(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next();
+  double uniform();  ///< [0, 1)
+  double signed_unit() { return 2.0 * uniform() - 1.0; }
+
+ private:
+  std::uint64_t state_;
+};
+
+/// s, duration of the Hertz contact between two equal balls closing at `speed` m/s.
+double hertz_contact_time(const PhysicsParams& physics, double speed);
+
+/// Peak amplitude of a sound of this kind at this speed (m/s), before panning: strictly growing
+/// with speed, compressed so that a gentle touch stays audible beside a break.
+double impact_gain(SoundKind kind, double speed);
+
+/// The sound of one impact at `speed` m/s, mono at `sample_rate`, starting at sample 0 (the instant
+/// of contact). Its peak is impact_gain(kind, speed). `seed` varies the modes from hit to hit.
+std::vector<float> synth_impact(SoundKind kind, double speed, std::uint64_t seed, const PhysicsParams& physics,
+                                int sample_rate);
+
+}  // namespace bsim

@@ -1,0 +1,23 @@
+#pragma once
+// The movie: the rendered frames and the sound track into movie.mp4 (H.264 yuv420p, AAC,
+// moov atom first), written under a temporary name and renamed when complete.
+#include <string>
+#include <vector>
+
+#include "render_jobs.h"
+
+namespace bsim {
+
+struct MovieSettings {
+  std::string ffmpeg;   ///< full path of the program
+  int fps = 30;
+  double duration = 0;  ///< s, the shot's: the movie is cut to it
+};
+
+/// ffmpeg's command line, run inside the output directory, writing `output`.
+std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output);
+
+/// Encodes dir/frames/frame_%05d.png and dir/soundtrack.wav into dir/movie.mp4.
+RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings, std::string& error);
+
+}  // namespace bsim

@@ -1,0 +1,133 @@
+#include "pov_table.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "pov_format.h"
+
+namespace bsim {
+
+namespace {
+
+struct Point2 {
+  double x = 0, y = 0;
+};
+
+double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+/// Counter-clockwise convex hull (Andrew's monotone chain): the playing area inside the noses.
+std::vector<Point2> convex_hull(std::vector<Point2> points) {
+  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  });
+  points.erase(std::unique(points.begin(), points.end(),
+                           [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }),
+               points.end());
+  if (points.size() < 3) return points;
+  std::vector<Point2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const Point2& p : points) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+/// The direction a pocket opens away from the bed: the mean outward normal of the cushions that
+/// end at it; a pocket no cushion ends at opens away from the table's middle, and is not stretched.
+struct PocketOpening {
+  Point2 out{1, 0};
+  double stretch = 0;  ///< m the opening reaches back into the rail
+};
+
+PocketOpening pocket_opening(const Pocket& pocket, const std::vector<Rail>& rails, const Point2& middle) {
+  constexpr double kNearEnd = 0.01;  // m beyond the pocket's radius that still counts as a jaw
+  constexpr double kStretch = 0.45;  // of the radius: how far the cut reaches under the rail
+  Vec3 sum(0, 0, 0);
+  for (const Rail& rail : rails) {
+    const Vec3 d = rail.b - rail.a;
+    const Vec3 outward = Vec3(-d.y(), d.x(), 0).normalized();
+    auto near = [&](const Vec3& p) {
+      return (Vec3(p.x(), p.y(), 0) - Vec3(pocket.center.x(), pocket.center.y(), 0)).norm() <= pocket.radius + kNearEnd;
+    };
+    if (d.norm() > 1e-9 && (near(rail.a) || near(rail.b))) sum += outward;
+  }
+  if (sum.norm() > 1e-9) {
+    sum.normalize();
+    return {{sum.x(), sum.y()}, kStretch * pocket.radius};
+  }
+  const Point2 away{pocket.center.x() - middle.x, pocket.center.y() - middle.y};
+  const double length = std::hypot(away.x, away.y);
+  if (length < 1e-9) return {};
+  return {{away.x / length, away.y / length}, 0.0};
+}
+
+template <class T, class F>
+void write_array(std::ostream& out, const char* name, const std::vector<T>& items, F&& text) {
+  out << "#declare " << name << " = array[" << items.size() << "] {";
+  for (std::size_t i = 0; i < items.size(); ++i) out << (i ? ", " : " ") << text(items[i]);
+  out << " }\n";
+}
+
+}  // namespace
+
+void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
+  out << "// Billiards Sim: the table, balls, cue stick, room and lights shared by every frame.\n"
+         "// Units are metres, z is up, the bed is z = 0 and the table's middle is the origin.\n\n"
+         "// ---- from the scene\n";
+  out << "#declare Final = " << (quality == Quality::final ? 1 : 0) << ";  // area light (final) or point lights (draft)\n";
+  out << "#declare BallR = " << pov_number(scene.physics.ball_radius) << ";\n";
+
+  std::vector<Point2> ends;
+  double nose_top = 0.0;
+  Point2 lo{1e9, 1e9}, hi{-1e9, -1e9};
+  for (const Rail& rail : scene.rails) {
+    for (const Vec3& p : {rail.a, rail.b}) {
+      ends.push_back({p.x(), p.y()});
+      lo = {std::min(lo.x, p.x()), std::min(lo.y, p.y())};
+      hi = {std::max(hi.x, p.x()), std::max(hi.y, p.y())};
+    }
+    nose_top = std::max({nose_top, rail.a.z(), rail.b.z()});
+  }
+  if (ends.empty()) {  // no cushions at all: a bare bed around the pockets
+    lo = {-1.27, -0.635};
+    hi = {1.27, 0.635};
+    nose_top = kStandardNoseHeight;
+  }
+  const Point2 middle{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2};
+
+  out << "#declare RailTopZ = " << pov_number(nose_top + 0.0107) << ";  // the wood's top, a little above the noses\n";
+  out << "#declare NoseMin = " << pov_vector2(lo.x, lo.y) << ";\n";
+  out << "#declare NoseMax = " << pov_vector2(hi.x, hi.y) << ";\n";
+  out << "#declare RailCount = " << scene.rails.size() << ";\n";
+  if (!scene.rails.empty()) {
+    write_array(out, "RailA", scene.rails, [](const Rail& r) { return pov_vector2(r.a.x(), r.a.y()); });
+    write_array(out, "RailB", scene.rails, [](const Rail& r) { return pov_vector2(r.b.x(), r.b.y()); });
+    write_array(out, "RailH", scene.rails, [](const Rail& r) { return pov_number(r.a.z()); });
+  }
+  out << "#declare PocketCount = " << scene.pockets.size() << ";\n";
+  if (!scene.pockets.empty()) {
+    std::vector<PocketOpening> openings;
+    for (const Pocket& p : scene.pockets) openings.push_back(pocket_opening(p, scene.rails, middle));
+    write_array(out, "PocketC", scene.pockets, [](const Pocket& p) { return pov_vector2(p.center.x(), p.center.y()); });
+    write_array(out, "PocketR", scene.pockets, [](const Pocket& p) { return pov_number(p.radius); });
+    write_array(out, "PocketOut", openings, [](const PocketOpening& o) { return pov_vector2(o.out.x, o.out.y); });
+    write_array(out, "PocketStretch", openings, [](const PocketOpening& o) { return pov_number(o.stretch); });
+  }
+  const std::vector<Point2> hull = convex_hull(ends);
+  out << "#declare PlayHullCount = " << hull.size() << ";\n";
+  if (hull.size() >= 3) {
+    write_array(out, "PlayHull", hull, [](const Point2& p) { return pov_vector2(p.x, p.y); });
+  }
+  out << "\n" << pov_models_text();
+}
+
+}  // namespace bsim

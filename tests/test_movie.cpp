@@ -1,0 +1,202 @@
+// The whole export at a tiny size: frames rendered by POV-Ray, movie.mp4 with both streams as long
+// as the shot; a re-run renders only what changed; a missing program, a failing frame and Ctrl-C
+// end cleanly with nothing half-written left behind.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "frames.h"
+#include "support.h"
+
+using namespace bsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string scene(const char* last_camera) {
+  return std::string("cue 0 0\n"
+                     "ball 0 -0.3 0 0.028575  0.6 0 0  1 0 0 0\n"
+                     "ball 9  0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
+                     "camera\nevent 0 0 0 hover -1.5 -1.2 1.2  0 0 0\n") +
+         last_camera + "endcamera\n";
+}
+const char* const kEndA = "event 65535 0 0 hover -1.5 -1.2 1.2  0 0 0\n";
+const char* const kEndB = "event 65535 0 0 hover 1.5 -1.2 1.2  0 0 0\n";
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+test::CommandResult run_export(const std::string& scene_path, const fs::path& out, const std::string& extra,
+                               const std::string& env = "") {
+  return test::run_command(env + " " + quoted(test::bin("billiards-export")) + " " + quoted(scene_path) + " -o " +
+                           quoted(out.string()) + " " + extra);
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  REQUIRE(std::regex_search(json, m, std::regex("\"" + key + "\": ?\"?([0-9.]+)")));
+  return std::stod(m[1]);
+}
+
+std::map<std::string, fs::file_time_type> picture_times(const fs::path& frames) {
+  std::map<std::string, fs::file_time_type> times;
+  for (const auto& e : fs::directory_iterator(frames))
+    if (e.path().extension() == ".png") times[e.path().filename().string()] = e.last_write_time();
+  return times;
+}
+
+/// Files a run must never leave: temporary pictures, logs, a temporary movie.
+std::vector<std::string> leftovers(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind('.', 0) == 0 || name.find(".tmp") != std::string::npos) found.push_back(name);
+  }
+  return found;
+}
+
+/// A stand-in for POV-Ray: `body` runs with $in and $out set from +I and +O.
+std::string fake_povray(const test::TempDir& dir, const std::string& body) {
+  const std::string path = dir.file("bin/povray",
+                                    "#!/bin/sh\n"
+                                    "for a in \"$@\"; do case \"$a\" in +I*) in=\"${a#+I}\";; +O*) out=\"${a#+O}\";; esac; done\n" +
+                                        body + "\n");
+  fs::permissions(path, fs::perms::owner_all);
+  return (dir.path / "bin").string();
+}
+
+}  // namespace
+
+TEST_SUITE("movie") {
+  TEST_CASE("a tiny movie: every frame rendered, H.264 and AAC as long as the shot, and re-runs render only what changed") {
+    test::TempDir dir;
+    const std::string path = dir.file("tiny.scn", scene(kEndA));
+    const fs::path out = dir.path / "out";
+    const std::string options = "--size 32x18 --fps 4 --quality draft";
+    test::CommandResult r = run_export(path, out, options);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    CHECK(r.err.find('\r') == std::string::npos);  // no progress line off a terminal
+
+    const double duration = json_number(slurp(out / "events.json"), "duration");
+    const int frames = frame_count(duration, 4);
+    auto times = picture_times(out / "frames");
+    CHECK(static_cast<int>(times.size()) == frames);
+    CHECK(leftovers(out).empty());
+
+    const test::CommandResult probe = test::run_command(
+        "ffprobe -v error -show_entries stream=codec_name,codec_type,pix_fmt,width,height,sample_rate,channels:"
+        "format=duration -of json " + quoted((out / "movie.mp4").string()));
+    REQUIRE(probe.exit_code == 0);
+    CHECK(probe.out.find("\"codec_name\": \"h264\"") != std::string::npos);
+    CHECK(probe.out.find("\"pix_fmt\": \"yuv420p\"") != std::string::npos);
+    CHECK(probe.out.find("\"width\": 32") != std::string::npos);
+    CHECK(probe.out.find("\"codec_name\": \"aac\"") != std::string::npos);
+    CHECK(probe.out.find("\"sample_rate\": \"48000\"") != std::string::npos);
+    CHECK(probe.out.find("\"channels\": 2") != std::string::npos);
+    CHECK(json_number(probe.out, "duration") == doctest::Approx(duration).epsilon(0.25 / duration));
+    const std::string faststart = slurp(out / "movie.mp4");
+    CHECK(faststart.find("moov") < faststart.find("mdat"));
+
+    // The same again: nothing to render.
+    r = run_export(path, out, options);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    CHECK(picture_times(out / "frames") == times);
+    CHECK(fs::exists(out / "movie.mp4"));
+
+    // A picture deleted: that one only.
+    fs::remove(out / "frames" / "frame_00002.png");
+    r = run_export(path, out, options);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    auto again = picture_times(out / "frames");
+    CHECK(again.size() == times.size());
+    for (const auto& [name, time] : times)
+      if (name != "frame_00002.png") CHECK(again[name] == time);
+
+    // The camera moved for the end event only (no interpolation): only the last frame changes.
+    times = again;
+    const std::string moved = dir.file("tiny.scn", scene(kEndB));
+    r = run_export(moved, out, options);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    again = picture_times(out / "frames");
+    const std::string last = "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".png";
+    for (const auto& [name, time] : times) {
+      CAPTURE(name);
+      CHECK((again[name] == time) == (name != last));
+    }
+    CHECK(leftovers(out).empty());
+  }
+
+  TEST_CASE("the progress line shows on a terminal, not under CI") {
+    test::TempDir dir;
+    const std::string path = dir.file("tiny.scn", scene(kEndA));
+    const std::string command = quoted(test::bin("billiards-export")) + " " + quoted(path) + " -o " +
+                                quoted((dir.path / "out").string()) + " --size 32x18 --fps 2 --quality draft";
+    // `script` runs the command on a pseudo-terminal.
+    test::CommandResult r = test::run_command("unset CI; script -qec " + quoted(command) + " /dev/null");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.out);
+    CHECK(r.out.find("rendering frame") != std::string::npos);
+    CHECK(r.out.find("frames/s") != std::string::npos);
+    fs::remove_all(dir.path / "out");
+    r = test::run_command("CI=1 script -qec " + quoted(command) + " /dev/null");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.out);
+    CHECK(r.out.find("rendering frame") == std::string::npos);
+  }
+
+  TEST_CASE("without POV-Ray the export says in one line how to set it up") {
+    test::TempDir dir;
+    const std::string path = dir.file("tiny.scn", scene(kEndA));
+    fs::create_directories(dir.path / "empty");
+    const test::CommandResult r = run_export(path, dir.path / "out", "--size 32x18 --fps 2",
+                                             "PATH=" + quoted((dir.path / "empty").string()));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("povray") != std::string::npos);
+    CHECK(r.err.find("bash .ci/make-movie") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir.path / "out" / "movie.mp4"));
+  }
+
+  TEST_CASE("a frame POV-Ray cannot render is named with POV-Ray's own message") {
+    test::TempDir dir;
+    const std::string path = dir.file("tiny.scn", scene(kEndA));
+    const std::string fake = fake_povray(dir,
+                                         "if [ \"$in\" = frame_00003.pov ]; then\n"
+                                         "  echo \"File 'frame_00003.pov' line 7: Parse Error: No matrix here\" >&2; exit 1\n"
+                                         "fi\ntouch \"$out\"");
+    const test::CommandResult r =
+        run_export(path, dir.path / "out", "--size 32x18 --fps 2 --jobs 1", "PATH=" + quoted(fake) + ":\"$PATH\"");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("frame 3") != std::string::npos);
+    CHECK(r.err.find("line 7: Parse Error: No matrix here") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path / "out" / "movie.mp4"));
+    CHECK_FALSE(fs::exists(dir.path / "out" / "frames" / "frame_00003.png"));
+    CHECK(leftovers(dir.path / "out").empty());
+  }
+
+  TEST_CASE("Ctrl-C stops the renderers and leaves no partial frame or movie") {
+    test::TempDir dir;
+    const std::string path = dir.file("tiny.scn", scene(kEndA));
+    // Each stand-in starts its picture, then hangs: only the interrupt can end the run.
+    const std::string fake = fake_povray(dir, "touch \"$out\"\nexec sleep 60");
+    const fs::path out = dir.path / "out";
+    const std::string command =
+        "PATH=" + quoted(fake) + ":\"$PATH\" " + quoted(test::bin("billiards-export")) + " " + quoted(path) + " -o " +
+        quoted(out.string()) + " --size 32x18 --fps 2 --jobs 2 & pid=$!; i=0; "
+        "while [ -z \"$(ls -A " + quoted((out / "frames").string()) + " 2>/dev/null | grep tmp)\" ] && [ $i -lt 600 ]; do "
+        "sleep 0.05; i=$((i+1)); done; kill -INT $pid; wait $pid; echo \"status $?\"";
+    const test::CommandResult r = test::run_command(command);
+    CHECK(r.out.find("status 0") == std::string::npos);
+    CHECK(leftovers(out).empty());
+    CHECK_FALSE(fs::exists(out / "movie.mp4"));
+    CHECK(picture_times(out / "frames").empty());
+  }
+}

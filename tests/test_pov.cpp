@@ -1,0 +1,192 @@
+// The POV-Ray files: the shared include and a frame match their golden text; balls are placed by
+// their quaternions, dropped balls and the put-away stick leave the picture, the table follows the
+// scene, and POV-Ray itself parses what is written for several tables.
+//
+// After an intended change to the models, regenerate the golden files with
+//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests --source-file='*test_pov.cpp'
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "frames.h"
+#include "pov_format.h"
+#include "pov_frame.h"
+#include "pov_table.h"
+#include "shot.h"
+#include "support.h"
+
+using namespace bsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A small shot on the standard table: the cue ball, a solid and a stripe, turned different ways.
+const char* const kTinyScene =
+    "cue 0 0\n"
+    "ball 0  -0.6 0.1 0.028575   1.2 0 0   1 0 0 0\n"
+    "ball 3   0.3 0.1 0.028575   0 0 0     0.7071067811865476 0 0 0.7071067811865476\n"
+    "ball 11  0.5 -0.3 0.028575  0 0 0     0.5 0.5 0.5 0.5\n"
+    "camera\nevent 0 0 0 hover -1.8 -1.2 1.1  0 0 0\nendcamera\n";
+
+// A ball rolled into the top-right corner pocket.
+const char* const kPocketScene =
+    "cue 0 40.6\n"
+    "ball 0 0.9 0.3 0.028575  0.8 0.686 0  1 0 0 0\n"
+    "ball 1 -0.5 0 0.028575  0 0 0  1 0 0 0\n"
+    "camera\nevent 0 0 0 hover 0 -2.5 2  0 0 0\nendcamera\n";
+
+// A table of the scene's own: a 3 x 1.6 m box of cushions 4 cm high and a pocket in the middle of
+// the cloth, far from every cushion; seen from straight above.
+const char* const kBoxScene =
+    "cue 0 0\n"
+    "ball 0 -1 0.4 0.028575  0.5 0 0  1 0 0 0\n"
+    "rail -1.5 0.8 0.04   1.5 0.8 0.04\n"
+    "rail 1.5 0.8 0.04   1.5 -0.8 0.04\n"
+    "rail 1.5 -0.8 0.04   -1.5 -0.8 0.04\n"
+    "rail -1.5 -0.8 0.04   -1.5 0.8 0.04\n"
+    "pocket 0.2 -0.3 0 0.07\n"
+    "camera\nevent 0 0 0 hover 0 0 3  0 0 0\nendcamera\n";
+
+std::unique_ptr<Shot> load(const char* text) {
+  ShotResult result = load_shot(text, "tiny");
+  REQUIRE(result.shot);
+  return std::move(result.shot);
+}
+
+std::string include_text(const Shot& shot, Quality quality = Quality::draft) {
+  std::ostringstream out;
+  write_pov_include(shot.scene, quality, out);
+  return out.str();
+}
+
+std::string frame_text(const Shot& shot, int frame, int fps = 30) {
+  std::ostringstream out;
+  write_pov_frame(shot, frame, fps, out);
+  return out.str();
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void check_golden(const std::string& name, const std::string& text) {
+  const fs::path golden = fs::path(BSIM_SOURCE_DIR) / "tests" / "golden" / "pov" / name;
+  if (std::getenv("BSIM_UPDATE_GOLDENS")) {
+    fs::create_directories(golden.parent_path());
+    std::ofstream(golden, std::ios::binary) << text;
+  }
+  REQUIRE_MESSAGE(fs::exists(golden), "no golden file " << golden << "; make it with BSIM_UPDATE_GOLDENS=1");
+  CHECK_MESSAGE(slurp(golden) == text, "the text differs from " << golden);
+}
+
+/// Writes the include and the given frames of `shot` into `dir`, renders them at 32x18 with
+/// POV-Ray (all at once: each process spends most of its time starting), returns the log.
+test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames) {
+  std::ofstream(dir / std::string(kPovIncludeName)) << include_text(shot, Quality::final);
+  std::string command = "cd '" + dir.string() + "' && status=0; pids=; for f in";
+  for (int k : frames) {
+    std::ofstream(dir / (frame_name(k) + ".pov")) << frame_text(shot, k);
+    command += " " + frame_name(k);
+  }
+  command += "; do povray -D +FN +WT1 +I$f.pov +O$f.png +W32 +H18 +Q9 +A0.3 2>$f.log & pids=\"$pids $!\"; done; "
+             "for p in $pids; do wait $p || status=1; done; "
+             "for f in *.log; do grep -h 'Error' $f; done; exit $status";
+  return test::run_command(command);
+}
+
+}  // namespace
+
+TEST_SUITE("pov") {
+  TEST_CASE("numbers are fixed to the micrometre, shortest, never -0") {
+    CHECK(pov_number(0) == "0.0");
+    CHECK(pov_number(-0.0) == "0.0");
+    CHECK(pov_number(-1e-9) == "0.0");
+    CHECK(pov_number(1.5) == "1.5");
+    CHECK(pov_number(-2) == "-2.0");
+    CHECK(pov_number(0.12345678) == "0.123457");
+    CHECK(pov_number(0.028575) == "0.028575");
+    CHECK(pov_vector(Vec3(1, -0.5, 0)) == "<1.0, -0.5, 0.0>");
+  }
+
+  TEST_CASE("the shared include and the first frame of a tiny shot match their golden text") {
+    const auto shot = load(kTinyScene);
+    check_golden("billiards.inc", include_text(*shot, Quality::final));
+    check_golden("tiny_frame_00000.pov", frame_text(*shot, 0));
+  }
+
+  TEST_CASE("a ball's matrix turns its axes by its orientation and moves it to its centre") {
+    const auto shot = load(kTinyScene);
+    const std::string frame = frame_text(*shot, 0);
+    // 90 degrees about z: x goes to y, y to -x.
+    CHECK(frame.find("object { Ball(3) matrix <0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.3, 0.1, 0.028575> }") !=
+          std::string::npos);
+    // 120 degrees about (1,1,1): x to y, y to z, z to x.
+    CHECK(frame.find("object { Ball(11) matrix <0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.5, -0.3, 0.028575> }") !=
+          std::string::npos);
+    CHECK(frame.find("object { Ball(0) matrix <1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, -0.6, 0.1, 0.028575> }") !=
+          std::string::npos);
+    CHECK(frame.find("location <-1.8, -1.2, 1.1>") != std::string::npos);
+    CHECK(frame.find("angle 55.0") != std::string::npos);
+  }
+
+  TEST_CASE("a pocketed ball and the put-away stick are out of the picture") {
+    const auto shot = load(kPocketScene);
+    REQUIRE(shot->timeline.pocket_drops().size() == 1);
+    const int last = frame_count(shot->timeline.duration(), 30) - 1;
+    const std::string first = frame_text(*shot, 0), end = frame_text(*shot, last);
+    CHECK(first.find("// ball 0") != std::string::npos);
+    CHECK(end.find("// ball 0") == std::string::npos);
+    CHECK(end.find("// ball 1") != std::string::npos);
+    CHECK(end.find("CueStick") == std::string::npos);
+    bool stick_seen = false;
+    for (int k = 0; k <= last && !stick_seen; k += 5) stick_seen = frame_text(*shot, k).find("CueStick") != std::string::npos;
+    CHECK(stick_seen);
+  }
+
+  TEST_CASE("the table is the scene's: its cushions, pockets and the way each pocket opens") {
+    const std::string standard = include_text(*load(kTinyScene));
+    CHECK(standard.find("#declare RailCount = 6;") != std::string::npos);
+    CHECK(standard.find("#declare PocketCount = 6;") != std::string::npos);
+    // corner pockets open diagonally, side pockets straight out
+    CHECK(standard.find("#declare PocketOut = array[6] { <-0.707107, 0.707107>, <0.0, 1.0>, <0.707107, 0.707107>") !=
+          std::string::npos);
+
+    const std::string box = include_text(*load(kBoxScene));
+    CHECK(box.find("#declare RailCount = 4;") != std::string::npos);
+    CHECK(box.find("#declare RailH = array[4] { 0.04, 0.04, 0.04, 0.04 }") != std::string::npos);
+    CHECK(box.find("#declare PocketC = array[1] { <0.2, -0.3> }") != std::string::npos);
+    CHECK(box.find("#declare PocketStretch = array[1] { 0.0 }") != std::string::npos);  // no cushion near it
+    CHECK(box.find("#declare NoseMin = <-1.5, -0.8>;") != std::string::npos);
+    CHECK(box.find("#declare Final = 0;") != std::string::npos);
+    CHECK(include_text(*load(kBoxScene), Quality::final).find("#declare Final = 1;") != std::string::npos);
+  }
+
+  TEST_CASE("a camera looking straight down still has a direction POV-Ray can orient") {
+    const std::string frame = frame_text(*load(kBoxScene), 0);
+    CHECK(frame.find("location <0.0, 0.0, 3.0>") != std::string::npos);
+    CHECK(frame.find("look_at <0.0, 0.0003, 0.0>") != std::string::npos);
+  }
+
+  TEST_CASE("POV-Ray parses and renders the frames of three different tables") {
+    struct Case {
+      const char* text;
+      const char* name;
+    };
+    for (const Case& c : {Case{kTinyScene, "tiny"}, Case{kPocketScene, "pocket"}, Case{kBoxScene, "box"}}) {
+      CAPTURE(c.name);
+      const auto shot = load(c.text);
+      test::TempDir dir;
+      const int last = frame_count(shot->timeline.duration(), 30) - 1;
+      const int strike = static_cast<int>(shot->timeline.cue_time() * 30);
+      const test::CommandResult r = render_tiny(*shot, dir.path, {0, strike - 10, strike + 3, last});
+      CHECK_MESSAGE(r.exit_code == 0, r.out);
+      for (int k : {0, strike - 10, strike + 3, last}) CHECK(fs::file_size(dir.path / (frame_name(k) + ".png")) > 0);
+    }
+  }
+}
