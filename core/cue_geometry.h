@@ -13,7 +13,7 @@ namespace bsim {
 /// m the cushion's top rises above its nose line, and m it reaches outward from the nose (with the
 /// wooden rail): the block the stick must pass over when a ball lies near a cushion.
 inline constexpr double kCushionTopAboveNose = 0.012;
-inline constexpr double kCushionWidth = 0.15;
+inline constexpr double kCushionWidth = 0.18;
 
 /// m, the stick's radius at distance `s` from the tip along its axis.
 double stick_radius(double s);
