@@ -88,7 +88,7 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
   // Out of play: the nearest swung-up position the camera cannot see at that moment.
   auto away = [&](double t) {
     for (double distance : kAwayDistances) {
-      if (!stick_in_view(place(distance, kLift), camera.pose(t))) return distance;
+      if (!stick_in_view(place(distance, kLift), camera_->pose(t))) return distance;
     }
     return kAwayDistances[std::size(kAwayDistances) - 1];
   };
@@ -96,7 +96,7 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
   retract_to_ = away(retract_end);
   hide_time_ = retract_end;
   for (double t = retract_begin; t < retract_end; t += kHideStep) {
-    if (!stick_in_view(path(t), camera.pose(t))) {
+    if (!stick_in_view(path(t), camera_->pose(t))) {
       hide_time_ = t;
       break;
     }
