@@ -9,7 +9,7 @@
 // another: the pusher's cloth friction drives it on) becomes a contact once it overlaps by
 // kContactSlop, but no sooner than kPushInterval unless the overlap would pass kMaxPushOverlap first.
 // So round-off never gives a false hit, a real one is never missed, and a sustained push is a train of
-// gentle contacts at most ~1 kHz with the overlap bounded, instead of an endless chatter.
+// gentle contacts (at most ~1 kHz, the overlap bounded) instead of an endless chatter.
 #include <optional>
 
 #include "motion.h"
@@ -25,7 +25,7 @@ inline constexpr double kTouchDistance = 1e-11;
 inline constexpr double kMinClosingSpeed = 1e-5;
 /// m, overlap a touching, non-closing contact may reach before it is resolved as a collision.
 inline constexpr double kContactSlop = 1e-10;
-/// s, shortest time between two contacts of a pair that touches without closing (a push).
+/// s, longest wait between two contacts of a pair that touches without closing (a push).
 inline constexpr double kPushInterval = 1e-2;
 /// m, largest overlap a push may reach within kPushInterval (far below a real ball's elastic compression).
 inline constexpr double kMaxPushOverlap = 1e-6;
