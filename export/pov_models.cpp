@@ -11,6 +11,8 @@ namespace {
 constexpr std::string_view kModels = R"pov(// ---- fixed models
 #include "transforms.inc"
 global_settings { assumed_gamma 1.0 max_trace_level 8 }
+// A little ambient stands in for the light the bright cloth throws back (no radiosity: too slow).
+#default { finish { ambient 0.02 } }
 
 #declare Eps = 0.001;
 #declare CushionW = 0.05;     // nose to the wood
@@ -147,14 +149,16 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   texture { T_WoodY }
 }
 
-// ---- pocket liners: dark rubber round each opening, and a floor to the pocket
+// ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
+// the wood; the cushions' jaws stay cloth, as on a real table.
+#declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
 #declare Liners = union {
   sphere { Far, Eps }
   #for (I, 0, PocketCount - 1)
     difference {
       PocketCut(I, LinerT, -0.16, RailTopZ + 0.0008)
       PocketCut(I, 0, -1, 1)
-      object { PlayArea }
+      object { InsideWood }
     }
     PocketCut(I, LinerT, -0.17, -0.16)
   #end
@@ -204,7 +208,7 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 // ---- balls: stripe and number disc are object patterns over the sphere, so no seams; the glyph
 // reaches through one half only, else the far side's number shows through.
 #declare BallFinish = finish {
-  diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
+  ambient 0.09 diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
   reflection { 0.03, 0.07 fresnel } conserve_energy
 }
 #declare BallWhite = srgb <0.96, 0.95, 0.90>;
@@ -293,13 +297,13 @@ box { <-LampHalf.u + 0.02, -LampHalf.v + 0.02, LampZ + 0.005>, <LampHalf.u - 0.0
 // ---- lights: final has a soft area light without jitter (jitter flickers from frame to frame)
 #declare LampColour = srgb <1.0, 0.96, 0.88>;
 #if (Final)
-  light_source { <Middle.u, Middle.v, LampZ - 0.01> LampColour * 1.45
+  light_source { <Middle.u, Middle.v, LampZ - 0.01> LampColour * 1.6
     area_light x * 2 * (LampHalf.u - 0.03), y * 2 * (LampHalf.v - 0.03), 9, 3 adaptive 1
-    fade_distance 1.1 fade_power 2
+    fade_distance 1.6 fade_power 2
   }
 #else
-  light_source { <Middle.u - 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.72 fade_distance 1.1 fade_power 2 }
-  light_source { <Middle.u + 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.72 fade_distance 1.1 fade_power 2 }
+  light_source { <Middle.u - 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.8 fade_distance 1.6 fade_power 2 }
+  light_source { <Middle.u + 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.8 fade_distance 1.6 fade_power 2 }
 #end
 // dim room fill, casting no shadows
 light_source { <OuterMin.u - 2, OuterMin.v - 2, 2.4> srgb 0.10 shadowless }
