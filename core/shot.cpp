@@ -12,7 +12,11 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   shot->scene = std::move(*parsed.scene);
   shot->timeline = simulate(shot->scene);
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
-  if (!shot->camera || has_errors(result.diagnostics)) return result;
+  if (!shot->camera || has_errors(result.diagnostics)) {
+    shot->camera.reset();
+    result.unscripted = std::move(shot);
+    return result;
+  }
   shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
   result.shot = std::move(shot);
   return result;
