@@ -5,6 +5,7 @@
 
 #include "preview_options.h"
 #include "shot_source.h"
+#include "timeline_picture.h"
 
 namespace bsim {
 
@@ -18,8 +19,9 @@ float picture_text_px(int height);
 
 /// --at T -o FILE.png
 int run_snapshot(const PreviewOptions& options, const Shot& shot);
-/// --timeline -o FILE.png
-int run_timeline_picture(const PreviewOptions& options, const Shot& shot);
+/// --timeline -o FILE.png, of a loaded shot (timeline_data) or of one whose camera script failed
+/// (unscripted_timeline_data).
+int run_timeline_picture(const PreviewOptions& options, const TimelineData& data);
 /// --movie FILE.mp4
 int run_animatic(const PreviewOptions& options, const Shot& shot);
 /// No output option: the window. Loads (and reloads) the scene itself so errors show in the window.

@@ -1,9 +1,11 @@
 // billiards-preview: the shot drawn with OpenGL, headless (snapshots, the timeline picture, the
 // animatic) or in a window with a scrub bar.
+#include <filesystem>
 #include <iostream>
 
 #include "commands.h"
 #include "preview_options.h"
+#include "script_as_written.h"
 #include "shot_source.h"
 
 int main(int argc, char** argv) {
@@ -20,8 +22,14 @@ int main(int argc, char** argv) {
 
   const bsim::LoadedShot loaded = bsim::load_source(source);
   for (const std::string& line : loaded.messages) std::cerr << line << "\n";
+  if (options.timeline && loaded.unscripted) {
+    // The camera script failed: the picture of the real events shows why, but the run still fails.
+    const std::string file = std::filesystem::path(source.shown_path).filename().string();
+    bsim::run_timeline_picture(options, bsim::unscripted_timeline_data(*loaded.unscripted, loaded.diagnostics, file));
+    return 1;
+  }
   if (!loaded.shot) return 1;
   if (options.at) return bsim::run_snapshot(options, *loaded.shot);
-  if (options.timeline) return bsim::run_timeline_picture(options, *loaded.shot);
+  if (options.timeline) return bsim::run_timeline_picture(options, bsim::timeline_data(*loaded.shot));
   return bsim::run_animatic(options, *loaded.shot);
 }

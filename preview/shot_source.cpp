@@ -40,6 +40,7 @@ LoadedShot load_source(const SceneSource& source) {
   }
   ShotResult result = load_shot(text, source.name, {.strict = source.strict});
   loaded.shot = std::move(result.shot);
+  loaded.unscripted = std::move(result.unscripted);
   loaded.diagnostics = std::move(result.diagnostics);
   for (const Diagnostic& d : loaded.diagnostics) loaded.messages.push_back(format_diagnostic(d, source.shown_path));
   return loaded;

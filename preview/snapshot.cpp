@@ -64,11 +64,15 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
   return 0;
 }
 
-int run_timeline_picture(const PreviewOptions& options, const Shot& shot) {
-  // Without --size, tall enough to list every event (about five columns of 19 px lines).
-  const int rows = (static_cast<int>(shot.timeline.events().size()) + 4) / 5;
+int run_timeline_picture(const PreviewOptions& options, const TimelineData& data) {
+  // Without --size, tall enough to list every event (about five columns of 19 px lines) and, for a
+  // camera script that failed, its errors and each description's second line.
+  const int rows = (static_cast<int>(data.events.size()) + 4) / 5;
+  const int errors = static_cast<int>(data.script_errors.size());
+  const int extra = errors > 0 ? 60 + errors * 17 : 0;
   const int width = options.size_given ? options.width : kTimelineWidth;
-  const int height = options.size_given ? options.height : std::clamp(330 + rows * 19, kTimelineMinHeight, kTimelineMaxHeight);
+  const int height = options.size_given ? options.height
+                                        : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);
   const float text_px = options.size_given ? std::clamp(std::min(height / 36.f, width / 90.f), 11.f, 20.f) : 16.f;
   std::string error;
   HeadlessCanvas canvas;
@@ -77,7 +81,7 @@ int run_timeline_picture(const PreviewOptions& options, const Shot& shot) {
     return 1;
   }
   ImDrawList* list = canvas.begin_2d();
-  draw_timeline(*list, timeline_data(shot), canvas.fonts(), {0, 0, float(width), float(height)});
+  draw_timeline(*list, data, canvas.fonts(), {0, 0, float(width), float(height)});
   canvas.end_2d();
   if (!canvas.write_png(*options.output, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";

@@ -23,6 +23,8 @@ constexpr ImU32 kWindowFill = IM_COL32(255, 255, 255, 16);
 constexpr ImU32 kWindowHatch = IM_COL32(255, 255, 255, 70);
 constexpr ImU32 kWindowEdge = IM_COL32(255, 255, 255, 90);
 constexpr ImU32 kCursor = IM_COL32(255, 70, 70, 255);
+constexpr ImU32 kError = IM_COL32(226, 40, 40, 255);
+constexpr ImU32 kErrorText = IM_COL32(255, 120, 110, 255);
 
 ImVec2 text_size(ImFont* font, float size, const std::string& text) {
   return font->CalcTextSizeA(size, FLT_MAX, 0, text.c_str());
@@ -94,6 +96,31 @@ void labelled_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, fl
   list.PopClipRect();
 }
 
+std::string camera_span_label(const TimelineCameraSpan& c, bool compact) {
+  const std::string event = c.event == CameraShot::kLastEvent ? "last" : std::to_string(c.event);
+  return compact ? c.label : "event " + event + ": " + c.label;
+}
+
+// A description of a camera script that does not fit the shot: its label above, its error (if any)
+// below in a red bar, so a wrong event number reads next to the events that do exist.
+void written_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, float top, float bottom,
+                 const TimelineCameraSpan& c) {
+  if (c.problem.empty()) {
+    labelled_bar(list, fonts, x0, x1, top, bottom, camera_mode_color(c.mode), camera_span_label(c, false), true);
+    return;
+  }
+  if (x1 - x0 < 3) x1 = x0 + 3;
+  list.AddRectFilled(ImVec2(x0, top), ImVec2(x1, bottom), with_alpha(kError, 150), 3.f);
+  list.AddRect(ImVec2(x0, top), ImVec2(x1, bottom), kError, 3.f, 0, 2.f);
+  const float pad = 4, gap = (bottom - top - fonts.regular_size - fonts.small_size) / 3;
+  list.PushClipRect(ImVec2(x0 + 1, top), ImVec2(x1 - 1, bottom), true);
+  list.AddText(fonts.regular, fonts.regular_size, ImVec2(x0 + pad, top + gap), IM_COL32(255, 255, 255, 255),
+               camera_span_label(c, false).c_str());
+  list.AddText(fonts.small, fonts.small_size, ImVec2(x0 + pad, bottom - gap - fonts.small_size),
+               IM_COL32(255, 226, 220, 255), c.problem.c_str());
+  list.PopClipRect();
+}
+
 }  // namespace
 
 TimelineData timeline_data(const Shot& shot) {
@@ -115,7 +142,7 @@ TimelineData timeline_data(const Shot& shot) {
     for (const CameraSegment& s : shot.camera->segments()) {
       if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
       const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
-      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c)});
+      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c), {}, true});
     }
     for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
   }
@@ -135,23 +162,46 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   const float right = layout.x + layout.width, bottom = layout.y + layout.height;
   list.AddRectFilled(ImVec2(layout.x, layout.y), ImVec2(right, bottom), kBackground);
 
+  const bool script_failed = !data.script_errors.empty();
   float y = layout.y + pad * (layout.compact ? 0.5f : 1.f);
   if (!layout.compact) {
     list.AddText(fonts.bold, fonts.bold_size, ImVec2(layout.x + pad, y), kText, data.title.c_str());
     y += fonts.bold_size + pad;
+    if (script_failed) {
+      const std::size_t n = data.script_errors.size();
+      const std::string note = "The camera script does not fit this shot (" + std::to_string(n) +
+                               (n == 1 ? " error" : " errors") +
+                               "): the camera row shows it as written, each description at the event it "
+                               "names, the faulty ones in red.";
+      const float wrap = right - layout.x - 2 * pad;
+      list.AddText(fonts.regular, text, ImVec2(layout.x + pad, y - pad * 0.4f), kErrorText, note.c_str(), nullptr, wrap);
+      y += fonts.regular->CalcTextSizeA(text, FLT_MAX, wrap, note.c_str()).y + pad * 0.6f;
+    }
   }
 
   // Rows, top to bottom.
   Rows r;
   r.label_height = small + 2;
-  const float fixed = (small + 6) + (small + 8) + (text + 10) + (small + 6) + (small + 8);
+  // A script that failed shows each description's error under its label.
+  const float camera_height = script_failed ? text + small + 12 : text + 10;
+  const float fixed = (small + 6) + (small + 8) + camera_height + (small + 6) + (small + 8);
   const float spare = bottom - y - fixed - pad;
   const char* const names[] = {"events", "pockets", "camera", "cue"};
   float gutter = 0;
   for (const char* n : names) gutter = std::max(gutter, text_size(fonts.small, small, n).x);
   gutter += 2 * pad;
   const float x0 = layout.x + gutter;
-  const float x1 = right - pad * 2.5f;
+  // Descriptions naming an event the shot lacks have no time: they go in a zone after the axis.
+  std::vector<float> unplaced_widths;
+  for (const TimelineCameraSpan& c : data.camera)
+    if (!c.placed)
+      unplaced_widths.push_back(std::max(text_size(fonts.regular, text, camera_span_label(c, layout.compact)).x,
+                                         text_size(fonts.small, small, c.problem).x) + 2 * pad);
+  float zone_wanted = 0;
+  for (float w : unplaced_widths) zone_wanted += w;
+  const float zone = std::min(zone_wanted, (right - x0) * 0.4f);
+  const float zone_right = right - pad, zone_left = zone_right - zone;
+  const float x1 = zone > 0 ? zone_left - 2 * pad : right - pad * 2.5f;
   const double duration = std::max(data.duration, 1e-6);
   TimelineAxis axis{x0, static_cast<float>((x1 - x0) / duration)};
   const auto at = [&](double t) { return x0 + static_cast<float>(t) * axis.pixels_per_second; };
@@ -174,7 +224,7 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   r.drops_top = r.events_bottom + 2;
   r.drops_bottom = r.drops_top + small + 8;
   r.camera_top = r.drops_bottom + 2;
-  r.camera_bottom = r.camera_top + text + 10;
+  r.camera_bottom = r.camera_top + camera_height;
   r.cue_top = r.camera_bottom + 2;
   r.cue_bottom = r.cue_top + small + 6;
   r.axis_top = r.cue_bottom;
@@ -208,13 +258,38 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
     labelled_bar(list, fonts, at(p.begin), at(p.end), r.cue_top + 2, r.cue_bottom - 2, cue_phase_color(p.phase),
                  cue_phase_label(p.phase), false);
 
-  // Camera descriptions, each tied to the event it names by a thin line.
-  for (const TimelineCameraSpan& c : data.camera) {
-    const std::string event = c.event == CameraShot::kLastEvent ? "last" : std::to_string(c.event);
-    const std::string label = layout.compact ? c.label : "event " + event + ": " + c.label;
-    labelled_bar(list, fonts, at(c.begin), at(c.end), r.camera_top + 2, r.camera_bottom - 2, camera_mode_color(c.mode),
-                 label, true);
+  // Camera descriptions. A script that failed is drawn as written: the faulty descriptions last (on
+  // top), each tied to the event it names by a red line, and those naming no event in the zone.
+  if (!script_failed)
+    for (const TimelineCameraSpan& c : data.camera)
+      labelled_bar(list, fonts, at(c.begin), at(c.end), r.camera_top + 2, r.camera_bottom - 2, camera_mode_color(c.mode),
+                   camera_span_label(c, layout.compact), true);
+  for (int faulty = 0; script_failed && faulty < 2; ++faulty)
+    for (const TimelineCameraSpan& c : data.camera) {
+      if (!c.placed || c.problem.empty() == bool(faulty)) continue;
+      const float a = at(c.begin);
+      if (faulty) list.AddLine(ImVec2(a, r.events_top), ImVec2(a, r.camera_top + 2), kError, 2.f);
+      written_bar(list, fonts, a, at(c.end), r.camera_top + 2, r.camera_bottom - 2, c);
+    }
+  if (zone > 0) {
+    list.AddRectFilled(ImVec2(zone_left, r.camera_top), ImVec2(zone_right, r.camera_bottom), kRowBackground, 2.f);
+    list.PushClipRect(ImVec2(zone_left, r.events_top), ImVec2(zone_right, r.drops_bottom), true);
+    list.AddText(fonts.small, small, ImVec2(zone_left + 2, (r.drops_top + r.drops_bottom - small) / 2), kErrorText,
+                 "not in the shot:");
+    list.PopClipRect();
+    const float scale = zone / zone_wanted;
+    float x = zone_left;
+    std::size_t k = 0;
+    for (const TimelineCameraSpan& c : data.camera) {
+      if (c.placed) continue;
+      const float w = unplaced_widths[k++] * scale;
+      written_bar(list, fonts, x + 1, x + w - 1, r.camera_top + 2, r.camera_bottom - 2, c);
+      x += w;
+    }
   }
+  if (script_failed && data.cue.empty())
+    list.AddText(fonts.small, small, ImVec2(x0 + 4, (r.cue_top + r.cue_bottom - small) / 2), kDim,
+                 "no stick: it is placed from the camera script");
 
   // Interpolation windows: shaded across every row, the event instant marked.
   for (const TimelineWindow& w : data.windows) {
@@ -269,22 +344,32 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   }
   if (layout.compact) return axis;
 
-  // Legend.
   y = r.axis_bottom + pad * 0.5f;
+  // A failed script's errors as printed, first below the axis.
+  for (const std::string& line : data.script_errors) {
+    if (y + small > bottom - 2) break;
+    list.AddText(fonts.small, small, ImVec2(x0, y), kErrorText, line.c_str());
+    y += small + 3;
+  }
+  if (script_failed) y += pad * 0.5f;
+
+  // Legend.
   struct Key {
     ImU32 color;
     const char* name;
     bool bar;
   };
-  const Key keys[] = {{event_color(EventType::start), "start / end", false},
-                      {event_color(EventType::cue), "cue", false},
-                      {event_color(EventType::ball_ball), "ball-ball", false},
-                      {event_color(EventType::ball_rail), "ball-rail", false},
-                      {pocket_color(), "pocket drop", false},
-                      {camera_mode_color(CameraMode::follow), "follow", true},
-                      {camera_mode_color(CameraMode::look), "look", true},
-                      {camera_mode_color(CameraMode::hover), "hover", true},
-                      {kWindowEdge, "interpolation window (\xE2\x96\xB2 its event)", true}};
+  std::vector<Key> keys = {{event_color(EventType::start), "start / end", false},
+                           {event_color(EventType::cue), "cue", false},
+                           {event_color(EventType::ball_ball), "ball-ball", false},
+                           {event_color(EventType::ball_rail), "ball-rail", false},
+                           {pocket_color(), "pocket drop", false},
+                           {camera_mode_color(CameraMode::follow), "follow", true},
+                           {camera_mode_color(CameraMode::look), "look", true},
+                           {camera_mode_color(CameraMode::hover), "hover", true},
+                           {kWindowEdge, "interpolation window (\xE2\x96\xB2 its event)", true}};
+  // A failed script has no interpolation windows, but has faults to explain.
+  if (script_failed) keys.back() = {kError, "camera script error", true};
   if (y + small <= bottom - 2) {
     float x = x0;
     for (const Key& k : keys) {

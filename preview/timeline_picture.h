@@ -34,6 +34,8 @@ struct TimelineCameraSpan {
   int event = 0;              ///< the event number the description names (65535: the last)
   CameraMode mode = CameraMode::hover;
   std::string label;          ///< "follow ball 0"
+  std::string problem;        ///< why the description does not fit the shot (drawn in red); empty when it does
+  bool placed = true;         ///< false: the event it names does not exist (drawn after the time axis)
 };
 
 struct TimelineWindow {
@@ -49,6 +51,9 @@ struct TimelineData {
   std::vector<TimelineCameraSpan> camera;
   std::vector<TimelineWindow> windows;
   std::vector<CuePhaseSpan> cue;
+  /// Set when the camera script does not fit the shot: every error as printed. The camera row then
+  /// shows the script as written (see script_as_written.h), and there are no windows or cue phases.
+  std::vector<std::string> script_errors;
 };
 
 TimelineData timeline_data(const Shot& shot);

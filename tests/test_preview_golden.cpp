@@ -1,5 +1,6 @@
 // Golden pictures of the preview: a frame of a made-up table (a rack, turned balls, the stick) and a
-// made-up timeline, drawn in-process and compared with tests/golden/preview/*.png within a tolerance.
+// made-up timeline (also with a camera script that does not fit it), drawn in-process and compared
+// with tests/golden/preview/*.png within a tolerance.
 // The inputs are built here, not simulated, so only a change to the drawing moves the pictures.
 //
 // Regenerate after an intended change to the drawing (then look at the new pictures before committing):
@@ -70,14 +71,30 @@ TimelineData made_up_timeline() {
   int index = 0;
   for (const auto& [time, type] : events) data.events.push_back({index++, time, type, "made-up event"});
   data.drops.push_back({4.9, 3, 2});
-  data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover"},
-                 {2.5, 3.1, 1, CameraMode::follow, "follow ball 0"},
-                 {3.1, 6.0, 4, CameraMode::look, "look ball 3"}};
+  data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover", "", true},
+                 {2.5, 3.1, 1, CameraMode::follow, "follow ball 0", "", true},
+                 {3.1, 6.0, 4, CameraMode::look, "look ball 3", "", true}};
   data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}};
   data.cue = {{CuePhase::approach, 0.0, 0.9},
               {CuePhase::preflight, 0.9, 2.25},
               {CuePhase::impact, 2.25, 2.6},
               {CuePhase::retraction, 2.6, 3.3}};
+  return data;
+}
+
+// The same shot with a camera script that does not fit it, as unscripted_timeline_data lays it out:
+// a description listed out of order, one naming an event the shot lacks, and the errors as printed.
+TimelineData made_up_failed_script() {
+  TimelineData data = made_up_timeline();
+  data.windows.clear();
+  data.cue.clear();
+  data.camera = {{0.0, 2.9, 0, CameraMode::hover, "hover", "", true},
+                 {4.4, 6.0, 6, CameraMode::follow, "follow ball 0", "", true},
+                 {2.9, 4.4, 2, CameraMode::look, "look ball 3",
+                  "event 2 is listed after event 6: list the camera's events in increasing order", true},
+                 {6.0, 6.0, 9, CameraMode::follow, "follow ball 1", "no such event \xE2\x80\x94 the shot has 8 (0 to 7)", false}};
+  data.script_errors = {"golden.scn:9:7: error: event 2 is listed after event 6: list the camera's events in increasing order",
+                        "golden.scn:10:7: error: event 9 does not exist: the shot has 8 events (0 to 7)"};
   return data;
 }
 
@@ -158,5 +175,15 @@ TEST_SUITE("preview golden pictures") {
     draw_timeline(*list, made_up_timeline(), canvas.fonts(), {0, 0, 800, 300});
     canvas.end_2d();
     check_against_golden(canvas, "timeline.png");
+  }
+
+  TEST_CASE("a timeline whose camera script does not fit: the script as written, faults in red, the errors") {
+    HeadlessCanvas canvas;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(800, 360, 14, error), error);
+    ImDrawList* list = canvas.begin_2d();
+    draw_timeline(*list, made_up_failed_script(), canvas.fonts(), {0, 0, 800, 360});
+    canvas.end_2d();
+    check_against_golden(canvas, "timeline_script_error.png");
   }
 }
