@@ -111,42 +111,32 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   texture { T_Cloth }
 }
 
-#declare Cushions = difference {
-  union {
-    sphere { Far, Eps }
-    #for (I, 0, RailCount - 1) Cushion(RailA[I], RailB[I], RailH[I]) #end
-  }
-  object { PocketCuts }
+// Each cushion cut on its own, so each keeps a tight bounding box: a ray over the cloth meets none.
+#declare Cushions = union {
+  sphere { Far, Eps }
+  #for (I, 0, RailCount - 1)
+    difference { Cushion(RailA[I], RailB[I], RailH[I]) object { PocketCuts } }
+  #end
   texture { T_CushionCloth }
 }
 
-// ---- the wooden rails: one frame with bevelled outer edges, mitred into four pieces for the grain
-#declare RailFrame = difference {
-  box { <OuterMin.u, OuterMin.v, -ApronDepth>, <OuterMax.u, OuterMax.v, RailTopZ> }
-  box { <InnerMin.u, InnerMin.v, -ApronDepth - 1>, <InnerMax.u, InnerMax.v, RailTopZ + 1> }
-  #local Bevel = 0.016;
-  plane { <0, -1, 1>, 0 translate <0, OuterMin.v + Bevel, RailTopZ> inverse }
-  plane { <0, 1, 1>, 0 translate <0, OuterMax.v - Bevel, RailTopZ> inverse }
-  plane { <-1, 0, 1>, 0 translate <OuterMin.u + Bevel, 0, RailTopZ> inverse }
-  plane { <1, 0, 1>, 0 translate <OuterMax.u - Bevel, 0, RailTopZ> inverse }
-  object { PocketCuts }
-}
-// The mitre lines run from the inner corners at 45 degrees; the long sides own the corners' tops.
-#declare LongSides = intersection {
-  object { RailFrame }
-  union {
-    intersection { plane { <1, -1, 0>, 0 translate <InnerMax.u, InnerMax.v, 0> } plane { <-1, -1, 0>, 0 translate <InnerMin.u, InnerMax.v, 0> } }
-    intersection { plane { <1, 1, 0>, 0 translate <InnerMax.u, InnerMin.v, 0> } plane { <-1, 1, 0>, 0 translate <InnerMin.u, InnerMin.v, 0> } }
+// ---- the wooden rails: four mitred pieces (the grain runs along each), bevelled on the outer
+// edge, cut by the pockets. Separate pieces keep tight bounding boxes.
+#declare Bevel = 0.016;
+#macro RailPiece(P0, P1, P2, P3, Out, Tex)
+  difference {
+    prism { linear_sweep linear_spline -RailTopZ, ApronDepth, 5, P0, P1, P2, P3, P0 rotate -x * 90 }
+    // the bevel: a plane through the outer top edge, pulled in by Bevel, leaning out at 45 degrees
+    plane { <Out.u, Out.v, 1>, 0 translate <P2.u - Out.u * Bevel, P2.v - Out.v * Bevel, RailTopZ> inverse }
+    object { PocketCuts }
+    texture { Tex }
   }
-  texture { T_Wood }
-}
-#declare ShortSides = difference {
-  object { RailFrame }
-  union {
-    intersection { plane { <1, -1, 0>, -Eps translate <InnerMax.u, InnerMax.v, 0> } plane { <-1, -1, 0>, -Eps translate <InnerMin.u, InnerMax.v, 0> } }
-    intersection { plane { <1, 1, 0>, -Eps translate <InnerMax.u, InnerMin.v, 0> } plane { <-1, 1, 0>, -Eps translate <InnerMin.u, InnerMin.v, 0> } }
-  }
-  texture { T_WoodY }
+#end
+#declare Rails = union {
+  RailPiece(<InnerMin.u, InnerMax.v>, <InnerMax.u, InnerMax.v>, <OuterMax.u, OuterMax.v>, <OuterMin.u, OuterMax.v>, <0, 1>, T_Wood)
+  RailPiece(<InnerMax.u, InnerMin.v>, <InnerMin.u, InnerMin.v>, <OuterMin.u, OuterMin.v>, <OuterMax.u, OuterMin.v>, <0, -1>, T_Wood)
+  RailPiece(<InnerMax.u, InnerMax.v>, <InnerMax.u, InnerMin.v>, <OuterMax.u, OuterMin.v>, <OuterMax.u, OuterMax.v>, <1, 0>, T_WoodY)
+  RailPiece(<InnerMin.u, InnerMin.v>, <InnerMin.u, InnerMax.v>, <OuterMin.u, OuterMax.v>, <OuterMin.u, OuterMin.v>, <-1, 0>, T_WoodY)
 }
 
 // ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
@@ -198,8 +188,7 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 #declare Table = union {
   object { Bed }
   object { Cushions }
-  object { LongSides }
-  object { ShortSides }
+  object { Rails }
   object { Liners }
   object { Sights }
   object { TableBody }
@@ -208,7 +197,7 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 // ---- balls: stripe and number disc are object patterns over the sphere, so no seams; the glyph
 // reaches through one half only, else the far side's number shows through.
 #declare BallFinish = finish {
-  ambient 0.09 diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
+  ambient 0.14 diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
   reflection { 0.03, 0.07 fresnel } conserve_energy
 }
 #declare BallWhite = srgb <0.96, 0.95, 0.90>;

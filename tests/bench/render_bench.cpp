@@ -1,0 +1,159 @@
+// render_bench: where the time of a movie goes, for the built-in break at draft 1280x720.
+//   cmake --build build --target render_bench && build/bin/render_bench [--every K] [--fps N]
+// Reports the exporter's own work (loading, simulating, writing frames and sound, and its CPU
+// while it waits) against the time inside POV-Ray and ffmpeg, and the speed-up of two POV-Ray
+// processes over one, set against what two concurrent renders of one frame get on this machine
+// (on a machine whose second core adds less than a whole core, that is the ceiling, not 2x).
+// Other work on the machine while it runs skews every figure.
+// --every K renders every K-th frame only (and skips the movie): a quicker estimate.
+// Takes many minutes at K = 1; never run by ctest.
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "builtin_scene.h"
+#include "child_process.h"
+#include "export_options.h"
+#include "ffmpeg_assemble.h"
+#include "frame_cache.h"
+#include "frames.h"
+#include "movie_export.h"
+#include "output_stage.h"
+#include "pov_frame.h"
+#include "render_jobs.h"
+#include "shot.h"
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// s of CPU this process itself has used (not its children).
+double own_cpu() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+void remove_pictures(const std::string& frames_dir) {
+  for (const auto& e : fs::directory_iterator(frames_dir))
+    if (e.path().extension() == ".png" || e.path().filename() == std::string(bsim::kFrameCacheName)) fs::remove(e.path());
+}
+
+struct RenderTiming {
+  double wall = 0;      ///< s
+  double own_cpu = 0;   ///< s of the exporter's CPU meanwhile
+};
+
+RenderTiming render(const std::string& frames_dir, const std::vector<bsim::FrameJob>& jobs,
+                    const bsim::RenderSettings& settings) {
+  remove_pictures(frames_dir);
+  bsim::FrameCache cache(frames_dir);
+  std::string error;
+  const double cpu = own_cpu();
+  const auto start = Clock::now();
+  if (bsim::render_frames(frames_dir, jobs, static_cast<int>(jobs.size()), settings, cache, error) !=
+      bsim::RunOutcome::done) {
+    std::fprintf(stderr, "render_bench: %s\n", error.c_str());
+    std::exit(1);
+  }
+  return {seconds_since(start), own_cpu() - cpu};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int every = 1;
+  bsim::ExportOptions options;
+  options.quality = bsim::Quality::draft;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--every") every = std::max(1, std::atoi(argv[i + 1]));
+    else if (flag == "--fps") options.fps = std::max(1, std::atoi(argv[i + 1]));
+  }
+  const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
+  if (povray.empty() || ffmpeg.empty()) {
+    std::fprintf(stderr, "render_bench: povray and ffmpeg are needed; run `bash .ci/install-deps`\n");
+    return 1;
+  }
+
+  // The exporter's own work: scene -> shot -> frame files and sound track.
+  auto start = Clock::now();
+  bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
+  if (!loaded.shot) return 1;
+  const double load_time = seconds_since(start);
+  const fs::path dir = fs::temp_directory_path() / ("render-bench-" + std::to_string(::getpid()));
+  bsim::OutputStage stage;
+  std::string error;
+  start = Clock::now();
+  if (!stage.open(dir.string(), error) || !bsim::write_frames_and_sound(*loaded.shot, options, stage, error) ||
+      !stage.commit(error)) {
+    std::fprintf(stderr, "render_bench: %s\n", error.c_str());
+    return 1;
+  }
+  const double write_time = seconds_since(start);
+
+  const int frames = bsim::frame_count(loaded.shot->timeline.duration(), options.fps);
+  std::vector<bsim::FrameJob> jobs;
+  for (int k = 0; k < frames; k += every) jobs.push_back({k, 0});
+  const std::string frames_dir = (dir / "frames").string();
+  std::printf("default break, draft %dx%d, %d frames at %d fps; rendering %zu of them\n", options.width,
+              options.height, frames, options.fps, jobs.size());
+  std::fflush(stdout);
+
+  // What this machine gives two processes: three frames one after another, then six neighbouring
+  // frames (so as much work apiece) two at a time.
+  bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 1};
+  std::vector<bsim::FrameJob> three, six;
+  for (int k = 0; k < 6; ++k) {
+    if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
+    six.push_back({frames / 2 + k, 0});
+  }
+  const RenderTiming alone = render(frames_dir, three, settings);
+  settings.processes = 2;
+  const RenderTiming pair = render(frames_dir, six, settings);
+  const double machine = 2 * alone.wall / pair.wall;
+
+  settings.processes = 1;
+  const RenderTiming one = render(frames_dir, jobs, settings);
+  std::printf("POV-Ray, --jobs 1: %.1f s (%.2f s a frame)\n", one.wall, one.wall / static_cast<double>(jobs.size()));
+  std::fflush(stdout);
+  settings.processes = 2;
+  const RenderTiming two = render(frames_dir, jobs, settings);
+  std::printf("POV-Ray, --jobs 2: %.1f s (%.2f s a frame)\n", two.wall, two.wall / static_cast<double>(jobs.size()));
+
+  double encode_time = 0;
+  if (every == 1) {
+    start = Clock::now();
+    if (bsim::assemble_movie(dir.string(), {ffmpeg, options.fps, loaded.shot->timeline.duration()}, error) !=
+        bsim::RunOutcome::done) {
+      std::fprintf(stderr, "render_bench: %s\n", error.c_str());
+      return 1;
+    }
+    encode_time = seconds_since(start);
+    std::printf("ffmpeg: %.1f s\n", encode_time);
+  }
+
+  const double outside = load_time + write_time + two.own_cpu;
+  const double inside = two.wall - two.own_cpu + encode_time;
+  std::printf("exporter's own work: load and simulate %.2f s, frames and sound %.2f s, %.2f s CPU while rendering\n",
+              load_time, write_time, two.own_cpu);
+  std::printf("outside POV-Ray and ffmpeg: %.2f s; inside: %.1f s; own share %.2f%% (at --jobs 2%s)\n", outside,
+              inside, 100 * outside / (outside + inside), every == 1 ? "" : ", frames sampled");
+  const double speedup = one.wall / two.wall;
+  std::printf("speed-up of --jobs 2 over --jobs 1: %.2fx; two concurrent renders of one frame: %.2fx; "
+              "parallel efficiency %.0f%%\n",
+              speedup, machine, 100 * speedup / machine);
+  fs::remove_all(dir);
+  return 0;
+}
