@@ -129,9 +129,10 @@ TEST_SUITE("movie") {
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     again = picture_times(out / "frames");
     const std::string last = "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".png";
-    for (const auto& [name, time] : times) {
+    for (const auto& entry : times) {
+      const std::string& name = entry.first;  // a plain reference: doctest's CAPTURE lambda cannot capture a binding
       CAPTURE(name);
-      CHECK((again[name] == time) == (name != last));
+      CHECK((again[name] == entry.second) == (name != last));
     }
     CHECK(leftovers(out).empty());
   }
