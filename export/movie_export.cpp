@@ -17,6 +17,7 @@
 #include "output_stage.h"
 #include "pov_frame.h"
 #include "pov_table.h"
+#include "progress_line.h"
 #include "render_jobs.h"
 #include "shot.h"
 #include "soundtrack.h"
@@ -66,20 +67,23 @@ int process_count(const ExportOptions& options) {
 
 std::string quality_name(Quality quality) { return quality == Quality::final ? "final" : "draft"; }
 
-/// Removes what a run into this directory left that no longer belongs: pictures of frames past the
-/// shot's end, half-written pictures and logs of a run that was killed outright.
+/// Removes what a run into this directory left that no longer belongs: frame files and pictures
+/// past the shot's end, half-written pictures and logs of a run that was killed outright.
 void remove_stale(const std::string& frames_dir, int frames, FrameCache& cache) {
   std::error_code ec;
+  std::vector<std::filesystem::path> stale;
   for (const auto& entry : std::filesystem::directory_iterator(frames_dir, ec)) {
     const std::string name = entry.path().filename().string();
     int frame = -1;
-    const bool picture = name.size() == 15 && name.rfind("frame_", 0) == 0 && name.ends_with(".png") &&
-                         std::sscanf(name.c_str(), "frame_%5d.png", &frame) == 1;
+    const bool numbered = name.size() == 15 && name.rfind("frame_", 0) == 0 &&
+                          (name.ends_with(".png") || name.ends_with(".pov")) &&
+                          std::sscanf(name.c_str(), "frame_%5d.", &frame) == 1;
     const bool leftover = name.rfind(".frame_", 0) == 0 && (name.ends_with(".tmp.png") || name.ends_with(".log"));
-    if ((picture && frame >= frames) || leftover) {
-      std::filesystem::remove(entry.path(), ec);
-      cache.erase(name);
-    }
+    if ((numbered && frame >= frames) || leftover) stale.push_back(entry.path());
+  }
+  for (const auto& path : stale) {  // removed after listing: removing while iterating is unspecified
+    std::filesystem::remove(path, ec);
+    cache.erase(path.filename().string());
   }
 }
 
@@ -142,6 +146,7 @@ bool render_movie(const Shot& shot, const ExportOptions& options, const std::str
   RunOutcome outcome = render_frames(frames_dir, jobs, frames, render, cache, error);
   if (outcome == RunOutcome::done) {
     const MovieSettings movie{ffmpeg, options.fps, shot.timeline.duration()};
+    if (ProgressLine::wanted()) std::fputs("encoding movie.mp4\n", stderr);
     outcome = assemble_movie(dir, movie, error);
   }
   if (outcome == RunOutcome::interrupted) {

@@ -17,11 +17,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string scene(const char* last_camera) {
-  return std::string("cue 0 0\n"
-                     "ball 0 -0.3 0 0.028575  0.6 0 0  1 0 0 0\n"
-                     "ball 9  0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
-                     "camera\nevent 0 0 0 hover -1.5 -1.2 1.2  0 0 0\n") +
+std::string scene(const char* last_camera, double speed = 0.6) {
+  return "cue 0 0\nball 0 -0.3 0 0.028575  " + std::to_string(speed) +
+         " 0 0  1 0 0 0\n"
+         "ball 9  0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
+         "camera\nevent 0 0 0 hover -1.5 -1.2 1.2  0 0 0\n" +
          last_camera + "endcamera\n";
 }
 const char* const kEndA = "event 65535 0 0 hover -1.5 -1.2 1.2  0 0 0\n";
@@ -135,6 +135,16 @@ TEST_SUITE("movie") {
       CHECK((again[name] == entry.second) == (name != last));
     }
     CHECK(leftovers(out).empty());
+
+    // A shorter shot into the same directory: the frames past its end go, files and pictures.
+    r = run_export(dir.file("tiny.scn", scene(kEndA, 0.15)), out, options);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    const int fewer = frame_count(json_number(slurp(out / "events.json"), "duration"), 4);
+    REQUIRE(fewer < frames);
+    CHECK(static_cast<int>(picture_times(out / "frames").size()) == fewer);
+    int povs = 0;
+    for (const auto& e : fs::directory_iterator(out / "frames")) povs += e.path().extension() == ".pov";
+    CHECK(povs == fewer);
   }
 
   TEST_CASE("the progress line shows on a terminal, not under CI") {
