@@ -274,7 +274,15 @@ union {
     box { <-LampHalf.u + 0.02, -LampHalf.v + 0.02, LampZ - 0.01>, <LampHalf.u - 0.02, LampHalf.v - 0.02, LampZ + 0.12> }
   }
   cylinder { <0, 0, LampZ + 0.14>, <0, 0, 2.6>, 0.006 }
-  pigment { srgb <0.05, 0.20, 0.10> } finish { diffuse 0.6 specular 0.5 roughness 0.01 }
+  pigment { srgb <0.07, 0.28, 0.14> } finish { diffuse 0.6 specular 0.5 roughness 0.01 }
+  no_shadow
+  translate <Middle.u, Middle.v, 0>
+}
+// a brass band round the shade's rim
+difference {
+  box { <-LampHalf.u - 0.004, -LampHalf.v - 0.004, LampZ - 0.002>, <LampHalf.u + 0.004, LampHalf.v + 0.004, LampZ + 0.02> }
+  box { <-LampHalf.u + 0.01, -LampHalf.v + 0.01, LampZ - 0.01>, <LampHalf.u - 0.01, LampHalf.v - 0.01, LampZ + 0.03> }
+  pigment { srgb <0.75, 0.58, 0.28> } finish { diffuse 0.5 specular 0.7 roughness 0.005 metallic reflection 0.2 }
   no_shadow
   translate <Middle.u, Middle.v, 0>
 }
@@ -295,8 +303,8 @@ box { <-LampHalf.u + 0.02, -LampHalf.v + 0.02, LampZ + 0.005>, <LampHalf.u - 0.0
   light_source { <Middle.u + 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.8 fade_distance 1.6 fade_power 2 }
 #end
 // dim room fill, casting no shadows
-light_source { <OuterMin.u - 2, OuterMin.v - 2, 2.4> srgb 0.10 shadowless }
-light_source { <OuterMax.u + 2, OuterMax.v + 2, 2.4> srgb 0.07 shadowless }
+light_source { <OuterMin.u - 2, OuterMin.v - 2, 2.4> srgb 0.15 shadowless }
+light_source { <OuterMax.u + 2, OuterMax.v + 2, 2.4> srgb 0.10 shadowless }
 
 object { Table }
 )pov";
