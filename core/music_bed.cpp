@@ -13,6 +13,7 @@ namespace {
 constexpr double kLoopCrossfade = 0.25;  ///< s, overlap where a short piece meets its own start
 constexpr double kFadeIn = 1.0;          ///< s
 constexpr double kFadeOut = 2.0;         ///< s
+constexpr double kHalfPi = 1.5707963267948966;
 
 /// Linear-interpolation resampling; enough for a bed kept well under the effects.
 std::vector<float> resample(const std::vector<float>& in, int from_rate, int to_rate) {
@@ -46,10 +47,12 @@ void fit_channel(std::vector<float>& channel, std::size_t count, std::size_t cro
   for (std::size_t start = 0; start < count; start += period) {
     const bool first = start == 0, last = start + length >= count;
     for (std::size_t i = 0; i < length && start + i < count; ++i) {
-      float w = 1.0f;
-      if (!first && i < crossfade) w = static_cast<float>(i) / static_cast<float>(crossfade);
-      if (!last && i >= length - crossfade) w = static_cast<float>(length - i) / static_cast<float>(crossfade);
-      out[start + i] += w * channel[i];
+      // Equal-power crossfade: the end and the start of a piece are unrelated, so their powers add.
+      double w = 1.0;
+      if (!first && i < crossfade) w = std::sin(kHalfPi * static_cast<double>(i) / static_cast<double>(crossfade));
+      if (!last && i >= length - crossfade)
+        w = std::sin(kHalfPi * static_cast<double>(length - i) / static_cast<double>(crossfade));
+      out[start + i] += static_cast<float>(w) * channel[i];
     }
   }
   channel = std::move(out);
