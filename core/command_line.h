@@ -41,6 +41,40 @@ std::optional<double> parse_real_option(std::string_view text);
 /// "WxH" with both parts from 1 to kMaxImageSide.
 bool parse_size_option(std::string_view text, int& width, int& height);
 
+enum class ArgumentsOutcome { run, exit_success, exit_usage };
+
+/// The loop both front ends share: one positional scene path, `-h`/`--help` (prints `usage`),
+/// `--version` (prints `version_line`), and `apply(reader, message)` for every other option, which
+/// returns false with `message` set for a bad option or value.
+template <class Apply>
+ArgumentsOutcome read_arguments(const std::vector<std::string>& args, std::optional<std::string>& scene_path,
+                                std::string_view usage, std::string_view version_line, Apply&& apply,
+                                std::string& message) {
+  message.clear();
+  ArgReader reader(args);
+  while (reader.next()) {
+    const std::string& word = reader.word();
+    if (!reader.is_option()) {
+      if (scene_path) {
+        message = "more than one scene given: '" + *scene_path + "' and '" + word + "'";
+        return ArgumentsOutcome::exit_usage;
+      }
+      scene_path = word;
+      continue;
+    }
+    if (word == "-h" || word == "--help") {
+      message = usage;
+      return ArgumentsOutcome::exit_success;
+    }
+    if (word == "--version") {
+      message = version_line;
+      return ArgumentsOutcome::exit_success;
+    }
+    if (!apply(reader, message)) return ArgumentsOutcome::exit_usage;
+  }
+  return ArgumentsOutcome::run;
+}
+
 inline constexpr int kMaxImageSide = 16384;  ///< pixels; larger frames are surely a typo
 inline constexpr int kMaxFps = 1000;
 

@@ -102,27 +102,11 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
                                         std::string& message) {
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
-  message.clear();
-  ArgReader reader(args);
-  while (reader.next()) {
-    const std::string& word = reader.word();
-    if (!reader.is_option()) {
-      if (options.scene_path) {
-        message = "more than one scene given: '" + *options.scene_path + "' and '" + word + "'";
-        return CommandLineOutcome::exit_usage;
-      }
-      options.scene_path = word;
-      continue;
-    }
-    if (word == "-h" || word == "--help") {
-      message = kUsage;
-      return CommandLineOutcome::exit_success;
-    }
-    if (word == "--version") {
-      message = "billiards-export " BSIM_VERSION "\n";
-      return CommandLineOutcome::exit_success;
-    }
-    if (!apply_option(reader, options, message)) return CommandLineOutcome::exit_usage;
+  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
+  switch (read_arguments(args, options.scene_path, kUsage, "billiards-export " BSIM_VERSION "\n", apply, message)) {
+    case ArgumentsOutcome::exit_success: return CommandLineOutcome::exit_success;
+    case ArgumentsOutcome::exit_usage: return CommandLineOutcome::exit_usage;
+    case ArgumentsOutcome::run: break;
   }
   return CommandLineOutcome::run;
 }

@@ -124,27 +124,11 @@ bool check_combination(const PreviewOptions& o, std::string& message) {
 PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& args, PreviewOptions& options,
                                                 std::string& message) {
   options = PreviewOptions{};
-  message.clear();
-  ArgReader reader(args);
-  while (reader.next()) {
-    const std::string& word = reader.word();
-    if (!reader.is_option()) {
-      if (options.scene_path) {
-        message = "more than one scene given: '" + *options.scene_path + "' and '" + word + "'";
-        return PreviewCommandLineOutcome::exit_usage;
-      }
-      options.scene_path = word;
-      continue;
-    }
-    if (word == "-h" || word == "--help") {
-      message = kUsage;
-      return PreviewCommandLineOutcome::exit_success;
-    }
-    if (word == "--version") {
-      message = "billiards-preview " BSIM_VERSION "\n";
-      return PreviewCommandLineOutcome::exit_success;
-    }
-    if (!apply_option(reader, options, message)) return PreviewCommandLineOutcome::exit_usage;
+  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
+  switch (read_arguments(args, options.scene_path, kUsage, "billiards-preview " BSIM_VERSION "\n", apply, message)) {
+    case ArgumentsOutcome::exit_success: return PreviewCommandLineOutcome::exit_success;
+    case ArgumentsOutcome::exit_usage: return PreviewCommandLineOutcome::exit_usage;
+    case ArgumentsOutcome::run: break;
   }
   return check_combination(options, message) ? PreviewCommandLineOutcome::run : PreviewCommandLineOutcome::exit_usage;
 }
