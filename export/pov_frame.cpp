@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "constants.h"
+#include "camera_interpolation.h"
 #include "frames.h"
 #include "pov_format.h"
 #include "pov_table.h"

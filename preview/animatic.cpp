@@ -1,12 +1,10 @@
 // --movie: every frame drawn with the GL renderer and piped raw to ffmpeg with the sound track, so a
 // camera script can be judged in motion in seconds instead of the minutes POV-Ray takes.
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <random>
 #include <string>
@@ -14,14 +12,13 @@
 
 #include <imgui.h>
 
+#include "child_process.h"
 #include "commands.h"
 #include "frames.h"
 #include "headless_canvas.h"
 #include "overlays.h"
 #include "scene_renderer.h"
 #include "soundtrack.h"
-
-extern char** environ;
 
 namespace bsim {
 
@@ -30,31 +27,20 @@ namespace {
 /// s; the exporter's default lead, so the animatic sounds as the movie will.
 constexpr double kAnimaticAudioLead = 0.005;
 
-/// ffmpeg reading raw RGBA frames on its standard input.
+/// ffmpeg reading raw RGBA frames on its standard input, its messages in a log file.
 class FfmpegPipe {
  public:
-  bool start(const std::vector<std::string>& args, std::string& error) {
-    int fds[2];
-    if (pipe(fds) != 0) {
-      error = "cannot create a pipe to ffmpeg";
-      return false;
-    }
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
-    posix_spawn_file_actions_addclose(&actions, fds[1]);
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const int status = posix_spawnp(&pid_, "ffmpeg", &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    close(fds[0]);
-    if (status != 0) {
-      close(fds[1]);
+  bool start(std::vector<std::string> args, const std::filesystem::path& log, std::string& error) {
+    args.front() = find_program("ffmpeg");
+    if (args.front().empty()) {
       error = "cannot run ffmpeg (install the ffmpeg package)";
       return false;
     }
-    out_ = fdopen(fds[1], "wb");
+    log_ = log;
+    int fd = -1;
+    pid_ = start_process(args, ".", log_.string(), error, &fd);
+    if (pid_ < 0) return false;
+    out_ = fdopen(fd, "wb");
     return out_ != nullptr;
   }
 
@@ -62,26 +48,38 @@ class FfmpegPipe {
     return out_ && std::fwrite(bytes.data(), 1, bytes.size(), out_) == bytes.size();
   }
 
-  /// Closes the pipe and waits; true when ffmpeg succeeded.
-  bool finish() {
+  /// Closes the pipe and waits; true when ffmpeg succeeded, else `error` holds its last message.
+  bool finish(std::string& error) {
     if (out_) std::fclose(out_);
     out_ = nullptr;
-    int status = 0;
-    if (pid_ > 0 && waitpid(pid_, &status, 0) < 0) return false;
+    if (pid_ < 0) return false;
+    const bool ok = wait_for(pid_);
     pid_ = -1;
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (!ok && error.empty()) error = "ffmpeg: " + error_from_log(read_text(log_));
+    return ok;
   }
 
-  ~FfmpegPipe() { finish(); }
+  ~FfmpegPipe() {
+    std::string ignored;
+    finish(ignored);
+    std::error_code ec;
+    if (!log_.empty()) std::filesystem::remove(log_, ec);
+  }
 
  private:
+  static std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+
   FILE* out_ = nullptr;
   pid_t pid_ = -1;
+  std::filesystem::path log_;
 };
 
-std::filesystem::path temporary_wav() {
+std::filesystem::path temporary_file(const char* extension) {
   std::random_device device;
-  return std::filesystem::temp_directory_path() / ("bsim-animatic-" + std::to_string(device()) + ".wav");
+  return std::filesystem::temp_directory_path() / ("bsim-animatic-" + std::to_string(device()) + extension);
 }
 
 }  // namespace
@@ -94,8 +92,8 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   // The sound lasts exactly as long as the frames, so the streams end together.
   const auto samples = static_cast<std::size_t>(frames) * kSampleRate / static_cast<std::size_t>(fps);
   AudioBuffer audio;
-  const std::filesystem::path wav = temporary_wav();
-  if (!mix_soundtrack(shot, {.lead = kAnimaticAudioLead, .music_path = {}}, samples, audio, error) ||
+  const std::filesystem::path wav = temporary_file(".wav");
+  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = kAnimaticAudioLead, .music_path = {}}, samples, audio, error) ||
       !write_wav(wav.string(), audio, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
@@ -124,7 +122,7 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   // A dead ffmpeg must show up as a failed write, not kill the process.
   const auto previous = std::signal(SIGPIPE, SIG_IGN);
   FfmpegPipe ffmpeg;
-  bool ok = ffmpeg.start(args, error);
+  bool ok = ffmpeg.start(args, temporary_file(".log"), error);
   const bool overlays = options.overlays.paths || options.overlays.events || options.overlays.camera;
   const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
   for (int k = 0; ok && k < frames; ++k) {
@@ -139,7 +137,7 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
     }
     ok = ffmpeg.write(canvas.pixels());
   }
-  ok = ffmpeg.finish() && ok;
+  ok = ffmpeg.finish(error) && ok;
   std::signal(SIGPIPE, previous);
   std::filesystem::remove(wav);
   std::error_code ec;

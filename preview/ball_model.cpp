@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "constants.h"
+#include "cue_pose.h"
 #include "fonts.h"
 
 namespace bsim {

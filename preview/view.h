@@ -3,7 +3,7 @@
 // the POV-Ray frames use) or a free orbit camera, and the GL matrices for it.
 #include <Eigen/Core>
 
-#include "constants.h"
+#include "camera_interpolation.h"
 #include "vec.h"
 
 namespace bsim {

@@ -3,7 +3,6 @@
 #include <doctest/doctest.h>
 
 #include "camera_interpolation.h"
-#include "constants.h"
 
 using namespace bsim;
 

@@ -5,7 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "camera_script.h"
-#include "constants.h"
+#include "camera_interpolation.h"
 
 using namespace bsim;
 

@@ -4,7 +4,7 @@
 #include <doctest/doctest.h>
 #include <string>
 
-#include "constants.h"
+#include "timeline.h"
 #include "cue_geometry.h"
 #include "shot.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "constants.h"
+#include "camera_interpolation.h"
 #include "shot.h"
 #include "support.h"
 #include "view.h"

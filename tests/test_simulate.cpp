@@ -7,7 +7,7 @@
 #include "bench/physics_print.h"
 #include "bench/random_scenes.h"
 #include "bench/shot_checks.h"
-#include "constants.h"
+#include "timeline.h"
 #include "motion.h"
 #include "pocket_fall.h"
 #include "simulate.h"

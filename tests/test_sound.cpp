@@ -147,7 +147,7 @@ TEST_SUITE("sound") {
     const auto samples = static_cast<std::size_t>(std::llround(duration * kSampleRate));
     AudioBuffer audio;
     std::string error;
-    REQUIRE(mix_soundtrack(*shot, {}, samples, audio, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {}, samples, audio, error));
     CHECK(audio.left.size() == samples);
     CHECK(audio.right.size() == samples);
 
@@ -174,7 +174,7 @@ TEST_SUITE("sound") {
     CHECK(rail_seen);
 
     AudioBuffer again;
-    REQUIRE(mix_soundtrack(*shot, {}, samples, again, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {}, samples, again, error));
     CHECK(again.left == audio.left);
     CHECK(again.right == audio.right);
   }

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "music_bed.h"
-#include "shot.h"
 #include "sound_mix.h"
 
 namespace bsim {
@@ -19,7 +18,7 @@ constexpr float kCeiling = 0.891f;
 
 }  // namespace
 
-bool mix_soundtrack(const Shot& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
+bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
                     std::string& error) {
   out.sample_rate = kSampleRate;
   if (options.music_path.empty()) {

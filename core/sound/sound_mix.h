@@ -7,11 +7,17 @@
 #include "camera_script.h"
 #include "physics_params.h"
 #include "sound_synth.h"
-#include "soundtrack.h"
+#include "audio_buffer.h"
 
 namespace bsim {
 
-struct Shot;
+/// What the sound track is made from: the shot's events, where they happen, and the camera that
+/// hears them (all must outlive it).
+struct SoundSource {
+  const Scene& scene;
+  const Timeline& timeline;
+  const CameraScript& camera;
+};
 
 struct SoundCue {
   SoundKind kind = SoundKind::ball_ball;
@@ -26,7 +32,7 @@ struct SoundCue {
 double view_position(const CameraPose& camera, const Vec3& point, double fov_deg);
 
 /// The sound cues of a shot, in time order (events first, then pocket landings).
-std::vector<SoundCue> sound_cues(const Shot& shot);
+std::vector<SoundCue> sound_cues(const SoundSource& shot);
 
 /// Adds every cue's sound, starting `lead` seconds before its time, into `out` (whose channels
 /// already have their length); sounds that would start before 0 lose their head, past the end their tail.

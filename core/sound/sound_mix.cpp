@@ -4,8 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "constants.h"
-#include "shot.h"
+#include "camera_interpolation.h"
 
 namespace bsim {
 
@@ -28,8 +27,8 @@ double landing_time(const Timeline& timeline, const PocketDrop& drop) {
   return drop.time;
 }
 
-double pan_of(const Shot& shot, double t, const Vec3& where) {
-  return kPanWidth * view_position(shot.camera->pose(t), where, kCameraFovDeg);
+double pan_of(const SoundSource& shot, double t, const Vec3& where) {
+  return kPanWidth * view_position(shot.camera.pose(t), where, kCameraFovDeg);
 }
 
 }  // namespace
@@ -48,7 +47,7 @@ double view_position(const CameraPose& camera, const Vec3& point, double fov_deg
   return std::clamp(angle / half, -1.0, 1.0);
 }
 
-std::vector<SoundCue> sound_cues(const Shot& shot) {
+std::vector<SoundCue> sound_cues(const SoundSource& shot) {
   std::vector<SoundCue> cues;
   for (const Event& e : shot.timeline.events()) {
     SoundKind kind;

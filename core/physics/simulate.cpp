@@ -6,7 +6,7 @@
 #include <queue>
 #include <tuple>
 
-#include "constants.h"
+#include "timeline.h"
 #include "detect.h"
 #include "motion.h"
 #include "pocket_fall.h"

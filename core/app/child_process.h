@@ -1,6 +1,7 @@
 #pragma once
-// Running POV-Ray and ffmpeg: finding them, starting them with their output in a log file,
-// and Ctrl-C handling that lets the exporter stop its children and clean up before it dies.
+// The one way both programs run POV-Ray and ffmpeg: finding them, starting them with their output in
+// a log file (and, for a stream of frames, a pipe to their standard input), waiting for them, and
+// Ctrl-C handling that lets a run stop its children and clean up before it dies.
 #include <sys/types.h>
 
 #include <string>
@@ -11,10 +12,11 @@ namespace bsim {
 /// Full path of `name` on PATH (or `name` itself when it holds a '/' and is executable); empty if none.
 std::string find_program(const std::string& name);
 
-/// Starts argv (argv[0] a full path) in directory `cwd`, stdin from /dev/null, stdout and stderr
-/// into `log_path`. Returns the child's pid, or -1 with `error` set.
+/// Starts argv (argv[0] a full path) in directory `cwd`, stdout and stderr into `log_path`, stdin from
+/// /dev/null or, when `stdin_pipe` is given, from a pipe whose writing end (close-on-exec) is stored
+/// there. Returns the child's pid, or -1 with `error` set.
 pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd, const std::string& log_path,
-                    std::string& error);
+                    std::string& error, int* stdin_pipe = nullptr);
 
 /// Stops a child (SIGTERM, then SIGKILL if it lingers for 5 s) and reaps it.
 void stop_process(pid_t pid);
@@ -22,6 +24,9 @@ void stop_process(pid_t pid);
 /// Waits for a child to finish. Returns its pid and sets `success` (exit status 0), or returns -1
 /// when the wait was cut short by Ctrl-C (InterruptGuard::interrupted()).
 pid_t wait_any(bool& success);
+
+/// Waits for one child; true when it exited with status 0.
+bool wait_for(pid_t pid);
 
 /// The last error POV-Ray or ffmpeg wrote: its line naming an error with the lines continuing it,
 /// else the last non-empty line of the log.

@@ -5,16 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "constants.h"
+#include "audio_buffer.h"
+#include "sound_mix.h"
 
 namespace bsim {
-
-struct Shot;
-
-struct AudioBuffer {
-  int sample_rate = kSampleRate;
-  std::vector<float> left, right;  ///< [-1, 1]
-};
 
 struct SoundOptions {
   double lead = 0.0;       ///< s, sounds play this much before their event (default chosen in export)
@@ -23,7 +17,7 @@ struct SoundOptions {
 
 /// Mixes the effects (and music) into exactly `sample_count` samples per channel.
 /// Returns false with `error` set when the music file cannot be read.
-bool mix_soundtrack(const Shot& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
+bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
                     std::string& error);
 
 /// Writes 16-bit PCM stereo WAV. Returns false with `error` set on failure.

@@ -49,6 +49,9 @@ class Timeline {
   std::vector<PocketDrop> drops_;
 };
 
+/// s from the start event to the cue strike: room for the stick's approach and two practice strokes.
+inline constexpr double kCueLeadTime = 2.5;
+
 /// Runs the shot: start event, the cue strike at kCueLeadTime, every collision, the end event.
 Timeline simulate(const Scene& scene);
 

@@ -42,20 +42,29 @@ std::string find_program(const std::string& name) {
 }
 
 pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd, const std::string& log_path,
-                    std::string& error) {
+                    std::string& error, int* stdin_pipe) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  int fds[2] = {-1, -1};
+  if (stdin_pipe && pipe2(fds, O_CLOEXEC) != 0) {
+    error = std::string("cannot start ") + argv.front() + ": no pipe: " + std::strerror(errno);
+    return -1;
+  }
   const pid_t pid = fork();
   if (pid < 0) {
     error = std::string("cannot start ") + argv.front() + ": " + std::strerror(errno);
+    if (stdin_pipe) {
+      close(fds[0]);
+      close(fds[1]);
+    }
     return -1;
   }
   if (pid == 0) {
     // In the child: only async-signal-safe calls until exec.
     signal(SIGINT, SIG_DFL);
     signal(SIGTERM, SIG_DFL);
-    const int in = open("/dev/null", O_RDONLY);
+    const int in = stdin_pipe ? fds[0] : open("/dev/null", O_RDONLY);
     const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in < 0 || log < 0 || chdir(cwd.c_str()) != 0) _exit(127);
     dup2(in, 0);
@@ -65,6 +74,10 @@ pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd
     close(log);
     execv(args[0], args.data());
     _exit(127);
+  }
+  if (stdin_pipe) {
+    close(fds[0]);
+    *stdin_pipe = fds[1];
   }
   return pid;
 }
@@ -94,6 +107,13 @@ pid_t wait_any(bool& success) {
     }
     if (errno != EINTR) return -1;
   }
+}
+
+bool wait_for(pid_t pid) {
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 std::string error_from_log(const std::string& log_text) {

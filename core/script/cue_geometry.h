@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "camera_script.h"
-#include "cue_script.h"
+#include "cue_pose.h"
 #include "scene.h"
 
 namespace bsim {

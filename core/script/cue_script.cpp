@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "camera_interpolation.h"
-#include "constants.h"
+#include "cue_pose.h"
 #include "cue_geometry.h"
 
 namespace bsim {

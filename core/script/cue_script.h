@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "camera_script.h"
+#include "cue_pose.h"
 #include "scene.h"
 #include "timeline.h"
 
@@ -14,12 +15,6 @@ struct CuePhaseSpan {
   CuePhase phase = CuePhase::approach;
   double begin = 0;  ///< s
   double end = 0;    ///< s
-};
-
-struct CuePose {
-  Vec3 tip{0, 0, 0};   ///< m, centre of the tip's face
-  Vec3 axis{-1, 0, 0}; ///< unit vector from the tip toward the butt
-  bool visible = false;
 };
 
 class CueScript {

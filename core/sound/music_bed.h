@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string>
 
-#include "soundtrack.h"
+#include "audio_buffer.h"
 
 namespace bsim {
 

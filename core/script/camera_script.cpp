@@ -6,7 +6,6 @@
 #include <string>
 
 #include "camera_interpolation.h"
-#include "constants.h"
 
 namespace bsim {
 

@@ -5,6 +5,9 @@
 
 namespace bsim {
 
+/// Horizontal field of view of the scene camera in degrees, the same for POV-Ray and the GL preview.
+inline constexpr double kCameraFovDeg = 55.0;
+
 /// The seed's C1 ease: 2u^2 below one half, 1 - 2(u-1)^2 above; 0 at 0, 1 at 1, flat at both ends.
 double smooth(double u);
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "camera_interpolation.h"
-#include "constants.h"
+#include "cue_pose.h"
 
 namespace bsim {
 
