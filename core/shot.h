@@ -15,7 +15,15 @@
 
 namespace bsim {
 
+/// The scripts point into the scene and timeline beside them, so a Shot stays where it was built:
+/// it can be neither copied nor moved (hold it by the unique_ptr load_shot returns).
 struct Shot {
+  Shot() = default;
+  Shot(const Shot&) = delete;
+  Shot& operator=(const Shot&) = delete;
+  Shot(Shot&&) = delete;
+  Shot& operator=(Shot&&) = delete;
+
   Scene scene;
   Timeline timeline;
   std::optional<CameraScript> camera;  ///< always set in a loaded shot

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <fstream>
 #include <set>
+#include <memory>
 #include <sstream>
 
 #include "bench/random_scenes.h"
@@ -18,10 +19,10 @@ using namespace bsim;
 
 namespace {
 
-Shot shot_of(Scene scene) {
-  Shot shot;
-  shot.scene = std::move(scene);
-  shot.timeline = simulate(shot.scene);
+std::unique_ptr<Shot> shot_of(Scene scene) {
+  auto shot = std::make_unique<Shot>();
+  shot->scene = std::move(scene);
+  shot->timeline = simulate(shot->scene);
   return shot;
 }
 
@@ -66,7 +67,7 @@ TEST_SUITE("events.json") {
         "    {\"ball\": 0, \"number\": 7, \"position\": [0.1, -0.2, 0.028575], \"pocketed\": false}\n"
         "  ]\n"
         "}\n";
-    CHECK(events_json(shot_of(scene)) == expected);
+    CHECK(events_json(*shot_of(scene)) == expected);
   }
 
   TEST_CASE("every event type, pocket drops and final states are written with numbers that read back exactly") {
@@ -75,7 +76,8 @@ TEST_SUITE("events.json") {
     scene.balls.push_back(scenes::ball_at(0, 0.6, 0.2, scene.physics, Vec3(2.0, 1.15, 0)));
     scene.balls.push_back(scenes::ball_at(5, 0.95, 0.4, scene.physics));
     scene.balls.push_back(scenes::ball_at(12, -0.8, -0.3, scene.physics, Vec3(-1.0, 0, 0)));
-    const Shot shot = shot_of(scene);
+    const std::unique_ptr<Shot> owner = shot_of(scene);
+    const Shot& shot = *owner;
     const std::string json = events_json(shot);
     bool rail = false, ball_ball = false;
     for (const Event& e : shot.timeline.events()) {
@@ -105,7 +107,8 @@ TEST_SUITE("events.json") {
   }
 
   TEST_CASE("trajectory.csv: one row per ball per frame from 0 to the duration, exact states, named motions") {
-    const Shot shot = shot_of(scenes::two_ball_shot());
+    const std::unique_ptr<Shot> owner = shot_of(scenes::two_ball_shot());
+    const Shot& shot = *owner;
     const int fps = 24;
     std::ostringstream out;
     write_trajectory_csv(shot, fps, out);
