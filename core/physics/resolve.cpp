@@ -38,12 +38,12 @@ double closing_speed(const BallState& a, const BallState& b) {
 }
 
 std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const BallState& b, const PhysicsParams& params) {
-  BallState ra = a, rb = b;
   const double vn = closing_speed(a, b);
-  if (!(vn > 0)) return {ra, rb};
-  const double m = params.ball_mass, R = params.ball_radius;
+  if (!(vn > 0)) return {a, b};
+  BallState ra = a, rb = b;
+  const double m = params.ball_mass;
   const Vec3 n = horizontal_unit(b.position - a.position);
-  const Vec3 arm_a = R * n, arm_b = -R * n;
+  const Vec3 arm_a = params.ball_radius * n, arm_b = -params.ball_radius * n;
 
   // Normal impulse on b: equal masses share the closing momentum, scaled by restitution.
   const double jn = 0.5 * m * (1 + params.e_ball) * vn;
@@ -66,11 +66,11 @@ std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const Ball
 }
 
 std::pair<BallState, BallState> resolve_push(const BallState& a, const BallState& b, const PhysicsParams& params) {
-  BallState ra = a, rb = b;
   const double vn = closing_speed(a, b);
-  if (!(vn > 0)) return {ra, rb};
+  if (!(vn > 0)) return {a, b};
   const double m = params.ball_mass, R = params.ball_radius;
   const Vec3 n = horizontal_unit(b.position - a.position);
+  BallState ra = a, rb = b;
   auto rolls = [](const BallState& s) { return s.motion != Motion::sliding; };
   auto inverse_mass = [&](const BallState& s) { return rolls(s) ? 5.0 / (7.0 * m) : 1.0 / m; };
   const double j = vn / (inverse_mass(a) + inverse_mass(b));
