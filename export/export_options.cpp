@@ -33,32 +33,21 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
   const std::string& name = reader.word();
   auto value = [&]() { return reader.value(message); };
   auto bad = [&](const std::string& text, const std::string& expected) {
-    message = "bad value '" + text + "' for " + name + ": expected " + expected;
+    message = bad_value_message(name, text, expected);
     return false;
   };
+  switch (apply_shared_option(reader, o, message)) {  // --fps, --size, --strict
+    case SharedOption::applied: return true;
+    case SharedOption::bad: return false;
+    case SharedOption::not_shared: break;
+  }
   if (name == "--events-only") return reader.no_value(message) && (o.events_only = true);
   if (name == "--no-render") return reader.no_value(message) && (o.no_render = true);
-  if (name == "--strict") return reader.no_value(message) && (o.strict = true);
   if (name == "-o" || name == "--output") {
     const auto v = value();
     if (!v) return false;
     if (v->empty()) return bad(*v, "a directory");
     o.out_dir = *v;
-    return true;
-  }
-  if (name == "--fps") {
-    const auto v = value();
-    if (!v) return false;
-    const auto fps = parse_int_option(*v, 1, kMaxFps);
-    if (!fps) return bad(*v, "a whole number of frames per second from 1 to " + std::to_string(kMaxFps));
-    o.fps = *fps;
-    return true;
-  }
-  if (name == "--size") {
-    const auto v = value();
-    if (!v) return false;
-    if (!parse_size_option(*v, o.width, o.height))
-      return bad(*v, "WIDTHxHEIGHT in pixels, e.g. 1280x720, each from 1 to " + std::to_string(kMaxImageSide));
     return true;
   }
   if (name == "--quality") {
@@ -92,7 +81,7 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
     o.music_path = *v;
     return true;
   }
-  message = "unknown option '" + name + "' (see --help)";
+  message = unknown_option_message(name);
   return false;
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "command_line.h"
+
 namespace bsim {
 
 enum class Quality { draft, final };
@@ -13,19 +15,16 @@ inline constexpr double kDefaultAudioLead = 0.005;
 inline constexpr double kMaxAudioLead = 1.0;  ///< s
 inline constexpr int kMaxJobs = 1024;
 
-struct ExportOptions {
+/// fps, width, height and strict are the options both programs share (SharedOptions).
+struct ExportOptions : SharedOptions {
   std::optional<std::string> scene_path;  ///< none: the built-in break
   std::optional<std::string> out_dir;     ///< none: out/<scene name>
   bool events_only = false;
   bool no_render = false;
-  int fps = 30;
-  int width = 1280;
-  int height = 720;
   Quality quality = Quality::final;
   int jobs = 0;                 ///< 0: one per core
   double audio_lead = 0.0;      ///< s; set to the documented default by the parser
   std::string music_path;
-  bool strict = false;
 };
 
 enum class CommandLineOutcome { run, exit_success, exit_usage };

@@ -23,13 +23,14 @@ std::string pov_matrix(const Vec3& x, const Vec3& y, const Vec3& z, const Vec3& 
   return text + ">";
 }
 
-/// POV-Ray cannot orient a camera looking along its sky vector (z); nudge a straight-down view so
-/// the picture's up is the table's +y, and keep the look-at point apart from the camera.
+/// POV-Ray cannot orient a camera looking along its sky vector (z). A camera on its look point (closer
+/// than the files' micrometre) is the straight-down camera, 1 m over its look point; a view that the
+/// core counts as vertical (picture_up() is +y) is turned a hair towards +y so that POV-Ray puts the
+/// table's +y at the top of its picture, as the preview does.
 void steady_camera(Vec3& location, Vec3& look_at) {
-  Vec3 d = look_at - location;
-  if (d.norm() < 1e-6) look_at = location + Vec3(1e-3, 0, -1);
-  d = look_at - location;
-  if (std::hypot(d.x(), d.y()) < 1e-6 * d.norm()) look_at += Vec3(0, 1e-4 * d.norm(), 0);
+  if ((look_at - location).norm() < 1e-6) look_at = location + straight_down();
+  const Vec3 d = look_at - location;
+  if (picture_up(d) == Vec3::UnitY()) look_at = location + d.norm() * Vec3(0, 1e-4, d.z() > 0 ? 1 : -1);
 }
 
 }  // namespace

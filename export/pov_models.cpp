@@ -1,6 +1,8 @@
 // The fixed POV-Ray models of the shared include. They read the numbers write_pov_include puts
-// before them (BallR, RailA/RailB/RailH, PocketC/PocketR/PocketOut/PocketStretch, NoseMin/NoseMax,
-// PlayHull, RailTopZ, Final). Every CSG cutter overshoots the faces it cuts by Eps: coincident
+// before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/PocketOut/PocketStretch,
+// NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW, CushionUndercut,
+// CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX) and the balls'
+// colours (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident
 // faces make POV-Ray pick either surface per ray, which shows as speckled seams.
 #include "pov_table.h"
 
@@ -15,12 +17,9 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 #default { finish { ambient 0.02 } }
 
 #declare Eps = 0.001;
-#declare CushionW = 0.05;     // nose to the wood
-#declare RailW = 0.125;       // width of the wooden rail's top
 #declare ApronDepth = 0.23;   // the rail's face below the bed
 #declare SlateDepth = 0.028;
 #declare LinerT = 0.008;      // pocket liner thickness
-#declare FloorZ = -0.76;
 #declare Far = <0, 0, -100>;  // where a placeholder keeps an empty CSG valid
 
 // ---- materials
@@ -52,12 +51,12 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   #local D = vnormalize(B - A);
   #local L = vlength(B - A);
   #local N = <-D.v, D.u>;
-  #local Top = RailTopZ - 0.0012;
+  #local Top = CushionTopZ;
   prism {
     linear_sweep linear_spline -CushionW, L + CushionW, 11,
-    <0.0135, -Eps>, <0.0055, H * 0.52>, <0.0012, H * 0.85>, <0.0, H>, <0.0006, H + 0.0016>,
+    <CushionUndercut, -Eps>, <0.0055, H * 0.52>, <0.0012, H * 0.85>, <0.0, H>, <0.0006, H + 0.0016>,
     <0.0035, H + 0.0034>, <0.015, H + 0.35 * (Top - H)>, <CushionW, Top>,
-    <CushionW + 0.012, Top>, <CushionW + 0.012, -Eps>, <0.0135, -Eps>
+    <CushionW + 0.012, Top>, <CushionW + 0.012, -Eps>, <CushionUndercut, -Eps>
     matrix <N.u, N.v, 0, D.u, D.v, 0, 0, 0, 1, A.u, A.v, 0>
   }
 #end
@@ -155,22 +154,19 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   texture { T_Liner }
 }
 
-// ---- diamond sights: inlaid in the rails' tops at eighths of the long sides, quarters of the short
-#macro SightAt(P)
-  cylinder { <P.u, P.v, RailTopZ - 0.002>, <P.u, P.v, RailTopZ + 0.0004>, 0.0055 }
+// ---- diamond sights: inlaid in the rails' tops where the table description puts them, the long
+// diagonal along the rail
+#macro SightAt(P, AlongX)
+  #local L = (AlongX ? SightLength : SightWidth) / 2;
+  #local W = (AlongX ? SightWidth : SightLength) / 2;
+  prism {
+    linear_sweep linear_spline -(RailTopZ + 0.0004), -(RailTopZ - 0.002), 5, <L, 0>, <0, W>, <-L, 0>, <0, -W>, <L, 0>
+    rotate -x * 90 translate <P.u, P.v, 0>
+  }
 #end
 #declare Sights = union {
-  #local SY = RailW * 0.55;
-  #for (K, 1, 7)
-    #if (K != 4)
-      #local X = NoseMin.u + (NoseMax.u - NoseMin.u) * K / 8;
-      SightAt(<X, InnerMax.v + SY>) SightAt(<X, InnerMin.v - SY>)
-    #end
-  #end
-  #for (K, 1, 3)
-    #local Y = NoseMin.v + (NoseMax.v - NoseMin.v) * K / 4;
-    SightAt(<InnerMax.u + SY, Y>) SightAt(<InnerMin.u - SY, Y>)
-  #end
+  sphere { Far, Eps }
+  #for (I, 0, SightCount - 1) SightAt(SightC[I], SightAlongX[I]) #end
   texture { T_Sight }
 }
 
@@ -200,13 +196,11 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   ambient 0.14 diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
   reflection { 0.03, 0.07 fresnel } conserve_energy
 }
-#declare BallWhite = srgb <0.96, 0.95, 0.90>;
-#declare BallColour = array[16] {
-  BallWhite,             srgb <0.98, 0.74, 0.02>, srgb <0.04, 0.16, 0.62>, srgb <0.80, 0.04, 0.04>,
-  srgb <0.30, 0.07, 0.48>, srgb <0.98, 0.38, 0.02>, srgb <0.03, 0.40, 0.16>, srgb <0.45, 0.05, 0.07>,
-  srgb <0.02, 0.02, 0.02>, srgb <0.98, 0.74, 0.02>, srgb <0.04, 0.16, 0.62>, srgb <0.80, 0.04, 0.04>,
-  srgb <0.30, 0.07, 0.48>, srgb <0.98, 0.38, 0.02>, srgb <0.03, 0.40, 0.16>, srgb <0.45, 0.05, 0.07>
-}
+#declare BallWhite = srgb BallSrgb[0];
+#declare BallColour = array[16]
+#for (N, 0, 15)
+  #declare BallColour[N] = srgb BallSrgb[N];
+#end
 // The number on a white disc at each end of the ball's z axis; the stripe is the band |y| < 0.56 R.
 #macro NumberDisc(N, Body)
   #local G = text { ttf "cyrvetic.ttf" str(N, 0, 0) 1, 0 }

@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "ball_look.h"
 #include "pov_format.h"
+#include "table.h"
 
 namespace bsim {
 
@@ -77,6 +79,39 @@ void write_array(std::ostream& out, const char* name, const std::vector<T>& item
   out << " }\n";
 }
 
+std::string pov_srgb(const SrgbColor& c) {
+  return "<" + pov_number(c.r / 255.0) + ", " + pov_number(c.g / 255.0) + ", " + pov_number(c.b / 255.0) + ">";
+}
+
+/// The table description's numbers the models are built from: the same as the GL preview's.
+void write_table_description(const TableLayout& layout, std::ostream& out) {
+  const TableSpec& spec = kStandardTable;
+  out << "\n// ---- from the table description (m)\n";
+  out << "#declare CushionW = " << pov_number(spec.cushion.width) << ";  // the cushion's top, nose to the wood\n";
+  out << "#declare CushionUndercut = " << pov_number(spec.cushion.undercut)
+      << ";  // the cushion's foot on the bed, behind the nose\n";
+  out << "#declare CushionTopZ = " << pov_number(layout.cushion_top) << ";  // the cushions' top where it meets the wood\n";
+  out << "#declare RailW = " << pov_number(spec.rail.width) << ";  // width of the wooden rail's top\n";
+  out << "#declare RailTopZ = " << pov_number(layout.rail_top) << ";  // the wood's top, a little above the noses\n";
+  out << "#declare FloorZ = " << pov_number(-spec.bed_height) << ";\n";
+  out << "#declare SightLength = " << pov_number(spec.sights.length) << ";  // the diamond's diagonal along the rail\n";
+  out << "#declare SightWidth = " << pov_number(spec.sights.width) << ";  // and across it\n";
+  out << "#declare SightCount = " << layout.sights.size() << ";\n";
+  if (!layout.sights.empty()) {
+    write_array(out, "SightC", layout.sights, [](const SightPlace& s) { return pov_vector2(s.centre.x(), s.centre.y()); });
+    write_array(out, "SightAlongX", layout.sights, [](const SightPlace& s) { return s.along_x ? "1" : "0"; });
+  }
+}
+
+/// The standard ball colours, the same as the GL preview's. sRGB numbers, not colours: POV-Ray reads
+/// `srgb` only after assumed_gamma, which the models set.
+void write_ball_colours(std::ostream& out) {
+  out << "\n// ---- the balls' colours (sRGB): 0 the cue ball's ivory, 1 to 8 solid, 9 to 15 striped on ivory\n";
+  out << "#declare BallSrgb = array[16] {";
+  for (int n = 0; n < 16; ++n) out << (n ? (n % 4 ? ", " : ",\n  ") : "\n  ") << pov_srgb(ball_srgb(n));
+  out << "\n}\n";
+}
+
 }  // namespace
 
 void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
@@ -87,26 +122,15 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
   out << "#declare BallR = " << pov_number(scene.physics.ball_radius) << ";\n";
 
   std::vector<Point2> ends;
-  double nose_top = 0.0;
-  Point2 lo{1e9, 1e9}, hi{-1e9, -1e9};
-  for (const Rail& rail : scene.rails) {
-    for (const Vec3& p : {rail.a, rail.b}) {
-      ends.push_back({p.x(), p.y()});
-      lo = {std::min(lo.x, p.x()), std::min(lo.y, p.y())};
-      hi = {std::max(hi.x, p.x()), std::max(hi.y, p.y())};
-    }
-    nose_top = std::max({nose_top, rail.a.z(), rail.b.z()});
-  }
-  if (ends.empty()) {  // no cushions at all: a bare bed around the pockets
-    lo = {-1.27, -0.635};
-    hi = {1.27, 0.635};
-    nose_top = kStandardNoseHeight;
-  }
-  const Point2 middle{(lo.x + hi.x) / 2, (lo.y + hi.y) / 2};
+  for (const Rail& rail : scene.rails)
+    for (const Vec3& p : {rail.a, rail.b}) ends.push_back({p.x(), p.y()});
+  // Without cushions the layout is the standard bed: a bare bed around the pockets.
+  const TableLayout layout = table_layout(scene);
+  const TableRect& noses = layout.noses;
+  const Point2 middle{(noses.x0 + noses.x1) / 2, (noses.y0 + noses.y1) / 2};
 
-  out << "#declare RailTopZ = " << pov_number(nose_top + 0.0107) << ";  // the wood's top, a little above the noses\n";
-  out << "#declare NoseMin = " << pov_vector2(lo.x, lo.y) << ";\n";
-  out << "#declare NoseMax = " << pov_vector2(hi.x, hi.y) << ";\n";
+  out << "#declare NoseMin = " << pov_vector2(noses.x0, noses.y0) << ";\n";
+  out << "#declare NoseMax = " << pov_vector2(noses.x1, noses.y1) << ";\n";
   out << "#declare RailCount = " << scene.rails.size() << ";\n";
   if (!scene.rails.empty()) {
     write_array(out, "RailA", scene.rails, [](const Rail& r) { return pov_vector2(r.a.x(), r.a.y()); });
@@ -127,6 +151,8 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
   if (hull.size() >= 3) {
     write_array(out, "PlayHull", hull, [](const Point2& p) { return pov_vector2(p.x, p.y); });
   }
+  write_table_description(layout, out);
+  write_ball_colours(out);
   out << "\n" << pov_models_text();
 }
 

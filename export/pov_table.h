@@ -13,7 +13,8 @@ namespace bsim {
 inline constexpr std::string_view kPovIncludeName = "billiards.inc";
 
 /// Writes the include: first the scene's numbers (cushion nose lines, pockets, ball radius,
-/// quality), then the fixed models that build on them (pov_models_text()).
+/// quality), the table description's (table.h: cushion profile, wood, sights, floor) and the balls'
+/// colours (ball_look.h), then the fixed models that build on them (pov_models_text()).
 void write_pov_include(const Scene& scene, Quality quality, std::ostream& out);
 
 /// The fixed part of the include: materials, the table's CSG macros, balls, cue stick, room, lights.

@@ -12,23 +12,13 @@
 
 namespace bsim {
 
-Vec3 ball_ivory() { return srgb(240, 234, 214); }
+namespace {
+Vec3 linear(const SrgbColor& c) { return srgb(c.r, c.g, c.b); }
+}  // namespace
 
-Vec3 ball_color(int number) {
-  switch (number <= 8 ? number : number - 8) {
-    case 1: return srgb(250, 196, 18);
-    case 2: return srgb(18, 52, 170);
-    case 3: return srgb(206, 22, 22);
-    case 4: return srgb(86, 28, 130);
-    case 5: return srgb(248, 108, 16);
-    case 6: return srgb(10, 112, 56);
-    case 7: return srgb(122, 22, 24);
-    case 8: return srgb(14, 14, 16);
-    default: return ball_ivory();
-  }
-}
+Vec3 ball_ivory() { return linear(kBallIvory); }
 
-bool ball_striped(int number) { return number >= 9 && number <= 15; }
+Vec3 ball_color(int number) { return linear(ball_srgb(number)); }
 
 MeshData make_sphere_mesh(int slices, int stacks) {
   MeshData mesh;

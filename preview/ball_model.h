@@ -3,15 +3,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "ball_look.h"
 #include "mesh.h"
 
 namespace bsim {
 
-/// The standard pool colours (linear RGB): 1 yellow, 2 blue, 3 red, 4 purple, 5 orange, 6 green,
-/// 7 maroon, 8 black; 9-15 repeat 1-7 as stripes; 0 is the white cue ball.
+/// The core's standard pool colours (ball_look.h: ball_srgb) as linear RGB for the shaders; whether
+/// a ball is striped is ball_look.h's ball_striped().
 Vec3 ball_color(int number);
-bool ball_striped(int number);
-/// The ivory white of the cue ball, the stripes' ground and the number discs.
+/// The ivory white of the cue ball, the stripes' ground and the number discs (kBallIvory), linear.
 Vec3 ball_ivory();
 
 /// A unit sphere; its object-space position doubles as the ball-frame direction the shader paints by.

@@ -170,67 +170,86 @@ void draw_event_markers(ImDrawList& list, const OverlayFrame& f) {
   }
 }
 
-void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
-  if (!f.shot.camera) return;
-  const Scene& scene = f.shot.scene;
-  const OverlayPaths local = f.paths ? OverlayPaths{} : overlay_paths(f.shot);
-  const OverlayPaths& paths = f.paths ? *f.paths : local;
-  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-  const auto grow = [&](const Vec3& p, double margin) {
+namespace {
+
+// The camera map: the table and the camera's path seen from above, in a box at the view's top right.
+struct CameraMap {
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;  ///< m, the area shown
+  float pixels_per_m = 0;
+  float w = 0, h = 0;  ///< px, the area's size on screen
+  ImVec2 origin;       ///< px, its top left corner
+
+  void grow(const Vec3& p, double margin) {
     x0 = std::min(x0, p.x() - margin);
     x1 = std::max(x1, p.x() + margin);
     y0 = std::min(y0, p.y() - margin);
     y1 = std::max(y1, p.y() + margin);
-  };
-  for (const Rail& r : scene.rails) {
-    grow(r.a, 0.25);
-    grow(r.b, 0.25);
   }
-  for (const Pocket& p : scene.pockets) grow(p.center, 0.25);
-  for (const auto& e : paths.eyes) grow(e.where, 0.15);
-  if (x1 <= x0 || y1 <= y0) return;
-
-  const float scale = ui_scale(f);
-  const float margin = 10 * scale;
-  const float box_w = static_cast<float>(f.width) * 0.3f;
-  const float box_h = std::min(static_cast<float>(f.height) * 0.45f, box_w * static_cast<float>((y1 - y0) / (x1 - x0)));
-  const float pixels_per_m = std::min(box_w / static_cast<float>(x1 - x0), box_h / static_cast<float>(y1 - y0));
-  const float w = pixels_per_m * static_cast<float>(x1 - x0), h = pixels_per_m * static_cast<float>(y1 - y0);
-  const ImVec2 origin(static_cast<float>(f.left + f.width) - margin - w, static_cast<float>(f.top) + margin);
-  const auto map = [&](const Vec3& p) {
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  ImVec2 map(const Vec3& p) const {
     return ImVec2(origin.x + static_cast<float>(p.x() - x0) * pixels_per_m,
                   origin.y + static_cast<float>(y1 - p.y()) * pixels_per_m);
-  };
-  list.AddRectFilled(ImVec2(origin.x - 4, origin.y - 4), ImVec2(origin.x + w + 4, origin.y + h + 4),
-                     IM_COL32(14, 16, 20, 215), 6.f);
+  }
+};
 
-  // The playing surface between the cushions, the cushions, the pockets, the balls now.
+// The area the map shows: the table with some room around it, and everywhere the camera goes.
+CameraMap camera_map_area(const Scene& scene, const OverlayPaths& paths) {
+  CameraMap m;
   for (const Rail& r : scene.rails) {
-    list.AddLine(map(r.a), map(r.b), IM_COL32(40, 150, 90, 255), 3.f * scale);
+    m.grow(r.a, 0.25);
+    m.grow(r.b, 0.25);
+  }
+  for (const Pocket& p : scene.pockets) m.grow(p.center, 0.25);
+  for (const auto& e : paths.eyes) m.grow(e.where, 0.15);
+  return m;
+}
+
+// Fits the area into a box at most 30% of the view wide and 45% high, in the top right corner.
+void place_camera_map(CameraMap& m, const OverlayFrame& f, float scale) {
+  const float margin = 10 * scale;
+  const float box_w = static_cast<float>(f.width) * 0.3f;
+  const float box_h =
+      std::min(static_cast<float>(f.height) * 0.45f, box_w * static_cast<float>((m.y1 - m.y0) / (m.x1 - m.x0)));
+  m.pixels_per_m = std::min(box_w / static_cast<float>(m.x1 - m.x0), box_h / static_cast<float>(m.y1 - m.y0));
+  m.w = m.pixels_per_m * static_cast<float>(m.x1 - m.x0);
+  m.h = m.pixels_per_m * static_cast<float>(m.y1 - m.y0);
+  m.origin = ImVec2(static_cast<float>(f.left + f.width) - margin - m.w, static_cast<float>(f.top) + margin);
+}
+
+// The playing surface between the cushions, the cushions, the pockets, the balls now.
+void draw_map_table(ImDrawList& list, const OverlayFrame& f, const CameraMap& m, float scale) {
+  const Scene& scene = f.shot.scene;
+  for (const Rail& r : scene.rails) {
+    list.AddLine(m.map(r.a), m.map(r.b), IM_COL32(40, 150, 90, 255), 3.f * scale);
   }
   for (const Pocket& p : scene.pockets)
-    list.AddCircleFilled(map(p.center), static_cast<float>(p.radius) * pixels_per_m, IM_COL32(0, 0, 0, 255), 20);
+    list.AddCircleFilled(m.map(p.center), static_cast<float>(p.radius) * m.pixels_per_m, IM_COL32(0, 0, 0, 255), 20);
   const std::vector<BallState> balls = f.shot.timeline.states(f.time);
-  const float ball_r = std::max(2.f, static_cast<float>(scene.physics.ball_radius) * pixels_per_m);
+  const float ball_r = std::max(2.f, static_cast<float>(scene.physics.ball_radius) * m.pixels_per_m);
   for (std::size_t i = 0; i < balls.size() && i < scene.balls.size(); ++i) {
     if (balls[i].motion == Motion::pocketed) continue;
-    list.AddCircleFilled(map(balls[i].position), ball_r, ball_ui_color(scene.balls[i].number), 12);
+    list.AddCircleFilled(m.map(balls[i].position), ball_r, ball_ui_color(scene.balls[i].number), 12);
   }
+}
 
-  // Path of the camera (bright up to now) and of what it looks at.
+// Path of the camera (bright up to now) and of what it looks at.
+void draw_map_camera_paths(ImDrawList& list, const OverlayFrame& f, const OverlayPaths& paths, const CameraMap& m,
+                           float scale) {
   std::vector<ImVec2> looked, past, future;
-  for (const auto& p : paths.targets) looked.push_back(map(p.where));
-  for (const auto& p : paths.eyes) (p.time <= f.time ? past : future).push_back(map(p.where));
+  for (const auto& p : paths.targets) looked.push_back(m.map(p.where));
+  for (const auto& p : paths.eyes) (p.time <= f.time ? past : future).push_back(m.map(p.where));
   if (!past.empty()) future.insert(future.begin(), past.back());
   list.AddPolyline(looked.data(), static_cast<int>(looked.size()), IM_COL32(110, 200, 255, 110), ImDrawFlags_None, 1.2f * scale);
   if (future.size() >= 2)
     list.AddPolyline(future.data(), static_cast<int>(future.size()), IM_COL32(255, 214, 90, 110), ImDrawFlags_None, 1.5f * scale);
   if (past.size() >= 2)
     list.AddPolyline(past.data(), static_cast<int>(past.size()), IM_COL32(255, 214, 90, 255), ImDrawFlags_None, 2.f * scale);
+}
 
-  // Where the camera is now, its horizontal field of view, and where it looks.
+// Where the camera is now, its horizontal field of view, and where it looks.
+void draw_map_camera_now(ImDrawList& list, const OverlayFrame& f, const CameraMap& m, float scale) {
   const CameraPose now = f.shot.camera->pose(f.time);
-  const ImVec2 eye = map(now.location), look = map(now.look_at);
+  const ImVec2 eye = m.map(now.location), look = m.map(now.look_at);
   Vec3 dir = now.look_at - now.location;
   dir.z() = 0;
   if (dir.norm() > 1e-6) {
@@ -240,15 +259,33 @@ void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
     for (double side : {-1.0, 1.0}) {
       const double c = std::cos(side * half), s = std::sin(side * half);
       const Vec3 edge(dir.x() * c - dir.y() * s, dir.x() * s + dir.y() * c, 0);
-      list.AddLine(eye, map(now.location + edge * reach), IM_COL32(255, 255, 255, 150), 1.2f * scale);
+      list.AddLine(eye, m.map(now.location + edge * reach), IM_COL32(255, 255, 255, 150), 1.2f * scale);
     }
   }
   list.AddLine(eye, look, IM_COL32(110, 200, 255, 220), 1.2f * scale);
   list.AddCircleFilled(look, 3.f * scale, IM_COL32(110, 200, 255, 255), 12);
   list.AddCircleFilled(eye, 4.5f * scale, IM_COL32(255, 214, 90, 255), 16);
   list.AddCircle(eye, 4.5f * scale, IM_COL32(0, 0, 0, 255), 16, 1.f);
-  text_with_shadow(list, f.fonts.small, f.fonts.small_size, ImVec2(origin.x + 2, origin.y + h - f.fonts.small_size - 1),
-                   IM_COL32(220, 220, 220, 230), "camera from above");
+}
+
+}  // namespace
+
+void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
+  if (!f.shot.camera) return;
+  const OverlayPaths local = f.paths ? OverlayPaths{} : overlay_paths(f.shot);
+  const OverlayPaths& paths = f.paths ? *f.paths : local;
+  CameraMap m = camera_map_area(f.shot.scene, paths);
+  if (m.empty()) return;
+  const float scale = ui_scale(f);
+  place_camera_map(m, f, scale);
+  list.AddRectFilled(ImVec2(m.origin.x - 4, m.origin.y - 4), ImVec2(m.origin.x + m.w + 4, m.origin.y + m.h + 4),
+                     IM_COL32(14, 16, 20, 215), 6.f);
+  draw_map_table(list, f, m, scale);
+  draw_map_camera_paths(list, f, paths, m, scale);
+  draw_map_camera_now(list, f, m, scale);
+  text_with_shadow(list, f.fonts.small, f.fonts.small_size,
+                   ImVec2(m.origin.x + 2, m.origin.y + m.h - f.fonts.small_size - 1), IM_COL32(220, 220, 220, 230),
+                   "camera from above");
 }
 
 void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
@@ -281,9 +318,7 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
   draw_projected_path(list, project, path, IM_COL32(255, 214, 90, 150), 1.5f);
 
   const ViewCamera scripted = scripted_view(f.shot, f.time);
-  Vec3 forward = scripted.target - scripted.eye;
-  if (forward.norm() < 1e-9) return;
-  forward.normalize();
+  const Vec3 forward = view_direction(scripted.eye, scripted.target);
   const Vec3 right = forward.cross(view_up(scripted)).normalized();
   const Vec3 up = right.cross(forward);
   const double depth = 0.35;  // m, how far the drawn frustum reaches

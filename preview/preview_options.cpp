@@ -62,16 +62,19 @@ bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
 bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
   const std::string& name = reader.word();
   auto bad = [&](const std::string& text, const std::string& expected) {
-    message = "bad value '" + text + "' for " + name + ": expected " + expected;
+    message = bad_value_message(name, text, expected);
     return false;
   };
+  switch (apply_shared_option(reader, o, message)) {  // --fps, --size, --strict
+    case SharedOption::applied: return true;
+    case SharedOption::bad: return false;
+    case SharedOption::not_shared: break;
+  }
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  if (name == "--strict") return reader.no_value(message) && (o.strict = true);
-  static constexpr std::string_view kWithValue[] = {"--at",    "-o",          "--output",     "--movie",
-                                                    "--size",  "--fps",       "--overlay",    "--quit-after",
+  static constexpr std::string_view kWithValue[] = {"--at", "-o", "--output", "--movie", "--overlay", "--quit-after",
                                                     "--screenshot"};
   if (std::find(std::begin(kWithValue), std::end(kWithValue), name) == std::end(kWithValue)) {
-    message = "unknown option '" + name + "' (see --help)";
+    message = unknown_option_message(name);
     return false;
   }
   const auto v = reader.value(message);
@@ -86,14 +89,6 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
   } else if (name == "--movie") {
     if (v->empty()) return bad(*v, "a file");
     o.movie = *v;
-  } else if (name == "--size") {
-    if (!parse_size_option(*v, o.width, o.height))
-      return bad(*v, "WIDTHxHEIGHT in pixels, e.g. 1280x720, each from 1 to " + std::to_string(kMaxImageSide));
-    o.size_given = true;
-  } else if (name == "--fps") {
-    const auto fps = parse_int_option(*v, 1, kMaxFps);
-    if (!fps) return bad(*v, "a whole number of frames per second from 1 to " + std::to_string(kMaxFps));
-    o.fps = *fps;
   } else if (name == "--overlay") {
     if (!parse_overlays(*v, o.overlays)) return bad(*v, "a comma-separated list of paths, events, camera");
   } else if (name == "--quit-after") {

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "command_line.h"
+
 namespace bsim {
 
 /// What the user asked to see: a time in seconds or the instant of event N.
@@ -18,18 +20,14 @@ struct PreviewOverlays {
   bool camera = false;  ///< the camera's own path seen from above
 };
 
-struct PreviewOptions {
+/// fps, width, height, size_given and strict are the options both programs share (SharedOptions).
+struct PreviewOptions : SharedOptions {
   std::optional<std::string> scene_path;  ///< none: the built-in break
   std::optional<std::string> output;      ///< -o FILE (.png for --at/--timeline, .mp4 for --movie)
   std::optional<TimeSpec> at;             ///< --at SECONDS | event:N
   bool timeline = false;                  ///< --timeline
   std::optional<std::string> movie;       ///< --movie FILE.mp4 (the animatic)
-  int width = 1280;
-  int height = 720;
-  bool size_given = false;
-  int fps = 30;
   PreviewOverlays overlays;
-  bool strict = false;
   double quit_after = 0;  ///< s; > 0 closes the interactive window by itself (smoke tests)
   std::optional<std::string> screenshot;  ///< interactive: write the last frame here on quit
 };

@@ -91,6 +91,16 @@ struct SceneRenderer::Impl {
     current = &programs[static_cast<int>(m)];
     glUseProgram(current->id);
   }
+
+  // The steps of SceneRenderer::draw.
+  void begin_frame(int width, int height, int x, int y);
+  void set_camera(const ViewCamera& camera, double aspect);
+  void draw_table();
+  void mark_pocket_holes();
+  void draw_balls(const Scene& scene, const std::vector<BallState>& balls);
+  void draw_cue(const CuePose& pose);
+  void draw_shadows(const std::vector<BallState>& balls, double radius);
+  void finish_frame(int width, int height, int x, int y);
 };
 
 SceneRenderer::SceneRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -143,12 +153,13 @@ void SceneRenderer::set_scene(const Scene& scene) {
   impl_->top_holes.upload(table.top_holes);
 }
 
-void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y) {
-  Impl& r = *impl_;
-  r.ensure_target(width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, r.fbo);
+// Binds the target (the multisampled buffer, or the window's part of framebuffer 0), sets the state
+// every frame starts from and clears.
+void SceneRenderer::Impl::begin_frame(int width, int height, int x, int y) {
+  ensure_target(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glDisable(GL_SCISSOR_TEST);
-  if (r.fbo) {
+  if (fbo) {
     glViewport(0, 0, width, height);
   } else {
     glViewport(x, y, width, height);
@@ -165,102 +176,130 @@ void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width,
   glClearColor(0.018f, 0.016f, 0.02f, 1.f);
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
 
-  const double aspect = static_cast<double>(width) / std::max(height, 1);
-  const Eigen::Matrix4f view_projection = projection_matrix(frame.camera, aspect) * view_matrix(frame.camera);
-  for (const Program& p : r.programs) {
+// Gives every program the camera, and binds the number atlas they sample.
+void SceneRenderer::Impl::set_camera(const ViewCamera& camera, double aspect) {
+  const Eigen::Matrix4f view_projection = projection_matrix(camera, aspect) * view_matrix(camera);
+  for (const Program& p : programs) {
     glUseProgram(p.id);
     glUniformMatrix4fv(p.view_projection, 1, GL_FALSE, view_projection.data());
-    glUniform3f(p.eye, float(frame.camera.eye.x()), float(frame.camera.eye.y()), float(frame.camera.eye.z()));
+    glUniform3f(p.eye, float(camera.eye.x()), float(camera.eye.y()), float(camera.eye.z()));
     glUniform1i(p.numbers, 0);
   }
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, r.numbers);
+  glBindTexture(GL_TEXTURE_2D, numbers);
+}
 
-  // Pocket holes are cut with the stencil: the circles mark bit 1 (on the bed plane) and bit 2 (on the
-  // top plane) wherever they project, and each plane is drawn only outside its own circles. That is
-  // exact for a plane, and the pockets' insides then show through.
-  r.use(Material::flat);
-  r.set_model(Eigen::Matrix4f::Identity());
+void SceneRenderer::Impl::draw_table() {
+  mark_pocket_holes();
+  use(Material::table);
+  set_model(Eigen::Matrix4f::Identity());
+  glStencilFunc(GL_EQUAL, 0, 1);
+  cloth.draw();
+  glStencilFunc(GL_EQUAL, 0, 2);
+  tops.draw();
+  glDisable(GL_STENCIL_TEST);
+  body.draw();
+  pockets.draw();
+}
+
+// Pocket holes are cut with the stencil: the circles mark bit 1 (on the bed plane) and bit 2 (on the
+// top plane) wherever they project, and each plane is drawn only outside its own circles. That is
+// exact for a plane, and the pockets' insides then show through. Leaves the stencil test on.
+void SceneRenderer::Impl::mark_pocket_holes() {
+  use(Material::flat);
+  set_model(Eigen::Matrix4f::Identity());
   glEnable(GL_STENCIL_TEST);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glStencilMask(1);
   glStencilFunc(GL_ALWAYS, 1, 1);
-  r.bed_holes.draw();
+  bed_holes.draw();
   glStencilMask(2);
   glStencilFunc(GL_ALWAYS, 2, 2);
-  r.top_holes.draw();
+  top_holes.draw();
   glStencilMask(0);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
+}
 
-  r.use(Material::table);
-  r.set_model(Eigen::Matrix4f::Identity());
-  glStencilFunc(GL_EQUAL, 0, 1);
-  r.cloth.draw();
-  glStencilFunc(GL_EQUAL, 0, 2);
-  r.tops.draw();
-  glDisable(GL_STENCIL_TEST);
-  r.body.draw();
-  r.pockets.draw();
-
+void SceneRenderer::Impl::draw_balls(const Scene& scene, const std::vector<BallState>& balls) {
   const double radius = scene.physics.ball_radius;
-  r.use(Material::ball);
-  for (std::size_t i = 0; i < frame.balls.size() && i < scene.balls.size(); ++i) {
-    const BallState& s = frame.balls[i];
+  use(Material::ball);
+  for (std::size_t i = 0; i < balls.size() && i < scene.balls.size(); ++i) {
+    const BallState& s = balls[i];
     if (s.motion == Motion::pocketed) continue;
     const int number = scene.balls[i].number;
     Eigen::Affine3d model = Eigen::Translation3d(s.position) * s.orientation.normalized() * Eigen::Scaling(radius);
-    r.set_model(model.matrix().cast<float>());
+    set_model(model.matrix().cast<float>());
     const Vec3 color = ball_color(number);
-    glUniform3f(r.current->color, float(color.x()), float(color.y()), float(color.z()));
-    glUniform1i(r.current->number, number);
-    glUniform1i(r.current->striped, ball_striped(number) ? 1 : 0);
-    r.sphere.draw();
+    glUniform3f(current->color, float(color.x()), float(color.y()), float(color.z()));
+    glUniform1i(current->number, number);
+    glUniform1i(current->striped, ball_striped(number) ? 1 : 0);
+    sphere.draw();
   }
+}
 
-  if (frame.cue.visible && frame.cue.axis.norm() > 1e-9) {
-    const Quat turn = Quat::FromTwoVectors(Vec3::UnitX(), frame.cue.axis.normalized());
-    const Eigen::Affine3d model = Eigen::Translation3d(frame.cue.tip) * turn;
-    r.use(Material::cue);
-    r.set_model(model.matrix().cast<float>());
-    r.cue.draw();
-  }
+void SceneRenderer::Impl::draw_cue(const CuePose& pose) {
+  const bool drawable = pose.visible && pose.axis.norm() > 1e-9;
+  if (!drawable) return;
+  const Quat turn = Quat::FromTwoVectors(Vec3::UnitX(), pose.axis.normalized());
+  const Eigen::Affine3d model = Eigen::Translation3d(pose.tip) * turn;
+  use(Material::cue);
+  set_model(model.matrix().cast<float>());
+  cue.draw();
+}
 
-  // Contact shadows: soft dark discs laid over the cloth.
+// Contact shadows: soft dark discs laid over the cloth.
+void SceneRenderer::Impl::draw_shadows(const std::vector<BallState>& balls, double radius) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-1.f, -4.f);
   glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  r.use(Material::shadow);
-  for (const BallState& s : frame.balls) {
+  use(Material::shadow);
+  for (const BallState& s : balls) {
     if (s.motion == Motion::pocketed || s.position.z() < 0.5 * radius) continue;
     // A ball in the air (or sinking) casts a fainter, wider shadow.
     const double lift = std::clamp((s.position.z() - radius) / (4 * radius), -1.0, 1.0);
     const double size = radius * (1.45 + 0.6 * std::abs(lift));
     const Eigen::Affine3d model =
         Eigen::Translation3d(Vec3(s.position.x(), s.position.y(), 0)) * Eigen::Scaling(size, size, 1.0);
-    r.set_model(model.matrix().cast<float>());
-    glUniform1f(r.current->alpha, float(kShadowAlpha * (1.0 - 0.6 * std::abs(lift))));
-    r.shadow.draw();
+    set_model(model.matrix().cast<float>());
+    glUniform1f(current->alpha, float(kShadowAlpha * (1.0 - 0.6 * std::abs(lift))));
+    shadow.draw();
   }
   glDisable(GL_BLEND);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDepthMask(GL_TRUE);
+}
+
+// Leaves the GL state as the other drawing expects it and, when drawn offscreen, resolves the picture
+// into framebuffer 0 at (x, y).
+void SceneRenderer::Impl::finish_frame(int width, int height, int x, int y) {
   glStencilMask(0xFF);
   glDisable(GL_SCISSOR_TEST);
   glUseProgram(0);
   glBindTexture(GL_TEXTURE_2D, 0);
-
-  if (r.fbo) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.fbo);
+  if (fbo) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
+}
+
+void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y) {
+  Impl& r = *impl_;
+  r.begin_frame(width, height, x, y);
+  r.set_camera(frame.camera, static_cast<double>(width) / std::max(height, 1));
+  r.draw_table();
+  r.draw_balls(scene, frame.balls);
+  r.draw_cue(frame.cue);
+  r.draw_shadows(frame.balls, scene.physics.ball_radius);
+  r.finish_frame(width, height, x, y);
 }
 
 }  // namespace bsim

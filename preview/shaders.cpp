@@ -3,7 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "ball_model.h"
 #include "gl_api.h"
+#include "number_format.h"
 
 namespace bsim {
 
@@ -85,7 +87,6 @@ uniform int u_striped;
 uniform float u_alpha;
 uniform sampler2D u_numbers;
 
-const vec3 kIvory = vec3(0.871, 0.823, 0.672);
 const vec3 kInk = vec3(0.006, 0.006, 0.008);
 
 vec3 ball_albedo(vec3 m) {
@@ -153,11 +154,18 @@ unsigned compile(GLenum kind, const char* source, std::string& error) {
   return shader;
 }
 
+/// The ball's ivory (stripes' ground, number discs, the stick's ferrule), from the core's colours.
+std::string ivory_declaration() {
+  const Vec3 c = ball_ivory();
+  return "const vec3 kIvory = vec3(" + format_number(c.x()) + ", " + format_number(c.y()) + ", " +
+         format_number(c.z()) + ");\n";
+}
+
 }  // namespace
 
 unsigned build_scene_program(Material material, std::string& error) {
-  const std::string header =
-      "#version 330 core\n#define MATERIAL " + std::to_string(static_cast<int>(material)) + "\n" + kLighting;
+  const std::string header = "#version 330 core\n#define MATERIAL " + std::to_string(static_cast<int>(material)) +
+                             "\n" + ivory_declaration() + kLighting;
   const unsigned vertex = compile(GL_VERTEX_SHADER, (header + kVertexShader).c_str(), error);
   if (!vertex) return 0;
   const unsigned fragment = compile(GL_FRAGMENT_SHADER, (header + kFragmentShader).c_str(), error);

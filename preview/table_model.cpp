@@ -4,17 +4,17 @@
 #include <cmath>
 #include <numbers>
 
+#include "table.h"
+
 namespace bsim {
 
 namespace {
 
-constexpr double kCushionWidth = 0.05;    // m, nose to the frame
-constexpr double kCushionRise = 0.006;    // m, cushion top above its nose
-constexpr double kCushionUndercut = 0.015;  // m, how far the nose overhangs the cushion's foot
+// The cushion, the wood, the sights and the floor come from the table description (kStandardTable,
+// table_layout); what follows is drawing detail.
+constexpr double kNoseRound = 0.008;      // m outward from the nose where the profile reaches the cushion's top
 constexpr double kJawSlope = 0.6;         // the cushion's end recedes this much per metre of depth
-constexpr double kFrameWidth = 0.14;      // m, wooden rail
 constexpr double kApronBottom = -0.22;    // m
-constexpr double kFloor = -0.76;          // m, a standard table's bed height above the floor
 constexpr double kLegSize = 0.12;         // m
 constexpr double kPocketDepth = 0.12;     // m below the bed
 constexpr int kHoleSegments = 48;
@@ -28,26 +28,7 @@ Vec3 hole_color() { return srgb(6, 6, 6); }
 Vec3 pocket_color() { return srgb(16, 13, 12); }
 Vec3 sight_color() { return srgb(236, 228, 206); }
 
-struct Bounds {
-  double x0 = -1.27, x1 = 1.27, y0 = -0.635, y1 = 0.635;
-};
-
-Bounds playing_bounds(const Scene& scene) {
-  if (scene.rails.empty() && scene.pockets.empty()) return {};
-  Bounds b{1e9, -1e9, 1e9, -1e9};
-  const auto grow = [&b](const Vec3& p) {
-    b.x0 = std::min(b.x0, p.x());
-    b.x1 = std::max(b.x1, p.x());
-    b.y0 = std::min(b.y0, p.y());
-    b.y1 = std::max(b.y1, p.y());
-  };
-  for (const Rail& r : scene.rails) {
-    grow(r.a);
-    grow(r.b);
-  }
-  for (const Pocket& p : scene.pockets) grow(p.center);
-  return b;
-}
+using Bounds = TableRect;
 
 void add_cushion(MeshData& body, MeshData& tops, const Rail& rail, double top) {
   Vec3 d = rail.b - rail.a;
@@ -61,7 +42,8 @@ void add_cushion(MeshData& body, MeshData& tops, const Rail& rail, double top) {
   struct ProfilePoint {
     double offset, height;
   };
-  const ProfilePoint profile[] = {{kCushionUndercut, 0}, {0, nose}, {0.008, top}, {kCushionWidth, top}};
+  const CushionProfile& cushion = kStandardTable.cushion;
+  const ProfilePoint profile[] = {{cushion.undercut, 0}, {0, nose}, {kNoseRound, top}, {cushion.width, top}};
   // Each end recedes with depth so the jaw never reaches into the pocket mouth.
   const auto at = [&](const Vec3& end, double sign, const ProfilePoint& p) {
     return Vec3(end + out * p.offset + d * (sign * kJawSlope * p.offset) + Vec3(0, 0, p.height));
@@ -76,7 +58,7 @@ void add_cushion(MeshData& body, MeshData& tops, const Rail& rail, double top) {
     const Vec3& end = sign > 0 ? a : b;
     std::vector<Vec3> cap;
     for (const ProfilePoint& p : profile) cap.push_back(at(end, sign, p));
-    cap.push_back(at(end, sign, {kCushionWidth, 0}));
+    cap.push_back(at(end, sign, {cushion.width, 0}));
     body.add_polygon(cap, cloth);
   }
 }
@@ -137,10 +119,12 @@ void add_disc(MeshData& mesh, const Vec3& centre, double radius, const Vec3& col
   mesh.add_polygon(points, color);
 }
 
-void add_sight(MeshData& mesh, const Vec3& centre, bool along_x) {
-  const double l = 0.014, w = 0.007;  // m, half-diagonals of the diamond
-  const Vec3 u = along_x ? Vec3(l, 0, 0) : Vec3(0, l, 0);
-  const Vec3 v = along_x ? Vec3(0, w, 0) : Vec3(w, 0, 0);
+void add_sight(MeshData& mesh, const SightPlace& sight) {
+  constexpr double kAboveWood = 0.0004;  // m, lifted off the wood's top so the two never fight in depth
+  const double l = kStandardTable.sights.length / 2, w = kStandardTable.sights.width / 2;  // half-diagonals
+  const Vec3 u = sight.along_x ? Vec3(l, 0, 0) : Vec3(0, l, 0);
+  const Vec3 v = sight.along_x ? Vec3(0, w, 0) : Vec3(w, 0, 0);
+  const Vec3 centre = sight.centre + Vec3(0, 0, kAboveWood);
   mesh.add_quad(centre - u, centre - v, centre + u, centre + v, sight_color());
 }
 
@@ -150,47 +134,34 @@ Vec3 cloth_color() { return srgb(20, 112, 62); }
 
 TableModel build_table_model(const Scene& scene) {
   TableModel model;
-  double nose = kStandardNoseHeight;
-  for (const Rail& r : scene.rails) nose = std::max(nose, r.a.z());
-  const double top = nose + kCushionRise;
+  const TableLayout layout = table_layout(scene);
+  const double top = layout.rail_top;
   model.top_height = top;
 
-  const Bounds play = playing_bounds(scene);
-  const Bounds inner{play.x0 - kCushionWidth, play.x1 + kCushionWidth, play.y0 - kCushionWidth, play.y1 + kCushionWidth};
-  const Bounds outer{inner.x0 - kFrameWidth, inner.x1 + kFrameWidth, inner.y0 - kFrameWidth, inner.y1 + kFrameWidth};
+  const Bounds& play = layout.noses;
+  const Bounds& inner = layout.wood_inner;
+  const Bounds& outer = layout.wood_outer;
 
   model.cloth.add_quad(Vec3(inner.x0, inner.y0, 0), Vec3(inner.x1, inner.y0, 0), Vec3(inner.x1, inner.y1, 0),
                        Vec3(inner.x0, inner.y1, 0), cloth_color(), kCell);
-  for (const Rail& r : scene.rails) add_cushion(model.body, model.tops, r, top);
+  for (const Rail& r : scene.rails) add_cushion(model.body, model.tops, r, layout.cushion_top);
 
   add_frame_ring(model.tops, inner, outer, top, wood_color());
-  add_walls(model.body, inner, 0, top, liner_color(), &scene);
+  add_walls(model.body, inner, 0, layout.cushion_top, liner_color(), &scene);
+  add_walls(model.body, inner, layout.cushion_top, top, wood_color(), &scene);  // the wood's edge above the cushions
   add_walls(model.body, outer, kApronBottom, top, apron_color(), nullptr);
   model.body.add_quad(Vec3(outer.x0, outer.y0, kApronBottom), Vec3(outer.x1, outer.y0, kApronBottom),
                       Vec3(outer.x1, outer.y1, kApronBottom), Vec3(outer.x0, outer.y1, kApronBottom), apron_color());
   const double inset = 0.12;
+  const double floor_z = -kStandardTable.bed_height;
   for (double x : {outer.x0 + inset, outer.x1 - inset - kLegSize})
     for (double y : {outer.y0 + inset, outer.y1 - inset - kLegSize})
-      model.body.add_box(Vec3(x, y, kFloor), Vec3(x + kLegSize, y + kLegSize, kApronBottom), apron_color());
+      model.body.add_box(Vec3(x, y, floor_z), Vec3(x + kLegSize, y + kLegSize, kApronBottom), apron_color());
   const double floor = 6.0;
-  model.body.add_quad(Vec3(-floor, -floor, kFloor), Vec3(floor, -floor, kFloor), Vec3(floor, floor, kFloor),
-                      Vec3(-floor, floor, kFloor), srgb(52, 40, 32), kFloorCell);
+  model.body.add_quad(Vec3(-floor, -floor, floor_z), Vec3(floor, -floor, floor_z), Vec3(floor, floor, floor_z),
+                      Vec3(-floor, floor, floor_z), srgb(52, 40, 32), kFloorCell);
 
-  // Sights: every eighth of the long side and quarter of the short side, on the frame's centre line.
-  const double mid_x0 = (inner.x0 + outer.x0) / 2, mid_x1 = (inner.x1 + outer.x1) / 2;
-  const double mid_y0 = (inner.y0 + outer.y0) / 2, mid_y1 = (inner.y1 + outer.y1) / 2;
-  const double sight_z = top + 0.0004;
-  for (int i = 1; i < 8; ++i) {
-    if (i == 4) continue;  // the side pocket
-    const double x = play.x0 + (play.x1 - play.x0) * i / 8;
-    add_sight(model.tops, Vec3(x, mid_y0, sight_z), true);
-    add_sight(model.tops, Vec3(x, mid_y1, sight_z), true);
-  }
-  for (int i = 1; i < 4; ++i) {
-    const double y = play.y0 + (play.y1 - play.y0) * i / 4;
-    add_sight(model.tops, Vec3(mid_x0, y, sight_z), false);
-    add_sight(model.tops, Vec3(mid_x1, y, sight_z), false);
-  }
+  for (const SightPlace& sight : layout.sights) add_sight(model.tops, sight);
 
   for (const Pocket& p : scene.pockets) {
     add_disc(model.bed_holes, Vec3(p.center.x(), p.center.y(), 0), p.radius, hole_color());

@@ -1,6 +1,7 @@
 #pragma once
-// The table as meshes, built from the scene's cushions and pockets: cloth, cushions at nose height,
-// the wooden frame with its sights, the pocket holes, and a floor and legs for context.
+// The table as meshes, built from the scene's cushions and pockets and the table description
+// (table.h: the cushion profile, the wood, the sights): cloth, cushions at nose height, the wooden
+// frame with its sights, the pocket holes, and a floor and legs for context.
 #include <vector>
 
 #include "mesh.h"
@@ -10,12 +11,12 @@ namespace bsim {
 
 struct TableModel {
   MeshData cloth;      ///< the bed, z = 0 (pocket holes are cut out of it with the stencil)
-  MeshData tops;       ///< the frame's and cushions' top faces, all at top_height (holes cut likewise)
+  MeshData tops;       ///< the frame's top faces at top_height and the cushions' just below (holes cut likewise)
   MeshData body;       ///< cushion faces, frame sides, legs, floor
   MeshData pockets;    ///< inside of each pocket: its wall and bottom, seen through the holes
   MeshData bed_holes;  ///< pocket circles on the bed plane (stencil masks)
   MeshData top_holes;  ///< pocket circles at the frame's top height (stencil masks)
-  double top_height = 0;  ///< m, the frame's top above the bed
+  double top_height = 0;  ///< m, the frame's (the wood's) top above the bed
 };
 
 /// Cloth colour (linear RGB), shared with the shadows and overlays that sit on it.

@@ -1,9 +1,12 @@
 #include "timeline_picture.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -67,14 +70,88 @@ class LabelLevels {
   std::vector<float> right_;
 };
 
-struct Rows {
-  float labels_top = 0, label_height = 0;
+// The rows, top to bottom, and the margins around them: the levels of event numbers, the four bands
+// (events, pockets, camera, cue) and the time axis. Drawing the picture and sizing the compact one
+// (compact_timeline_height) both read it, so the scrub bar is as tall as what is drawn in it.
+struct RowLayout {
+  // Each band's height over the small text, and the gap between two bands.
+  static constexpr float kEventsExtra = 6, kDropsExtra = 8, kCueExtra = 6, kAxisExtra = 8;
+  static constexpr float kGap = 2;
+
+  float small = 0;          ///< px, the small text the rows are measured in
+  float pad = 0;            ///< px, the picture's spacing unit
+  float top_margin = 0;     ///< px above the title, or above the rows when compact
+  float label_height = 0;   ///< px, one level of event numbers
+  float camera_height = 0;  ///< px of the camera band
+
+  // Set by place().
   int label_levels = 0;
+  float labels_top = 0;
   float events_top = 0, events_bottom = 0;
   float drops_top = 0, drops_bottom = 0;
   float camera_top = 0, camera_bottom = 0;
   float cue_top = 0, cue_bottom = 0;
   float axis_top = 0, axis_bottom = 0;
+
+  RowLayout(const UiFonts& fonts, bool compact, bool script_failed)
+      : small(fonts.small_size),
+        pad(std::round(fonts.regular_size * 0.6f)),
+        top_margin(pad * (compact ? 0.5f : 1.f)),
+        label_height(small + 2),
+        // A script that failed shows each description's error under its label.
+        camera_height(script_failed ? fonts.regular_size + small + 12 : fonts.regular_size + 10) {}
+
+  /// px the four bands and the axis take, gaps aside: the height the label levels cannot have.
+  float bands_height() const {
+    return (small + kEventsExtra) + (small + kDropsExtra) + camera_height + (small + kCueExtra) + (small + kAxisExtra);
+  }
+
+  /// Places the rows from `top` down, with `levels` levels of event numbers above the events band.
+  void place(float top, int levels) {
+    label_levels = levels;
+    labels_top = top;
+    events_top = labels_top + label_levels * label_height;
+    events_bottom = events_top + small + kEventsExtra;
+    drops_top = events_bottom + kGap;
+    drops_bottom = drops_top + small + kDropsExtra;
+    camera_top = drops_bottom + kGap;
+    camera_bottom = camera_top + camera_height;
+    cue_top = camera_bottom + kGap;
+    cue_bottom = cue_top + small + kCueExtra;
+    axis_top = cue_bottom;
+    axis_bottom = axis_top + small + kAxisExtra;
+  }
+
+  struct Band {
+    float top, bottom;
+  };
+  /// The four bands, in the order of kRowNames.
+  std::array<Band, 4> bands() const {
+    return {{{events_top, events_bottom},
+             {drops_top, drops_bottom},
+             {camera_top, camera_bottom},
+             {cue_top, cue_bottom}}};
+  }
+};
+
+constexpr const char* kRowNames[] = {"events", "pockets", "camera", "cue"};
+
+// Where things go across: the row names' gutter, then the time axis, then (when descriptions name an
+// event the shot lacks) the zone where those go, having no time.
+struct Across {
+  float x0 = 0, x1 = 0;                 ///< px, the axis: time 0 and the end of the shot
+  float zone_left = 0, zone_right = 0;  ///< px
+  float zone = 0;                       ///< px wide, 0 when every description is placed
+  float zone_wanted = 0;                ///< px the zone's descriptions would take at full size
+  std::vector<float> unplaced_widths;   ///< px, each of them at full size
+  double duration = 0;                  ///< s, never 0
+  TimelineAxis axis;
+};
+
+struct LegendKey {
+  ImU32 color;
+  const char* name;
+  bool bar;
 };
 
 void row_name(ImDrawList& list, const UiFonts& fonts, float x, float top, float bottom, const char* name) {
@@ -121,6 +198,345 @@ void written_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, flo
   list.PopClipRect();
 }
 
+// What the legend explains.
+std::vector<LegendKey> legend_keys(bool script_failed) {
+  std::vector<LegendKey> keys = {{event_color(EventType::start), "start / end", false},
+                                 {event_color(EventType::cue), "cue", false},
+                                 {event_color(EventType::ball_ball), "ball-ball", false},
+                                 {event_color(EventType::ball_rail), "ball-rail", false},
+                                 {pocket_color(), "pocket drop", false},
+                                 {camera_mode_color(CameraMode::follow), "follow", true},
+                                 {camera_mode_color(CameraMode::look), "look", true},
+                                 {camera_mode_color(CameraMode::hover), "hover", true},
+                                 {kWindowEdge, "interpolation window (\xE2\x96\xB2 its event)", true}};
+  // A failed script has no interpolation windows, but has faults to explain.
+  if (script_failed) keys.back() = {kError, "camera script error", true};
+  return keys;
+}
+
+// The event list's lines, without their numbers: "  1.234 s   ball 0 – ball 5".
+std::vector<std::string> event_list_entries(const TimelineData& data) {
+  std::vector<std::string> entries;
+  for (const TimelineEventMark& e : data.events) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%8.3f s   ", e.time);
+    entries.push_back(buffer + e.label);
+  }
+  return entries;
+}
+
+// Draws one timeline picture. draw_timeline calls the steps top to bottom and back to front: a later
+// step draws over an earlier one.
+class TimelinePainter {
+ public:
+  TimelinePainter(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout)
+      : list_(list),
+        data_(data),
+        fonts_(fonts),
+        layout_(layout),
+        right_(layout.x + layout.width),
+        bottom_(layout.y + layout.height),
+        script_failed_(!data.script_errors.empty()),
+        rows_(fonts, layout.compact, script_failed_) {}
+
+  const TimelineAxis& axis() const { return across_.axis; }
+
+  void draw_background() {
+    list_.AddRectFilled(ImVec2(layout_.x, layout_.y), ImVec2(right_, bottom_), kBackground);
+  }
+
+  /// The title and, for a script that failed, a note on how it is shown (neither when compact).
+  /// Returns where the rows begin.
+  float draw_header() {
+    float y = layout_.y + rows_.top_margin;
+    if (layout_.compact) return y;
+    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, data_.title.c_str());
+    y += fonts_.bold_size + rows_.pad;
+    if (script_failed_) y = draw_failure_note(y);
+    return y;
+  }
+
+  /// Sets where everything goes, the rows starting at `top`.
+  void lay_out(float top) {
+    across_ = measure_across();
+    rows_.place(top, label_levels_needed(top));
+  }
+
+  void draw_row_backgrounds() {
+    const std::array<RowLayout::Band, 4> bands = rows_.bands();
+    for (const RowLayout::Band& band : bands)
+      list_.AddRectFilled(ImVec2(across_.x0, band.top), ImVec2(across_.x1, band.bottom), kRowBackground, 2.f);
+    for (std::size_t k = 0; k < bands.size(); ++k)
+      row_name(list_, fonts_, layout_.x + rows_.pad, bands[k].top, bands[k].bottom, kRowNames[k]);
+  }
+
+  void draw_grid_and_axis() {
+    const float small = fonts_.small_size;
+    const double step =
+        tick_step(across_.axis.pixels_per_second, text_size(fonts_.small, small, "00.0 s").x + 4 * rows_.pad);
+    list_.AddLine(ImVec2(across_.x0, rows_.axis_top + 1), ImVec2(across_.x1, rows_.axis_top + 1), kDim, 1.f);
+    for (int k = 0;; ++k) {
+      const double t = k * step;
+      if (t > across_.duration + 1e-9) break;
+      const float x = at(t);
+      list_.AddLine(ImVec2(x, rows_.events_top), ImVec2(x, rows_.cue_bottom), kGrid, 1.f);
+      list_.AddLine(ImVec2(x, rows_.axis_top + 1), ImVec2(x, rows_.axis_top + 5), kDim, 1.f);
+      const std::string label = seconds_text(t, step);
+      const float w = text_size(fonts_.small, small, label).x;
+      list_.AddText(fonts_.small, small, ImVec2(std::min(x - w / 2, right_ - w - 2), rows_.axis_top + 5), kDim,
+                    label.c_str());
+    }
+  }
+
+  void draw_cue_phases() {
+    for (const CuePhaseSpan& p : data_.cue)
+      labelled_bar(list_, fonts_, at(p.begin), at(p.end), rows_.cue_top + 2, rows_.cue_bottom - 2,
+                   cue_phase_color(p.phase), cue_phase_label(p.phase), false);
+  }
+
+  // A script that failed is drawn as written: the faulty descriptions last (on top), each tied to the
+  // event it names by a red line, and those naming no event in the zone (draw_unplaced_descriptions).
+  void draw_camera_descriptions() {
+    const float top = rows_.camera_top + 2, low = rows_.camera_bottom - 2;
+    if (!script_failed_)
+      for (const TimelineCameraSpan& c : data_.camera)
+        labelled_bar(list_, fonts_, at(c.begin), at(c.end), top, low, camera_mode_color(c.mode),
+                     camera_span_label(c, layout_.compact), true);
+    for (int faulty = 0; script_failed_ && faulty < 2; ++faulty)
+      for (const TimelineCameraSpan& c : data_.camera) {
+        if (!c.placed || c.problem.empty() == bool(faulty)) continue;
+        const float a = at(c.begin);
+        if (faulty) list_.AddLine(ImVec2(a, rows_.events_top), ImVec2(a, top), kError, 2.f);
+        written_bar(list_, fonts_, a, at(c.end), top, low, c);
+      }
+  }
+
+  // The zone after the axis: the descriptions naming an event the shot lacks, side by side, narrowed
+  // together when they do not fit.
+  void draw_unplaced_descriptions() {
+    const Across& z = across_;
+    if (z.zone <= 0) return;
+    const float small = fonts_.small_size;
+    list_.AddRectFilled(ImVec2(z.zone_left, rows_.camera_top), ImVec2(z.zone_right, rows_.camera_bottom),
+                        kRowBackground, 2.f);
+    list_.PushClipRect(ImVec2(z.zone_left, rows_.events_top), ImVec2(z.zone_right, rows_.drops_bottom), true);
+    list_.AddText(fonts_.small, small, ImVec2(z.zone_left + 2, (rows_.drops_top + rows_.drops_bottom - small) / 2),
+                  kErrorText, "not in the shot:");
+    list_.PopClipRect();
+    const float scale = z.zone / z.zone_wanted;
+    float x = z.zone_left;
+    std::size_t k = 0;
+    for (const TimelineCameraSpan& c : data_.camera) {
+      if (c.placed) continue;
+      const float w = z.unplaced_widths[k++] * scale;
+      written_bar(list_, fonts_, x + 1, x + w - 1, rows_.camera_top + 2, rows_.camera_bottom - 2, c);
+      x += w;
+    }
+  }
+
+  void draw_no_stick_note() {
+    if (!script_failed_ || !data_.cue.empty()) return;
+    const float small = fonts_.small_size;
+    list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, (rows_.cue_top + rows_.cue_bottom - small) / 2), kDim,
+                  "no stick: it is placed from the camera script");
+  }
+
+  // Shaded across every row, the event instant marked.
+  void draw_interpolation_windows() {
+    for (const TimelineWindow& w : data_.windows) {
+      const float a = at(w.begin), b = at(w.end), e = at(w.event_time);
+      list_.AddRectFilled(ImVec2(a, rows_.events_top), ImVec2(std::max(b, a + 1), rows_.cue_bottom), kWindowFill);
+      list_.AddLine(ImVec2(a, rows_.events_top), ImVec2(a, rows_.cue_bottom), kWindowEdge, 1.f);
+      list_.AddLine(ImVec2(b, rows_.events_top), ImVec2(b, rows_.cue_bottom), kWindowEdge, 1.f);
+      // Hatching over the camera row: the camera is between two descriptions here.
+      const float top = rows_.camera_top + 2, low = rows_.camera_bottom - 2, h = low - top;
+      list_.PushClipRect(ImVec2(a, top), ImVec2(std::max(b, a + 1), low), true);
+      for (float x = a - h; x < b; x += 7) list_.AddLine(ImVec2(x, low), ImVec2(x + h, top), kWindowHatch, 1.5f);
+      list_.PopClipRect();
+      list_.AddTriangleFilled(ImVec2(e - 4, rows_.camera_bottom + 1), ImVec2(e + 4, rows_.camera_bottom + 1),
+                              ImVec2(e, rows_.camera_bottom - 5), IM_COL32(255, 255, 255, 230));
+    }
+  }
+
+  // A mark per event in its type's colour, the number above it.
+  void draw_events() {
+    const float small = fonts_.small_size;
+    LabelLevels levels(rows_.label_levels);
+    for (const TimelineEventMark& e : data_.events) {
+      const float x = at(e.time);
+      const ImU32 color = event_color(e.type);
+      list_.AddLine(ImVec2(x, rows_.events_top + 1), ImVec2(x, rows_.events_bottom - 1), color, 2.f);
+      const std::string label = std::to_string(e.index);
+      const float w = text_size(fonts_.small, small, label).x;
+      const int level = levels.place(x - w / 2, w, 3);
+      if (level < 0) continue;
+      const float ly = rows_.events_top - (level + 1) * rows_.label_height;
+      if (level > 0) list_.AddLine(ImVec2(x, ly + small), ImVec2(x, rows_.events_top), with_alpha(color, 90), 1.f);
+      list_.AddText(fonts_.small, small, ImVec2(x - w / 2, ly), color, label.c_str());
+    }
+  }
+
+  void draw_pocket_drops() {
+    const float small = fonts_.small_size;
+    const float text_y = (rows_.drops_top + rows_.drops_bottom - small) / 2;
+    if (data_.drops.empty()) list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, text_y), kDim, "none");
+    LabelLevels drop_levels(1);
+    for (const TimelineDrop& d : data_.drops) {
+      const float x = at(d.time), mid = (rows_.drops_top + rows_.drops_bottom) / 2;
+      const float s = (rows_.drops_bottom - rows_.drops_top) * 0.32f;
+      list_.AddTriangleFilled(ImVec2(x - s, mid - s), ImVec2(x + s, mid - s), ImVec2(x, mid + s), pocket_color());
+      const std::string label = layout_.compact ? std::to_string(d.ball)
+                                                : "ball " + std::to_string(d.ball) + " \xE2\x86\x92 pocket " +
+                                                      std::to_string(d.pocket);
+      const float w = text_size(fonts_.small, small, label).x;
+      if (drop_levels.place(x + s + 2, w, 6) == 0 && x + s + 2 + w < across_.x1)
+        list_.AddText(fonts_.small, small, ImVec2(x + s + 2, text_y), pocket_color(), label.c_str());
+    }
+  }
+
+  void draw_cursor() {
+    if (layout_.cursor < 0) return;
+    const float x = at(std::clamp(layout_.cursor, 0.0, across_.duration));
+    const float top = rows_.labels_top;
+    list_.AddLine(ImVec2(x, top), ImVec2(x, rows_.axis_bottom), kCursor, 2.f);
+    list_.AddTriangleFilled(ImVec2(x - 6, top), ImVec2(x + 6, top), ImVec2(x, top + 8), kCursor);
+  }
+
+  /// A failed script's errors as printed, first below the axis. Returns where the next part begins.
+  float draw_script_errors() {
+    const float small = fonts_.small_size;
+    float y = rows_.axis_bottom + rows_.pad * 0.5f;
+    for (const std::string& line : data_.script_errors) {
+      if (y + small > bottom_ - 2) break;
+      list_.AddText(fonts_.small, small, ImVec2(across_.x0, y), kErrorText, line.c_str());
+      y += small + 3;
+    }
+    if (script_failed_) y += rows_.pad * 0.5f;
+    return y;
+  }
+
+  /// The legend on one line at `y`, as many keys as fit. Returns where the next part begins.
+  float draw_legend(float y) {
+    const float small = fonts_.small_size;
+    if (y + small > bottom_ - 2) return y;
+    float x = across_.x0;
+    for (const LegendKey& k : legend_keys(script_failed_)) {
+      const float w = text_size(fonts_.small, small, k.name).x;
+      if (x + small + 4 + w > right_ - rows_.pad) break;
+      if (k.bar)
+        list_.AddRectFilled(ImVec2(x, y + 2), ImVec2(x + small, y + small - 2), with_alpha(k.color, 200), 2.f);
+      else
+        list_.AddRectFilled(ImVec2(x + small / 2 - 1.5f, y + 1), ImVec2(x + small / 2 + 1.5f, y + small - 1), k.color);
+      list_.AddText(fonts_.small, small, ImVec2(x + small + 4, y), kDim, k.name);
+      x += small + 4 + w + rows_.pad * 1.5f;
+    }
+    return y + (small + rows_.pad);
+  }
+
+  // Every event in a list from `y` down, in columns, so a number in the camera script can be checked
+  // against what happened.
+  void draw_event_list(float y) {
+    const float small = fonts_.small_size, pad = rows_.pad;
+    const float line = small + 3;
+    const int lines = static_cast<int>((bottom_ - pad * 0.5f - y) / line);
+    if (lines < 1 || data_.events.empty()) return;
+    const std::vector<std::string> entries = event_list_entries(data_);
+    float column = 0;
+    for (const std::string& entry : entries)
+      column = std::max(column, text_size(fonts_.small, small, "000  " + entry).x);
+    column += pad * 2;
+    const int columns = std::max(1, static_cast<int>((right_ - across_.x0) / column));
+    const int capacity = lines * columns;
+    const int count = static_cast<int>(data_.events.size());
+    for (int k = 0; k < count && k < capacity; ++k) {
+      const float cx = across_.x0 + (k / lines) * column, cy = y + (k % lines) * line;
+      if (k == capacity - 1 && count > capacity) {
+        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim,
+                      ("\xE2\x80\xA6 and " + std::to_string(count - capacity + 1) + " more").c_str());
+        break;
+      }
+      const std::size_t i = static_cast<std::size_t>(k);
+      draw_event_list_line(cx, cy, data_.events[i], entries[i]);
+    }
+  }
+
+ private:
+  float at(double t) const { return across_.x0 + static_cast<float>(t) * across_.axis.pixels_per_second; }
+
+  float draw_failure_note(float y) {
+    const float text = fonts_.regular_size, pad = rows_.pad;
+    const std::size_t n = data_.script_errors.size();
+    const std::string note = "The camera script does not fit this shot (" + std::to_string(n) +
+                             (n == 1 ? " error" : " errors") +
+                             "): the camera row shows it as written, each description at the event it "
+                             "names, the faulty ones in red.";
+    const float wrap = right_ - layout_.x - 2 * pad;
+    list_.AddText(fonts_.regular, text, ImVec2(layout_.x + pad, y - pad * 0.4f), kErrorText, note.c_str(), nullptr,
+                  wrap);
+    return y + fonts_.regular->CalcTextSizeA(text, FLT_MAX, wrap, note.c_str()).y + pad * 0.6f;
+  }
+
+  Across measure_across() const {
+    const float text = fonts_.regular_size, small = fonts_.small_size, pad = rows_.pad;
+    Across a;
+    float gutter = 0;
+    for (const char* n : kRowNames) gutter = std::max(gutter, text_size(fonts_.small, small, n).x);
+    gutter += 2 * pad;
+    a.x0 = layout_.x + gutter;
+    // Descriptions naming an event the shot lacks have no time: they go in a zone after the axis.
+    for (const TimelineCameraSpan& c : data_.camera)
+      if (!c.placed)
+        a.unplaced_widths.push_back(std::max(text_size(fonts_.regular, text, camera_span_label(c, layout_.compact)).x,
+                                             text_size(fonts_.small, small, c.problem).x) + 2 * pad);
+    for (float w : a.unplaced_widths) a.zone_wanted += w;
+    a.zone = std::min(a.zone_wanted, (right_ - a.x0) * 0.4f);
+    a.zone_right = right_ - pad;
+    a.zone_left = a.zone_right - a.zone;
+    a.x1 = a.zone > 0 ? a.zone_left - 2 * pad : right_ - pad * 2.5f;
+    a.duration = std::max(data_.duration, 1e-6);
+    a.axis = {a.x0, static_cast<float>((a.x1 - a.x0) / a.duration)};
+    return a;
+  }
+
+  // As many label levels as the crowding needs, up to what the height allows.
+  int label_levels_needed(float top) const {
+    const float spare = bottom_ - top - rows_.bands_height() - rows_.pad;
+    const int max_levels =
+        layout_.compact ? 1 : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, 4);
+    for (int levels = 1; levels < max_levels; ++levels)
+      if (event_numbers_fit(levels)) return levels;
+    return max_levels;
+  }
+
+  bool event_numbers_fit(int levels) const {
+    LabelLevels trial(levels);
+    for (const TimelineEventMark& e : data_.events) {
+      const float w = text_size(fonts_.small, fonts_.small_size, std::to_string(e.index)).x;
+      if (trial.place(at(e.time) - w / 2, w, 3) < 0) return false;
+    }
+    return true;
+  }
+
+  // One line of the event list: the number right-aligned in its type's colour, then time and label.
+  void draw_event_list_line(float cx, float cy, const TimelineEventMark& e, const std::string& entry) {
+    const float small = fonts_.small_size;
+    const std::string number = std::to_string(e.index);
+    const float nw = text_size(fonts_.small, small, number).x;
+    const float numbers_w = text_size(fonts_.small, small, "000").x;
+    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w - nw, cy), event_color(e.type), number.c_str());
+    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w + 4, cy), kText, entry.c_str());
+  }
+
+  ImDrawList& list_;
+  const TimelineData& data_;
+  const UiFonts& fonts_;
+  const TimelineLayout& layout_;
+  const float right_, bottom_;
+  const bool script_failed_;
+  RowLayout rows_;
+  Across across_;
+};
+
 }  // namespace
 
 TimelineData timeline_data(const Shot& shot) {
@@ -151,269 +567,30 @@ TimelineData timeline_data(const Shot& shot) {
 }
 
 float compact_timeline_height(const UiFonts& fonts) {
-  const float text = fonts.regular_size, small = fonts.small_size;
-  return std::round(text * 0.3f) + (small + 2) + (small + 6) + 2 + (small + 8) + 2 + (text + 10) + 2 + (small + 6) +
-         (small + 8);
+  RowLayout rows(fonts, true, false);
+  rows.place(rows.top_margin, 1);
+  return rows.axis_bottom;
 }
 
 TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout) {
-  const float text = fonts.regular_size, small = fonts.small_size;
-  const float pad = std::round(text * 0.6f);
-  const float right = layout.x + layout.width, bottom = layout.y + layout.height;
-  list.AddRectFilled(ImVec2(layout.x, layout.y), ImVec2(right, bottom), kBackground);
-
-  const bool script_failed = !data.script_errors.empty();
-  float y = layout.y + pad * (layout.compact ? 0.5f : 1.f);
-  if (!layout.compact) {
-    list.AddText(fonts.bold, fonts.bold_size, ImVec2(layout.x + pad, y), kText, data.title.c_str());
-    y += fonts.bold_size + pad;
-    if (script_failed) {
-      const std::size_t n = data.script_errors.size();
-      const std::string note = "The camera script does not fit this shot (" + std::to_string(n) +
-                               (n == 1 ? " error" : " errors") +
-                               "): the camera row shows it as written, each description at the event it "
-                               "names, the faulty ones in red.";
-      const float wrap = right - layout.x - 2 * pad;
-      list.AddText(fonts.regular, text, ImVec2(layout.x + pad, y - pad * 0.4f), kErrorText, note.c_str(), nullptr, wrap);
-      y += fonts.regular->CalcTextSizeA(text, FLT_MAX, wrap, note.c_str()).y + pad * 0.6f;
-    }
-  }
-
-  // Rows, top to bottom.
-  Rows r;
-  r.label_height = small + 2;
-  // A script that failed shows each description's error under its label.
-  const float camera_height = script_failed ? text + small + 12 : text + 10;
-  const float fixed = (small + 6) + (small + 8) + camera_height + (small + 6) + (small + 8);
-  const float spare = bottom - y - fixed - pad;
-  const char* const names[] = {"events", "pockets", "camera", "cue"};
-  float gutter = 0;
-  for (const char* n : names) gutter = std::max(gutter, text_size(fonts.small, small, n).x);
-  gutter += 2 * pad;
-  const float x0 = layout.x + gutter;
-  // Descriptions naming an event the shot lacks have no time: they go in a zone after the axis.
-  std::vector<float> unplaced_widths;
-  for (const TimelineCameraSpan& c : data.camera)
-    if (!c.placed)
-      unplaced_widths.push_back(std::max(text_size(fonts.regular, text, camera_span_label(c, layout.compact)).x,
-                                         text_size(fonts.small, small, c.problem).x) + 2 * pad);
-  float zone_wanted = 0;
-  for (float w : unplaced_widths) zone_wanted += w;
-  const float zone = std::min(zone_wanted, (right - x0) * 0.4f);
-  const float zone_right = right - pad, zone_left = zone_right - zone;
-  const float x1 = zone > 0 ? zone_left - 2 * pad : right - pad * 2.5f;
-  const double duration = std::max(data.duration, 1e-6);
-  TimelineAxis axis{x0, static_cast<float>((x1 - x0) / duration)};
-  const auto at = [&](double t) { return x0 + static_cast<float>(t) * axis.pixels_per_second; };
-  // As many label levels as the crowding needs, up to what the height allows.
-  const int max_levels = layout.compact ? 1 : std::clamp(static_cast<int>(spare * 0.3f / r.label_height), 1, 4);
-  r.label_levels = 1;
-  for (int levels = 1; levels <= max_levels; ++levels) {
-    r.label_levels = levels;
-    LabelLevels trial(levels);
-    bool all = true;
-    for (const TimelineEventMark& e : data.events) {
-      const float w = text_size(fonts.small, small, std::to_string(e.index)).x;
-      all = trial.place(at(e.time) - w / 2, w, 3) >= 0 && all;
-    }
-    if (all) break;
-  }
-  r.labels_top = y;
-  r.events_top = r.labels_top + r.label_levels * r.label_height;
-  r.events_bottom = r.events_top + small + 6;
-  r.drops_top = r.events_bottom + 2;
-  r.drops_bottom = r.drops_top + small + 8;
-  r.camera_top = r.drops_bottom + 2;
-  r.camera_bottom = r.camera_top + camera_height;
-  r.cue_top = r.camera_bottom + 2;
-  r.cue_bottom = r.cue_top + small + 6;
-  r.axis_top = r.cue_bottom;
-  r.axis_bottom = r.axis_top + small + 8;
-
-
-  for (auto [top, bottom_edge] : {std::pair{r.events_top, r.events_bottom}, std::pair{r.drops_top, r.drops_bottom},
-                                  std::pair{r.camera_top, r.camera_bottom}, std::pair{r.cue_top, r.cue_bottom}})
-    list.AddRectFilled(ImVec2(x0, top), ImVec2(x1, bottom_edge), kRowBackground, 2.f);
-  row_name(list, fonts, layout.x + pad, r.events_top, r.events_bottom, names[0]);
-  row_name(list, fonts, layout.x + pad, r.drops_top, r.drops_bottom, names[1]);
-  row_name(list, fonts, layout.x + pad, r.camera_top, r.camera_bottom, names[2]);
-  row_name(list, fonts, layout.x + pad, r.cue_top, r.cue_bottom, names[3]);
-
-  // Grid and axis.
-  const double step = tick_step(axis.pixels_per_second, text_size(fonts.small, small, "00.0 s").x + 4 * pad);
-  list.AddLine(ImVec2(x0, r.axis_top + 1), ImVec2(x1, r.axis_top + 1), kDim, 1.f);
-  for (int k = 0;; ++k) {
-    const double t = k * step;
-    if (t > duration + 1e-9) break;
-    const float x = at(t);
-    list.AddLine(ImVec2(x, r.events_top), ImVec2(x, r.cue_bottom), kGrid, 1.f);
-    list.AddLine(ImVec2(x, r.axis_top + 1), ImVec2(x, r.axis_top + 5), kDim, 1.f);
-    const std::string label = seconds_text(t, step);
-    const float w = text_size(fonts.small, small, label).x;
-    list.AddText(fonts.small, small, ImVec2(std::min(x - w / 2, right - w - 2), r.axis_top + 5), kDim, label.c_str());
-  }
-
-  // Cue phases.
-  for (const CuePhaseSpan& p : data.cue)
-    labelled_bar(list, fonts, at(p.begin), at(p.end), r.cue_top + 2, r.cue_bottom - 2, cue_phase_color(p.phase),
-                 cue_phase_label(p.phase), false);
-
-  // Camera descriptions. A script that failed is drawn as written: the faulty descriptions last (on
-  // top), each tied to the event it names by a red line, and those naming no event in the zone.
-  if (!script_failed)
-    for (const TimelineCameraSpan& c : data.camera)
-      labelled_bar(list, fonts, at(c.begin), at(c.end), r.camera_top + 2, r.camera_bottom - 2, camera_mode_color(c.mode),
-                   camera_span_label(c, layout.compact), true);
-  for (int faulty = 0; script_failed && faulty < 2; ++faulty)
-    for (const TimelineCameraSpan& c : data.camera) {
-      if (!c.placed || c.problem.empty() == bool(faulty)) continue;
-      const float a = at(c.begin);
-      if (faulty) list.AddLine(ImVec2(a, r.events_top), ImVec2(a, r.camera_top + 2), kError, 2.f);
-      written_bar(list, fonts, a, at(c.end), r.camera_top + 2, r.camera_bottom - 2, c);
-    }
-  if (zone > 0) {
-    list.AddRectFilled(ImVec2(zone_left, r.camera_top), ImVec2(zone_right, r.camera_bottom), kRowBackground, 2.f);
-    list.PushClipRect(ImVec2(zone_left, r.events_top), ImVec2(zone_right, r.drops_bottom), true);
-    list.AddText(fonts.small, small, ImVec2(zone_left + 2, (r.drops_top + r.drops_bottom - small) / 2), kErrorText,
-                 "not in the shot:");
-    list.PopClipRect();
-    const float scale = zone / zone_wanted;
-    float x = zone_left;
-    std::size_t k = 0;
-    for (const TimelineCameraSpan& c : data.camera) {
-      if (c.placed) continue;
-      const float w = unplaced_widths[k++] * scale;
-      written_bar(list, fonts, x + 1, x + w - 1, r.camera_top + 2, r.camera_bottom - 2, c);
-      x += w;
-    }
-  }
-  if (script_failed && data.cue.empty())
-    list.AddText(fonts.small, small, ImVec2(x0 + 4, (r.cue_top + r.cue_bottom - small) / 2), kDim,
-                 "no stick: it is placed from the camera script");
-
-  // Interpolation windows: shaded across every row, the event instant marked.
-  for (const TimelineWindow& w : data.windows) {
-    const float a = at(w.begin), b = at(w.end), e = at(w.event_time);
-    list.AddRectFilled(ImVec2(a, r.events_top), ImVec2(std::max(b, a + 1), r.cue_bottom), kWindowFill);
-    list.AddLine(ImVec2(a, r.events_top), ImVec2(a, r.cue_bottom), kWindowEdge, 1.f);
-    list.AddLine(ImVec2(b, r.events_top), ImVec2(b, r.cue_bottom), kWindowEdge, 1.f);
-    // Hatching over the camera row: the camera is between two descriptions here.
-    const float top = r.camera_top + 2, low = r.camera_bottom - 2, h = low - top;
-    list.PushClipRect(ImVec2(a, top), ImVec2(std::max(b, a + 1), low), true);
-    for (float x = a - h; x < b; x += 7) list.AddLine(ImVec2(x, low), ImVec2(x + h, top), kWindowHatch, 1.5f);
-    list.PopClipRect();
-    list.AddTriangleFilled(ImVec2(e - 4, r.camera_bottom + 1), ImVec2(e + 4, r.camera_bottom + 1),
-                           ImVec2(e, r.camera_bottom - 5), IM_COL32(255, 255, 255, 230));
-  }
-
-  // Events: a mark per event in its type's colour, the number above it.
-  LabelLevels levels(r.label_levels);
-  for (const TimelineEventMark& e : data.events) {
-    const float x = at(e.time);
-    const ImU32 color = event_color(e.type);
-    list.AddLine(ImVec2(x, r.events_top + 1), ImVec2(x, r.events_bottom - 1), color, 2.f);
-    const std::string label = std::to_string(e.index);
-    const float w = text_size(fonts.small, small, label).x;
-    const int level = levels.place(x - w / 2, w, 3);
-    if (level < 0) continue;
-    const float ly = r.events_top - (level + 1) * r.label_height;
-    if (level > 0) list.AddLine(ImVec2(x, ly + small), ImVec2(x, r.events_top), with_alpha(color, 90), 1.f);
-    list.AddText(fonts.small, small, ImVec2(x - w / 2, ly), color, label.c_str());
-  }
-
-  // Pocket drops.
-  if (data.drops.empty())
-    list.AddText(fonts.small, small, ImVec2(x0 + 4, (r.drops_top + r.drops_bottom - small) / 2), kDim, "none");
-  LabelLevels drop_levels(1);
-  for (const TimelineDrop& d : data.drops) {
-    const float x = at(d.time), mid = (r.drops_top + r.drops_bottom) / 2;
-    const float s = (r.drops_bottom - r.drops_top) * 0.32f;
-    list.AddTriangleFilled(ImVec2(x - s, mid - s), ImVec2(x + s, mid - s), ImVec2(x, mid + s), pocket_color());
-    const std::string label = layout.compact ? std::to_string(d.ball)
-                                             : "ball " + std::to_string(d.ball) + " \xE2\x86\x92 pocket " + std::to_string(d.pocket);
-    const float w = text_size(fonts.small, small, label).x;
-    if (drop_levels.place(x + s + 2, w, 6) == 0 && x + s + 2 + w < x1)
-      list.AddText(fonts.small, small, ImVec2(x + s + 2, (r.drops_top + r.drops_bottom - small) / 2), pocket_color(),
-                   label.c_str());
-  }
-
-  if (layout.cursor >= 0) {
-    const float x = at(std::clamp(layout.cursor, 0.0, duration));
-    list.AddLine(ImVec2(x, r.labels_top), ImVec2(x, r.axis_bottom), kCursor, 2.f);
-    list.AddTriangleFilled(ImVec2(x - 6, r.labels_top), ImVec2(x + 6, r.labels_top), ImVec2(x, r.labels_top + 8), kCursor);
-  }
-  if (layout.compact) return axis;
-
-  y = r.axis_bottom + pad * 0.5f;
-  // A failed script's errors as printed, first below the axis.
-  for (const std::string& line : data.script_errors) {
-    if (y + small > bottom - 2) break;
-    list.AddText(fonts.small, small, ImVec2(x0, y), kErrorText, line.c_str());
-    y += small + 3;
-  }
-  if (script_failed) y += pad * 0.5f;
-
-  // Legend.
-  struct Key {
-    ImU32 color;
-    const char* name;
-    bool bar;
-  };
-  std::vector<Key> keys = {{event_color(EventType::start), "start / end", false},
-                           {event_color(EventType::cue), "cue", false},
-                           {event_color(EventType::ball_ball), "ball-ball", false},
-                           {event_color(EventType::ball_rail), "ball-rail", false},
-                           {pocket_color(), "pocket drop", false},
-                           {camera_mode_color(CameraMode::follow), "follow", true},
-                           {camera_mode_color(CameraMode::look), "look", true},
-                           {camera_mode_color(CameraMode::hover), "hover", true},
-                           {kWindowEdge, "interpolation window (\xE2\x96\xB2 its event)", true}};
-  // A failed script has no interpolation windows, but has faults to explain.
-  if (script_failed) keys.back() = {kError, "camera script error", true};
-  if (y + small <= bottom - 2) {
-    float x = x0;
-    for (const Key& k : keys) {
-      const float w = text_size(fonts.small, small, k.name).x;
-      if (x + small + 4 + w > right - pad) break;
-      if (k.bar) list.AddRectFilled(ImVec2(x, y + 2), ImVec2(x + small, y + small - 2), with_alpha(k.color, 200), 2.f);
-      else list.AddRectFilled(ImVec2(x + small / 2 - 1.5f, y + 1), ImVec2(x + small / 2 + 1.5f, y + small - 1), k.color);
-      list.AddText(fonts.small, small, ImVec2(x + small + 4, y), kDim, k.name);
-      x += small + 4 + w + pad * 1.5f;
-    }
-    y += small + pad;
-  }
-
-  // Every event in a list, so a number in the camera script can be checked against what happened.
-  const float line = small + 3;
-  const int rows = static_cast<int>((bottom - pad * 0.5f - y) / line);
-  if (rows < 1 || data.events.empty()) return axis;
-  float column = 0;
-  std::vector<std::string> entries;
-  for (const TimelineEventMark& e : data.events) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, "%8.3f s   ", e.time);
-    entries.push_back(buffer + e.label);
-    column = std::max(column, text_size(fonts.small, small, "000  " + entries.back()).x);
-  }
-  column += pad * 2;
-  const int columns = std::max(1, static_cast<int>((right - x0) / column));
-  const int capacity = rows * columns;
-  const int count = static_cast<int>(data.events.size());
-  for (int k = 0; k < count && k < capacity; ++k) {
-    const float cx = x0 + (k / rows) * column, cy = y + (k % rows) * line;
-    if (k == capacity - 1 && count > capacity) {
-      list.AddText(fonts.small, small, ImVec2(cx, cy), kDim,
-                   ("\xE2\x80\xA6 and " + std::to_string(count - capacity + 1) + " more").c_str());
-      break;
-    }
-    const TimelineEventMark& e = data.events[static_cast<std::size_t>(k)];
-    const std::string number = std::to_string(e.index);
-    const float nw = text_size(fonts.small, small, number).x;
-    const float numbers_w = text_size(fonts.small, small, "000").x;
-    list.AddText(fonts.small, small, ImVec2(cx + numbers_w - nw, cy), event_color(e.type), number.c_str());
-    list.AddText(fonts.small, small, ImVec2(cx + numbers_w + 4, cy), kText, entries[static_cast<std::size_t>(k)].c_str());
-  }
-  return axis;
+  TimelinePainter painter(list, data, fonts, layout);
+  painter.draw_background();
+  painter.lay_out(painter.draw_header());
+  painter.draw_row_backgrounds();
+  painter.draw_grid_and_axis();
+  painter.draw_cue_phases();
+  painter.draw_camera_descriptions();
+  painter.draw_unplaced_descriptions();
+  painter.draw_no_stick_note();
+  painter.draw_interpolation_windows();
+  painter.draw_events();
+  painter.draw_pocket_drops();
+  painter.draw_cursor();
+  if (layout.compact) return painter.axis();
+  float y = painter.draw_script_errors();
+  y = painter.draw_legend(y);
+  painter.draw_event_list(y);
+  return painter.axis();
 }
 
 }  // namespace bsim

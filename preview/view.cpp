@@ -8,22 +8,15 @@
 namespace bsim {
 
 ViewCamera scripted_view(const Shot& shot, double t) {
+  // Without a script: the straight-down camera 1 m over the table's middle.
+  const CameraPose pose = shot.camera ? shot.camera->pose(t) : straight_down_camera(Vec3(0, 0, 0), 1.0);
   ViewCamera view;
-  if (shot.camera) {
-    const CameraPose pose = shot.camera->pose(t);
-    view.eye = pose.location;
-    view.target = pose.look_at;
-  }
+  view.eye = pose.location;
+  view.target = pose.look_at;
   return view;
 }
 
-Vec3 view_up(const ViewCamera& camera) {
-  const Vec3 forward = camera.target - camera.eye;
-  const double horizontal = std::hypot(forward.x(), forward.y());
-  // Within ~0.06 degrees of vertical the z-up frame degenerates; POV-Ray's look_at would too.
-  if (horizontal <= 1e-3 * forward.norm()) return Vec3(0, 1, 0);
-  return Vec3(0, 0, 1);
-}
+Vec3 view_up(const ViewCamera& camera) { return picture_up(view_direction(camera.eye, camera.target)); }
 
 double vertical_fov_deg(double hfov_deg, double aspect) {
   const double half = hfov_deg * std::numbers::pi / 360.0;
@@ -31,9 +24,7 @@ double vertical_fov_deg(double hfov_deg, double aspect) {
 }
 
 Eigen::Matrix4f view_matrix(const ViewCamera& camera) {
-  Vec3 forward = camera.target - camera.eye;
-  if (forward.norm() < 1e-9) forward = Vec3(1, 0, 0);
-  forward.normalize();
+  const Vec3 forward = view_direction(camera.eye, camera.target);
   const Vec3 right = forward.cross(view_up(camera)).normalized();
   const Vec3 up = right.cross(forward);
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();

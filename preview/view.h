@@ -23,7 +23,7 @@ inline constexpr double kFarClip = 40.0;
 /// The scripted camera of `shot` at time t.
 ViewCamera scripted_view(const Shot& shot, double t);
 
-/// The up vector used for a view: +z, or +y when looking straight down or up (z up is undefined there).
+/// The up vector used for a view: the core's picture_up() (+z, or +y when looking straight down or up).
 Vec3 view_up(const ViewCamera& camera);
 
 /// Vertical field of view in degrees for a horizontal one at the given width / height.

@@ -113,16 +113,10 @@ bool save_screenshot(const std::string& path, int width, int height) {
   return true;
 }
 
-}  // namespace
-
-int run_window(const PreviewOptions& options, const SceneSource& source) {
-  if (!has_display()) {
-    std::cerr << "billiards-preview: no display for the window (DISPLAY is not set); "
-                 "use --at SECONDS -o FILE.png, --timeline -o FILE.png or --movie FILE.mp4\n";
-    return 2;
-  }
+// Opens the window with a GL 3.3 core context and loads the GL functions. Returns 0, or the exit
+// status when that fails (2: no display at all).
+int open_window(GlfwSession& session, const PreviewOptions& options, const std::string& shown_path) {
   glfwSetErrorCallback(remember_glfw_error);
-  GlfwSession session;
   if (!glfwInit()) {
     std::cerr << "billiards-preview: no display for the window (" << g_glfw_error << ")\n";
     return 2;
@@ -133,7 +127,7 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
   glfwWindowHint(GLFW_STENCIL_BITS, 8);
-  const std::string title = "billiards-preview \xE2\x80\x94 " + source.shown_path;
+  const std::string title = "billiards-preview \xE2\x80\x94 " + shown_path;
   // The window is the picture plus room for the controls below it.
   session.window = glfwCreateWindow(options.width, options.height + kControlsHeight, title.c_str(), nullptr, nullptr);
   if (!session.window) {
@@ -147,7 +141,11 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
     std::cerr << "billiards-preview: error: the window's OpenGL lacks " << missing << "\n";
     return 1;
   }
+  return 0;
+}
 
+// Dear ImGui on the window; session.imgui_glfw and session.imgui_gl say whether it started.
+UiFonts start_imgui(GlfwSession& session) {
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
@@ -155,6 +153,86 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
   ImGui::StyleColorsDark();
   session.imgui_glfw = ImGui_ImplGlfw_InitForOpenGL(session.window, true);
   session.imgui_gl = ImGui_ImplOpenGL3_Init("#version 330 core");
+  return fonts;
+}
+
+// (Re)loads the scene file into the viewer and the renderer, printing what the load said.
+void load_scene(ViewerState& state, SceneRenderer& renderer) {
+  if (load_into(state)) renderer.set_scene(state.shot->scene);
+  for (const std::string& line : state.messages) std::cerr << line << "\n";
+}
+
+// Moves the time on by `delta` seconds while playing. Returns true when a test's scrub is over.
+bool advance_time(ViewerState& state, const PreviewOptions& options, double since_start, float delta) {
+  // A test drives the window by itself: it scrubs from start to end over --quit-after seconds.
+  if (options.quit_after > 0) {
+    const double progress = std::min(since_start / options.quit_after, 1.0);
+    state.set_time(progress * state.duration());
+    return progress >= 1.0;
+  }
+  if (state.playing) {
+    state.set_time(state.time + delta * state.speed);
+    if (state.time >= state.duration()) state.playing = false;
+  }
+  return false;
+}
+
+// The shot in the view's part of the window, then the overlays over it.
+void draw_view(ViewerState& state, SceneRenderer& renderer, const ViewRect& view, int fb_width, int fb_height,
+               const UiFonts& fonts) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // ImGui works in window units, GL in framebuffer pixels; they differ on high-density screens.
+  const double sx = fb_width / std::max(1.0, double(io.DisplaySize.x));
+  const double sy = fb_height / std::max(1.0, double(io.DisplaySize.y));
+  FrameState frame = scripted_frame(*state.shot, state.time);
+  if (state.free_camera) frame.camera = state.orbit.view();
+  renderer.set_multisampling(state.antialias ? 4 : 0);
+  const int w = static_cast<int>(view.width * sx), h = static_cast<int>(view.height * sy);
+  renderer.draw(state.shot->scene, frame, w, h, static_cast<int>(view.x * sx),
+                fb_height - static_cast<int>((view.y + view.height) * sy));
+  draw_view_overlays(state, frame.camera, view, fonts);
+}
+
+struct FramebufferSize {
+  int width = 0, height = 0;  ///< px
+};
+
+// One frame into the back buffer: input, the cleared window, the shot, the controls.
+FramebufferSize draw_window_frame(ViewerState& state, SceneRenderer& renderer, GLFWwindow* window,
+                                  const PreviewOptions& options, const UiFonts& fonts) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  handle_keys(state, window);
+  int fb_width = 0, fb_height = 0;
+  glfwGetFramebufferSize(window, &fb_width, &fb_height);
+  const ViewRect view = view_rect(io.DisplaySize.x, io.DisplaySize.y, options.width, options.height);
+  handle_mouse(state, view);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_width, fb_height);
+  glClearColor(0.07f, 0.075f, 0.085f, 1.f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  if (state.shot && view.width >= 1 && view.height >= 1) draw_view(state, renderer, view, fb_width, fb_height, fonts);
+  draw_controls(state, fonts, io.DisplaySize.x, io.DisplaySize.y);
+  ImGui::Render();
+  glViewport(0, 0, fb_width, fb_height);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return {fb_width, fb_height};
+}
+
+}  // namespace
+
+int run_window(const PreviewOptions& options, const SceneSource& source) {
+  if (!has_display()) {
+    std::cerr << "billiards-preview: no display for the window (DISPLAY is not set); "
+                 "use --at SECONDS -o FILE.png, --timeline -o FILE.png or --movie FILE.mp4\n";
+    return 2;
+  }
+  GlfwSession session;
+  if (const int failed = open_window(session, options, source.shown_path)) return failed;
+  const UiFonts fonts = start_imgui(session);
   SceneRenderer renderer;
   std::string error;
   if (!session.imgui_glfw || !session.imgui_gl || !renderer.init(error)) {
@@ -166,8 +244,7 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
   state.source = source;
   state.fps = options.fps;
   state.overlays = options.overlays;
-  if (load_into(state)) renderer.set_scene(state.shot->scene);
-  for (const std::string& line : state.messages) std::cerr << line << "\n";
+  load_scene(state, renderer);
   FileWatch watch(source.path);
 
   const double started = glfwGetTime();
@@ -178,52 +255,12 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
     const double now = glfwGetTime();
     if (now - last_poll >= kReloadPoll) {
       last_poll = now;
-      if (watch.changed()) {
-        if (load_into(state)) renderer.set_scene(state.shot->scene);
-        for (const std::string& line : state.messages) std::cerr << line << "\n";
-      }
+      if (watch.changed()) load_scene(state, renderer);
     }
-    // A test drives the window by itself: it scrubs from start to end over --quit-after seconds.
-    if (options.quit_after > 0) {
-      const double progress = std::min((now - started) / options.quit_after, 1.0);
-      state.set_time(progress * state.duration());
-      quit = progress >= 1.0;
-    } else if (state.playing) {
-      state.set_time(state.time + io.DeltaTime * state.speed);
-      if (state.time >= state.duration()) state.playing = false;
-    }
-
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    handle_keys(state, session.window);
-    int fb_width = 0, fb_height = 0;
-    glfwGetFramebufferSize(session.window, &fb_width, &fb_height);
-    const ViewRect view = view_rect(io.DisplaySize.x, io.DisplaySize.y, options.width, options.height);
-    handle_mouse(state, view);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb_width, fb_height);
-    glClearColor(0.07f, 0.075f, 0.085f, 1.f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    if (state.shot && view.width >= 1 && view.height >= 1) {
-      // ImGui works in window units, GL in framebuffer pixels; they differ on high-density screens.
-      const double sx = fb_width / std::max(1.0, double(io.DisplaySize.x));
-      const double sy = fb_height / std::max(1.0, double(io.DisplaySize.y));
-      FrameState frame = scripted_frame(*state.shot, state.time);
-      if (state.free_camera) frame.camera = state.orbit.view();
-      renderer.set_multisampling(state.antialias ? 4 : 0);
-      const int w = static_cast<int>(view.width * sx), h = static_cast<int>(view.height * sy);
-      renderer.draw(state.shot->scene, frame, w, h, static_cast<int>(view.x * sx),
-                    fb_height - static_cast<int>((view.y + view.height) * sy));
-      draw_view_overlays(state, frame.camera, view, fonts);
-    }
-    draw_controls(state, fonts, io.DisplaySize.x, io.DisplaySize.y);
-    ImGui::Render();
-    glViewport(0, 0, fb_width, fb_height);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    quit = advance_time(state, options, now - started, ImGui::GetIO().DeltaTime);
+    const FramebufferSize fb = draw_window_frame(state, renderer, session.window, options, fonts);
     if (glfwWindowShouldClose(session.window)) quit = true;
-    if (quit && options.screenshot && !save_screenshot(*options.screenshot, fb_width, fb_height)) return 1;
+    if (quit && options.screenshot && !save_screenshot(*options.screenshot, fb.width, fb.height)) return 1;
     glfwSwapBuffers(session.window);
   }
   return state.shot ? 0 : 1;

@@ -1,7 +1,6 @@
 // camera.csv: the header, one row per frame, exact numbers that read back to the camera's pose.
 #include <cstdlib>
 #include <doctest/doctest.h>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -77,12 +76,10 @@ TEST_SUITE("camera_csv") {
       const auto out = dir.path / ("out" + std::to_string(run));
       const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scene +
                                                       "' --events-only --fps 30 -o '" + out.string() + "'");
-      REQUIRE(r.exit_code == 0);
-      std::ifstream file(out / "camera.csv", std::ios::binary);
-      std::stringstream text;
-      text << file.rdbuf();
-      if (run == 0) first = text.str();
-      else CHECK(text.str() == first);
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      const std::string text = test::require_file(out / "camera.csv");
+      if (run == 0) first = text;
+      else CHECK(text == first);
     }
     CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n0,0,-1.5,-1.5,1.2,0,0,0,0\n", 0) == 0);
   }

@@ -3,12 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <charconv>
-#include <fstream>
 #include <set>
 #include <memory>
 #include <sstream>
 
 #include "bench/random_scenes.h"
+#include "fixtures.h"
 #include "frames.h"
 #include "number_format.h"
 #include "outputs.h"
@@ -140,7 +140,7 @@ TEST_SUITE("events.json") {
         "cue 0 10\n"
         "ball 0 -0.6 -0.1 0.028575  2.4 0.42 0  1 0 0 0\n"
         "ball 9 0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
-        "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+        + std::string(test::fixtures::kHoverCamera);
     const std::string scene = dir.file("shot.scn", text);
     for (const char* out : {"a", "b"}) {
       const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scene +
@@ -148,16 +148,10 @@ TEST_SUITE("events.json") {
       INFO(r.err);
       REQUIRE(r.exit_code == 0);
     }
-    auto slurp = [](const std::filesystem::path& p) {
-      std::ifstream in(p, std::ios::binary);
-      std::ostringstream s;
-      s << in.rdbuf();
-      return s.str();
-    };
     const ShotResult loaded = load_shot(text, "shot");
     REQUIRE(loaded.shot);
-    CHECK(slurp(dir.path / "a" / "events.json") == events_json(*loaded.shot));
-    CHECK(slurp(dir.path / "a" / "events.json") == slurp(dir.path / "b" / "events.json"));
-    CHECK(slurp(dir.path / "a" / "trajectory.csv") == slurp(dir.path / "b" / "trajectory.csv"));
+    CHECK(test::require_file(dir.path / "a" / "events.json") == events_json(*loaded.shot));
+    CHECK(test::require_file(dir.path / "a" / "events.json") == test::require_file(dir.path / "b" / "events.json"));
+    CHECK(test::require_file(dir.path / "a" / "trajectory.csv") == test::require_file(dir.path / "b" / "trajectory.csv"));
   }
 }

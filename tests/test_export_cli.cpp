@@ -4,13 +4,14 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 
 #include "export_options.h"
+#include "fixtures.h"
 #include "support.h"
 
 using namespace bsim;
+using bsim::test::quoted;
 namespace fs = std::filesystem;
 
 namespace {
@@ -30,14 +31,11 @@ std::string rejection(std::vector<std::string> args) {
   return message;
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
 test::CommandResult run_export(const std::string& arguments) {
   return test::run_command(quoted(test::bin("billiards-export")) + " " + arguments);
 }
 
-const char* const kGoodScene =
-    "cue 0 0\nball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\ncamera\nevent 0 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+const std::string kGoodScene = std::string(test::fixtures::kOneBall) + test::fixtures::kHoverCamera;
 
 }  // namespace
 
@@ -162,7 +160,7 @@ TEST_SUITE("export end to end") {
 
   TEST_CASE("--strict reaches the parser") {
     test::TempDir tmp;
-    const std::string scene = tmp.file("ext.scn", std::string("# a comment\n") + kGoodScene);
+    const std::string scene = tmp.file("ext.scn", "# a comment\n" + kGoodScene);
     const test::CommandResult r =
         run_export(quoted(scene) + " --strict --events-only -o " + quoted((tmp.path / "o").string()));
     CHECK(r.exit_code == 1);
@@ -205,9 +203,7 @@ TEST_SUITE("export end to end") {
     const test::CommandResult r = run_export(quoted(scene) + " --events-only -o " + quoted(target));
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("error") != std::string::npos);
-    std::ifstream in(target);
-    std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    CHECK(contents == "keep me");
+    CHECK(test::require_file(target) == "keep me");
   }
 
   TEST_CASE("a good scene with --events-only writes the three data files and nothing else") {

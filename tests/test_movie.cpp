@@ -3,16 +3,16 @@
 // end cleanly with nothing half-written left behind.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
-#include <sstream>
 
 #include "frames.h"
 #include "support.h"
 
 using namespace bsim;
+using bsim::test::quoted;
 namespace fs = std::filesystem;
 
 namespace {
@@ -27,19 +27,10 @@ std::string scene(const char* last_camera, double speed = 0.6) {
 const char* const kEndA = "event 65535 0 0 hover -1.5 -1.2 1.2  0 0 0\n";
 const char* const kEndB = "event 65535 0 0 hover 1.5 -1.2 1.2  0 0 0\n";
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
 test::CommandResult run_export(const std::string& scene_path, const fs::path& out, const std::string& extra,
                                const std::string& env = "") {
   return test::run_command(env + " " + quoted(test::bin("billiards-export")) + " " + quoted(scene_path) + " -o " +
                            quoted(out.string()) + " " + extra);
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 double json_number(const std::string& json, const std::string& key) {
@@ -79,6 +70,7 @@ std::string fake_povray(const test::TempDir& dir, const std::string& body) {
 
 TEST_SUITE("movie") {
   TEST_CASE("a tiny movie: every frame rendered, H.264 and AAC as long as the shot, and re-runs render only what changed") {
+    for (const char* tool : {"povray", "ffmpeg", "ffprobe"}) test::require_program(tool);
     test::TempDir dir;
     const std::string path = dir.file("tiny.scn", scene(kEndA));
     const fs::path out = dir.path / "out";
@@ -87,7 +79,7 @@ TEST_SUITE("movie") {
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     CHECK(r.err.find('\r') == std::string::npos);  // no progress line off a terminal
 
-    const double duration = json_number(slurp(out / "events.json"), "duration");
+    const double duration = json_number(test::require_file(out / "events.json"), "duration");
     const int frames = frame_count(duration, 4);
     auto times = picture_times(out / "frames");
     CHECK(static_cast<int>(times.size()) == frames);
@@ -96,7 +88,7 @@ TEST_SUITE("movie") {
     const test::CommandResult probe = test::run_command(
         "ffprobe -v error -show_entries stream=codec_name,codec_type,pix_fmt,width,height,sample_rate,channels:"
         "format=duration -of json " + quoted((out / "movie.mp4").string()));
-    REQUIRE(probe.exit_code == 0);
+    REQUIRE_MESSAGE(probe.exit_code == 0, probe.err);
     CHECK(probe.out.find("\"codec_name\": \"h264\"") != std::string::npos);
     CHECK(probe.out.find("\"pix_fmt\": \"yuv420p\"") != std::string::npos);
     CHECK(probe.out.find("\"width\": 32") != std::string::npos);
@@ -104,7 +96,7 @@ TEST_SUITE("movie") {
     CHECK(probe.out.find("\"sample_rate\": \"48000\"") != std::string::npos);
     CHECK(probe.out.find("\"channels\": 2") != std::string::npos);
     CHECK(json_number(probe.out, "duration") == doctest::Approx(duration).epsilon(0.25 / duration));
-    const std::string faststart = slurp(out / "movie.mp4");
+    const std::string faststart = test::require_file(out / "movie.mp4");
     CHECK(faststart.find("moov") < faststart.find("mdat"));
 
     // The same again: nothing to render.
@@ -139,7 +131,7 @@ TEST_SUITE("movie") {
     // A shorter shot into the same directory: the frames past its end go, files and pictures.
     r = run_export(dir.file("tiny.scn", scene(kEndA, 0.15)), out, options);
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-    const int fewer = frame_count(json_number(slurp(out / "events.json"), "duration"), 4);
+    const int fewer = frame_count(json_number(test::require_file(out / "events.json"), "duration"), 4);
     REQUIRE(fewer < frames);
     CHECK(static_cast<int>(picture_times(out / "frames").size()) == fewer);
     int povs = 0;

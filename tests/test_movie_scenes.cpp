@@ -1,32 +1,18 @@
 // The scenes that ship: the built-in break and the gallery load cleanly and do what README says.
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 #include "builtin_scene.h"
+#include "files.h"
 #include "shot.h"
+#include "shots.h"
+#include "support.h"
 
 using namespace bsim;
+using bsim::test::load_clean;
 
 namespace {
 
-std::string scene_file(const std::string& name) {
-  std::ifstream in(std::string(BSIM_SOURCE_DIR) + "/scenes/" + name, std::ios::binary);
-  REQUIRE_MESSAGE(in, "cannot read scenes/" << name);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// Loads a scene that must give no diagnostic at all.
-std::unique_ptr<Shot> load_clean(const std::string& text, const std::string& name) {
-  ShotResult result = load_shot(text, name);
-  for (const Diagnostic& d : result.diagnostics) FAIL_CHECK(format_diagnostic(d, name));
-  REQUIRE(result.shot);
-  return std::move(result.shot);
-}
+std::string scene_file(const std::string& name) { return test::require_file(test::source_path("scenes/" + name)); }
 
 /// The file-order index of the ball painted `number`.
 int ball_numbered(const Shot& shot, int number) {

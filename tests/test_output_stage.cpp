@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "files.h"
 #include "output_stage.h"
 #include "support.h"
 
@@ -16,14 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write(const std::string& path, const std::string& text) { REQUIRE(test::write_file(path, text)); }
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& path) { return test::require_file(path); }
 
 /// Everything under `dir`, hidden entries included, as sorted relative paths.
 std::vector<std::string> listing(const fs::path& dir) {

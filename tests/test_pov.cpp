@@ -2,20 +2,21 @@
 // their quaternions, dropped balls and the put-away stick leave the picture, the table follows the
 // scene, and POV-Ray itself parses what is written for several tables.
 //
-// After an intended change to the models, regenerate the golden files with
-//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests --source-file='*test_pov.cpp'
+// After an intended change to the models, regenerate the golden files (with every other) with
+//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "files.h"
 #include "frames.h"
+#include "golden.h"
 #include "pov_format.h"
 #include "pov_frame.h"
 #include "pov_table.h"
 #include "shot.h"
+#include "shots.h"
 #include "support.h"
 
 using namespace bsim;
@@ -50,11 +51,7 @@ const char* const kBoxScene =
     "pocket 0.2 -0.3 0 0.07\n"
     "camera\nevent 0 0 0 hover 0 0 3  0 0 0\nendcamera\n";
 
-std::unique_ptr<Shot> load(const char* text) {
-  ShotResult result = load_shot(text, "tiny");
-  REQUIRE(result.shot);
-  return std::move(result.shot);
-}
+std::unique_ptr<Shot> load(const char* text) { return test::load_scene(text, "tiny"); }
 
 std::string include_text(const Shot& shot, Quality quality = Quality::draft) {
   std::ostringstream out;
@@ -68,30 +65,17 @@ std::string frame_text(const Shot& shot, int frame, int fps = 30) {
   return out.str();
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void check_golden(const std::string& name, const std::string& text) {
-  const fs::path golden = fs::path(BSIM_SOURCE_DIR) / "tests" / "golden" / "pov" / name;
-  if (std::getenv("BSIM_UPDATE_GOLDENS")) {
-    fs::create_directories(golden.parent_path());
-    std::ofstream(golden, std::ios::binary) << text;
-  }
-  REQUIRE_MESSAGE(fs::exists(golden), "no golden file " << golden << "; make it with BSIM_UPDATE_GOLDENS=1");
-  CHECK_MESSAGE(slurp(golden) == text, "the text differs from " << golden);
+  test::check_golden_text(test::golden_path("pov", name), text);
 }
 
 /// Writes the include and the given frames of `shot` into `dir`, renders them at 32x18 with
 /// POV-Ray (all at once: each process spends most of its time starting), returns the log.
 test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames) {
-  std::ofstream(dir / std::string(kPovIncludeName)) << include_text(shot, Quality::final);
+  REQUIRE(test::write_file(dir / std::string(kPovIncludeName), include_text(shot, Quality::final)));
   std::string command = "cd '" + dir.string() + "' && status=0; pids=; for f in";
   for (int k : frames) {
-    std::ofstream(dir / (frame_name(k) + ".pov")) << frame_text(shot, k);
+    REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k)));
     command += " " + frame_name(k);
   }
   command += "; do povray -D +FN +WT1 +I$f.pov +O$f.png +W32 +H18 +Q9 +A0.3 2>$f.log & pids=\"$pids $!\"; done; "
@@ -178,6 +162,7 @@ TEST_SUITE("pov") {
       const char* text;
       const char* name;
     };
+    test::require_program("povray");
     for (const Case& c : {Case{kTinyScene, "tiny"}, Case{kPocketScene, "pocket"}, Case{kBoxScene, "box"}}) {
       CAPTURE(c.name);
       const auto shot = load(c.text);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "camera_interpolation.h"
+#include "fixtures.h"
 #include "shot.h"
 #include "support.h"
 #include "view.h"
@@ -23,16 +24,8 @@ using bsim::test::TempDir;
 namespace {
 
 // Every camera mode and interpolation window in one short shot.
-constexpr const char* kScene = R"(cue 0 0
-ball 0  -0.75 0.0  0.028575   1.6 0 0   1 0 0 0
-ball 1   0.25 0.02 0.028575   0 0 0     1 0 0 0
-camera
-event 0 0 0       hover  -1.9 -1.1 0.9   -0.6 0 0
-event 1 0.3 0.5   follow 0   -0.7 0 0.35
-event 2 0.5 0.4   look   1.9 -1.2 1.0   1
-event 65535 0.6 0 hover  0 -2.3 2.4   0 0 0
-endcamera
-)";
+const std::string kScene = test::fixtures::two_ball_scene({"event 2 0.5 0.4   look   1.9 -1.2 1.0   1",
+                                                           "event 65535 0.6 0 hover  0 -2.3 2.4   0 0 0"});
 
 struct CameraRow {
   int frame = 0;

@@ -4,11 +4,10 @@
 // The inputs are built here, not simulated, so only a change to the drawing moves the pictures.
 //
 // Regenerate after an intended change to the drawing (then look at the new pictures before committing):
-//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests --source-file='*test_preview_golden.cpp'
+//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,18 +15,16 @@
 #include <imgui.h>
 #include <stb_image.h>
 
+#include "golden.h"
 #include "headless_canvas.h"
 #include "png_writer.h"
 #include "scene_renderer.h"
+#include "support.h"
 #include "timeline_picture.h"
 
 using namespace bsim;
 
 namespace {
-
-std::filesystem::path golden_path(const std::string& name) {
-  return std::filesystem::path(BSIM_SOURCE_DIR) / "tests" / "golden" / "preview" / name;
-}
 
 Scene rack_scene() {
   Scene scene;
@@ -110,7 +107,7 @@ constexpr double kMaxOutliers = 0.01;
 Comparison compare(const std::vector<std::uint8_t>& rgba_bottom_up, int width, int height, const std::string& golden) {
   int w = 0, h = 0, channels = 0;
   unsigned char* expected = stbi_load(golden.c_str(), &w, &h, &channels, 3);
-  REQUIRE_MESSAGE(expected, "no golden picture " << golden << "; make it with BSIM_UPDATE_GOLDENS=1");
+  REQUIRE_MESSAGE(expected, test::missing_golden_message(golden));
   REQUIRE(w == width);
   REQUIRE(h == height);
   Comparison c;
@@ -134,13 +131,14 @@ Comparison compare(const std::vector<std::uint8_t>& rgba_bottom_up, int width, i
 }
 
 void check_against_golden(HeadlessCanvas& canvas, const std::string& name) {
-  const std::string golden = golden_path(name).string();
+  const std::string golden = test::golden_path("preview", name).string();
   std::string error;
-  if (std::getenv("BSIM_UPDATE_GOLDENS")) {
-    std::filesystem::create_directories(golden_path("").parent_path());
-    REQUIRE_MESSAGE(canvas.write_png(golden, error), error);
-    MESSAGE("rewrote " << golden);
-    return;
+  if (test::updating_goldens()) {
+    // Replaced only when the bytes change, so regenerating everything leaves the other pictures alone.
+    test::TempDir dir;
+    const std::string drawn = (dir.path / name).string();
+    REQUIRE_MESSAGE(canvas.write_png(drawn, error), error);
+    test::write_golden(golden, test::require_file(drawn));
   }
   const Comparison c = compare(canvas.pixels(), canvas.width(), canvas.height(), golden);
   if (c.mean > kMaxMean || c.outliers > kMaxOutliers) {

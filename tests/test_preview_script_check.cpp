@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <stb_image.h>
 
+#include "fixtures.h"
 #include "headless_canvas.h"
 #include "script_as_written.h"
 #include "shot.h"
@@ -24,15 +25,8 @@ using bsim::test::TempDir;
 namespace {
 
 // The cue ball sent into a small cluster: several collisions and cushions within a few seconds.
-constexpr const char* kBalls = R"(cue 0 0
-ball 0  -0.6 0.0  0.028575   2.5 0 0   1 0 0 0
-ball 1   0.2 0.01 0.028575   0 0 0     1 0 0 0
-ball 9   0.3 0.05 0.028575   0 0 0     0.7071 0.7071 0 0
-ball 8   0.3 -0.04 0.028575  0 0 0     1 0 0 0
-)";
-
 std::string scene_with_camera(const std::vector<std::string>& descriptions) {
-  std::string text = std::string(kBalls) + "camera\n";
+  std::string text = std::string(test::fixtures::kClusterBalls) + "camera\n";
   for (const std::string& d : descriptions) text += d + "\n";
   return text + "endcamera\n";
 }

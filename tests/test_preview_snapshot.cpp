@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -13,27 +12,20 @@
 
 #include <stb_image.h>
 
+#include "fixtures.h"
 #include "shot.h"
 #include "support.h"
 
 using namespace bsim;
 using bsim::test::bin;
+using bsim::test::require_file;
 using bsim::test::run_command;
 using bsim::test::TempDir;
 
 namespace {
 
 // The cue ball sent into a small cluster: a few collisions and a cushion within a couple of seconds.
-constexpr const char* kScene = R"(cue 0 0
-ball 0  -0.6 0.0  0.028575   2.5 0 0   1 0 0 0
-ball 1   0.2 0.01 0.028575   0 0 0     1 0 0 0
-ball 9   0.3 0.05 0.028575   0 0 0     0.7071 0.7071 0 0
-ball 8   0.3 -0.04 0.028575  0 0 0     1 0 0 0
-camera
-event 0 0 0 hover -1.5 -1.1 1.0   0 0 0
-event 2 0.3 0.3 follow 0 -0.6 0 0.3
-endcamera
-)";
+const std::string kScene = test::fixtures::cluster_scene();
 
 struct Image {
   int width = 0, height = 0;
@@ -56,13 +48,6 @@ Image load_png(const std::string& path) {
   return image;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string preview(const std::string& args) { return bin("billiards-preview") + " " + args; }
 
 }  // namespace
@@ -80,7 +65,7 @@ TEST_SUITE("preview snapshots") {
     CHECK(image.height == 180);
     CHECK(image.distinct_colours() > 200);
     REQUIRE(run_command(preview(scene + " --at 2.9 --size 320x180 -o " + b)).exit_code == 0);
-    CHECK(slurp(a) == slurp(b));
+    CHECK(require_file(a) == require_file(b));
   }
 
   TEST_CASE("--at event:N shows the instant of event N, and a missing event is a usage error") {
@@ -97,7 +82,7 @@ TEST_SUITE("preview snapshots") {
     const std::string by_event = (dir.path / "e.png").string(), by_time = (dir.path / "t.png").string();
     REQUIRE(run_command(preview(scene + " --at event:2 --size 160x90 -o " + by_event)).exit_code == 0);
     REQUIRE(run_command(preview(scene + " --at " + seconds.str() + " --size 160x90 -o " + by_time)).exit_code == 0);
-    CHECK(slurp(by_event) == slurp(by_time));
+    CHECK(require_file(by_event) == require_file(by_time));
 
     const std::string missing = (dir.path / "m.png").string();
     const auto bad = run_command(preview(scene + " --at event:" + std::to_string(events.size()) + " -o " + missing));
@@ -114,8 +99,8 @@ TEST_SUITE("preview snapshots") {
     REQUIRE(run_command(preview(scene + " --at 0.5 --size 160x90 -o " + early)).exit_code == 0);
     REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 -o " + late)).exit_code == 0);
     REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 --overlay paths,events,camera -o " + marked)).exit_code == 0);
-    CHECK(slurp(early) != slurp(late));
-    CHECK(slurp(late) != slurp(marked));
+    CHECK(require_file(early) != require_file(late));
+    CHECK(require_file(late) != require_file(marked));
   }
 
   TEST_CASE("a scene error is reported with its location and writes nothing") {
@@ -143,10 +128,8 @@ TEST_SUITE("preview snapshots") {
   }
 
   TEST_CASE("the animatic is an MP4 with video and sound as long as its frames") {
-    if (run_command("command -v ffmpeg && command -v ffprobe").exit_code != 0) {
-      MESSAGE("ffmpeg is not installed: animatic not tested");
-      return;
-    }
+    test::require_program("ffmpeg");
+    test::require_program("ffprobe");
     TempDir dir;
     const std::string scene = dir.file("cluster.scn", kScene);
     const std::string movie = (dir.path / "a.mp4").string();
@@ -154,6 +137,7 @@ TEST_SUITE("preview snapshots") {
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto probe = run_command("ffprobe -v error -show_entries stream=codec_type,width,nb_frames -of csv=p=0 " + movie);
+    REQUIRE_MESSAGE(probe.exit_code == 0, probe.err);
     CHECK(probe.out.find("video") != std::string::npos);
     CHECK(probe.out.find("audio") != std::string::npos);
     const ShotResult loaded = load_shot(kScene, "cluster");

@@ -3,12 +3,13 @@
 // when the file on disk turns bad, reporting the error's line and column.
 #include <doctest/doctest.h>
 
-#include <fstream>
 #include <set>
 #include <string>
 
 #include <stb_image.h>
 
+#include "files.h"
+#include "fixtures.h"
 #include "support.h"
 #include "viewer_state.h"
 #include "viewer_ui.h"
@@ -20,23 +21,15 @@ using bsim::test::TempDir;
 
 namespace {
 
-constexpr const char* kScene = R"(cue 0 0
-ball 0  -0.75 0.0  0.028575   1.6 0 0   1 0 0 0
-ball 1   0.25 0.02 0.028575   0 0 0     1 0 0 0
-camera
-event 0 0 0       hover  -1.9 -1.1 0.9   -0.6 0 0
-event 1 0.3 0.5   follow 0   -0.7 0 0.35
-endcamera
-)";
+// Two balls, a hover and a follow camera; the follow description is on line 6.
+const std::string kScene = test::fixtures::two_ball_scene();
 
 }  // namespace
 
 TEST_SUITE("preview window") {
   TEST_CASE("under Xvfb the window opens, scrubs, quits by itself and saves a screenshot") {
-    if (run_command("command -v xvfb-run").exit_code != 0) {
-      MESSAGE("xvfb-run is not installed: window smoke test skipped");
-      return;
-    }
+    test::require_program("xvfb-run");
+    test::require_program("xauth");
     TempDir dir;
     const std::string scene = dir.file("tour.scn", kScene);
     const std::string shot = (dir.path / "window.png").string();
@@ -75,7 +68,7 @@ TEST_SUITE("preview window") {
 
     std::string broken = kScene;
     broken.replace(broken.find("follow 0"), 8, "follow 17");  // no ball 17
-    std::ofstream(path, std::ios::binary) << broken;
+    REQUIRE(test::write_file(path, broken));
     CHECK(watch.changed());
     CHECK_FALSE(load_into(state));
     CHECK(state.load_failed);
@@ -84,7 +77,7 @@ TEST_SUITE("preview window") {
     REQUIRE_FALSE(state.messages.empty());
     CHECK(state.messages.front().find(path + ":6:") == 0);
 
-    std::ofstream(path, std::ios::binary) << kScene << "# edited\n";
+    REQUIRE(test::write_file(path, kScene + "# edited\n"));
     CHECK(watch.changed());
     CHECK(load_into(state));
     CHECK_FALSE(state.load_failed);

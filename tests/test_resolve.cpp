@@ -9,6 +9,7 @@
 #include "motion.h"
 #include "resolve.h"
 #include "scene.h"
+#include "tolerance.h"
 
 using namespace bsim;
 
@@ -120,11 +121,29 @@ TEST_SUITE("resolve") {
     CHECK(tangential_slip(a, straight) > 0);
     const auto [sa, sb] = resolve_ball_ball(a, straight, p);
     CHECK(tangential_slip(sa, sb) == doctest::Approx(0).epsilon(1e-12).scale(1));
-    // The cut: throw turns the object ball off the line of centres, toward the cue ball's path.
+    // The cut: throw turns the object ball off the line of centres, toward the cue ball's path, by
+    // exactly the angle the capped friction gives. With the cue ball a at v = (1, 0, 0) without spin,
+    // b at rest at angle c = `cut` on the line of centres n = (cos c, sin c, 0), and e = 1:
+    //   normal impulse      jn = m (1 + e) (v.n) / 2 = m cos c
+    //   slip of the contact points across n (no spin, b at rest: the slip is v itself)
+    //                       v - (v.n) n = sin c t,  t = (sin c, -cos c, 0),  |slip| = sin c
+    //   friction impulse    jt = min(mu jn, m |slip| / 7) = m min(mu cos c, sin c / 7)
+    // so b leaves with velocity (jn n + jt t) / m, turned from n toward t by
+    //   throw = atan(jt / jn) = atan(min(mu, tan c / 7)),
+    // Alciatore's min(mu v_n, v_slip / 7) in impulse form. At c = 0.5 rad, tan c / 7 = 0.0780 < mu = 0.2:
+    // the slip stops before friction runs out (the cap), throw = atan(tan 0.5 / 7) = 0.0779 rad.
     const auto [na, nb] = resolve_ball_ball(a, b, p);
     const double throw_angle = cut - std::atan2(nb.velocity.y(), nb.velocity.x());
-    CHECK(throw_angle > 0);
-    CHECK(throw_angle < 0.1);
+    REQUIRE(std::tan(cut) / 7 < p.mu_ball);
+    CHECK(throw_angle == test::near(std::atan(std::tan(cut) / 7), 1e-12));
+    CHECK(nb.velocity.dot(n) == test::near(std::cos(cut), 1e-12));
+    CHECK(nb.velocity.norm() == test::near(std::hypot(std::cos(cut), std::sin(cut) / 7), 1e-12));
+    // A thinner cut: tan c / 7 > mu, so friction slides at mu jn and the throw is atan(mu) whatever c is.
+    const double thin = 1.2;
+    REQUIRE(std::tan(thin) / 7 > p.mu_ball);
+    const BallState far = ball(2 * kR * std::cos(thin), 2 * kR * std::sin(thin), Vec3(0, 0, 0));
+    const BallState thrown = resolve_ball_ball(a, far, p).second;
+    CHECK(thin - std::atan2(thrown.velocity.y(), thrown.velocity.x()) == test::near(std::atan(p.mu_ball), 1e-12));
     // mu_ball = 0 gives exactly the textbook direction.
     const auto [fa, fb] = resolve_ball_ball(a, b, params(1, 0));
     CHECK(std::atan2(fb.velocity.y(), fb.velocity.x()) == doctest::Approx(cut).epsilon(1e-15));

@@ -3,11 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "files.h"
 #include "scene_lexer.h"
 #include "scene_parse.h"
+#include "support.h"
 
 using namespace bsim;
 
@@ -287,17 +287,21 @@ TEST_SUITE("scene_parse lexer") {
 TEST_SUITE("scene_parse gallery") {
   TEST_CASE("every scene in scenes/ parses without errors, strict where it uses no extension") {
     int count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(BSIM_SOURCE_DIR) + "/scenes")) {
+    for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenes"))) {
       if (entry.path().extension() != ".scn") continue;
       ++count;
-      std::ifstream in(entry.path(), std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      const ParseResult r = parse_scene(text.str(), entry.path().stem().string());
+      const std::string text = test::require_file(entry.path());
+      const ParseResult r = parse_scene(text, entry.path().stem().string());
       INFO(entry.path().filename().string() << ":\n" << all_messages(r));
       CHECK(r.scene.has_value());
       CHECK_FALSE(has_errors(r.diagnostics));
       if (r.scene) CHECK(r.scene->name == entry.path().stem().string());
+      // With --strict the only errors are the extensions it uses (a scene using none parses).
+      const ParseResult strict = parse_scene(text, entry.path().stem().string(), {.strict = true});
+      INFO("with --strict:\n" << all_messages(strict));
+      CHECK(strict.scene.has_value() == !has_errors(strict.diagnostics));
+      for (const Diagnostic& d : strict.diagnostics)
+        CHECK(d.message.find("an extension that --strict rejects") != std::string::npos);
     }
     CHECK(count >= 1);
   }

@@ -1,35 +1,29 @@
 // Golden events.json for the scenes in scenes/: a change in the physics that moves any event shows
-// here. Each tests/golden/events/NAME.json is compared with a fresh simulation of scenes/NAME.scn.
-// Regenerate all of them (and add new scenes) after an intended change with:
-//   BSIM_UPDATE_GOLDEN=1 build/bin/bsim_tests --source-file='*test_simulate_golden.cpp'
+// here. Each tests/golden/events/NAME.json is compared with a fresh simulation of scenes/NAME.scn,
+// and every scene must have one. Regenerate them (and add new scenes) after an intended change with:
+//   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <set>
 #include <sstream>
 
+#include "files.h"
+#include "golden.h"
 #include "outputs.h"
 #include "shot.h"
+#include "support.h"
 
 using namespace bsim;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kScenes = fs::path(BSIM_SOURCE_DIR) / "scenes";
-const fs::path kGolden = fs::path(BSIM_SOURCE_DIR) / "tests" / "golden" / "events";
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+const fs::path kScenes = test::source_path("scenes");
 
 /// events.json of scenes/NAME.scn, or an empty string with the diagnostics in `why` if it does not load.
 std::string simulate_scene(const std::string& name, std::string& why) {
-  const ShotResult loaded = load_shot(slurp(kScenes / (name + ".scn")), name);
+  const ShotResult loaded = load_shot(test::require_file(kScenes / (name + ".scn")), name);
   if (!loaded.shot) {
     for (const Diagnostic& d : loaded.diagnostics) why += format_diagnostic(d, name + ".scn") + "\n";
     return "";
@@ -39,39 +33,31 @@ std::string simulate_scene(const std::string& name, std::string& why) {
   return out.str();
 }
 
+/// The stems of the files in `dir` ending in `extension`, sorted.
+std::set<std::string> stems(const fs::path& dir, const std::string& extension) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == extension) names.insert(entry.path().stem().string());
+  return names;
+}
+
 }  // namespace
 
 TEST_SUITE("simulate: golden") {
-  TEST_CASE("every golden events.json matches its scene, byte for byte") {
-    if (std::getenv("BSIM_UPDATE_GOLDEN")) {
-      fs::create_directories(kGolden);
-      for (const auto& entry : fs::directory_iterator(kScenes)) {
-        if (entry.path().extension() != ".scn") continue;
-        const std::string name = entry.path().stem().string();
-        std::string why;
-        const std::string json = simulate_scene(name, why);
-        INFO(why);
-        CHECK_FALSE(json.empty());
-        if (!json.empty()) std::ofstream(kGolden / (name + ".json"), std::ios::binary) << json;
-        MESSAGE("wrote golden events for " << name);
-      }
-      return;
-    }
-    int compared = 0;
-    for (const auto& entry : fs::directory_iterator(kGolden)) {
-      if (entry.path().extension() != ".json") continue;
-      const std::string name = entry.path().stem().string();
+  TEST_CASE("every scene has a golden events.json and matches it, byte for byte") {
+    const std::set<std::string> scenes = stems(kScenes, ".scn");
+    REQUIRE_FALSE(scenes.empty());
+    for (const std::string& name : scenes) {
       CAPTURE(name);
-      REQUIRE(fs::exists(kScenes / (name + ".scn")));
       std::string why;
       const std::string json = simulate_scene(name, why);
       INFO(why);
-      CHECK(json == slurp(entry.path()));
-      ++compared;
+      CHECK_FALSE(json.empty());
+      if (!json.empty()) test::check_golden_text(test::golden_path("events", name + ".json"), json);
     }
-    CHECK(compared > 0);
-    for (const auto& entry : fs::directory_iterator(kScenes))
-      if (entry.path().extension() == ".scn" && !fs::exists(kGolden / (entry.path().stem().string() + ".json")))
-        MESSAGE("no golden events for scenes/" << entry.path().filename().string() << " yet: regenerate them");
+    // A golden file whose scene is gone would be compared with nothing.
+    for (const std::string& name : stems(test::golden_path("events", ""), ".json"))
+      CHECK_MESSAGE(scenes.count(name) == 1, "tests/golden/events/" << name << ".json has no scenes/" << name
+                                                                       << ".scn: remove it or restore the scene");
   }
 }

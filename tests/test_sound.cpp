@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 
+#include "fixtures.h"
 #include "music_bed.h"
 #include "shot.h"
+#include "shots.h"
 #include "sound_mix.h"
 #include "sound_synth.h"
 #include "soundtrack.h"
 #include "support.h"
+#include "tolerance.h"
 
 using namespace bsim;
 
@@ -21,17 +22,10 @@ namespace {
 
 // Two balls on the standard table: the cue ball runs into the object ball, which runs to the
 // right-hand cushion; the camera looks along +y, so +x is the right of the picture.
-const char* const kScene =
-    "cue 0 0\n"
-    "ball 0 -0.8 0 0.028575  1.5 0 0  1 0 0 0\n"
-    "ball 1  0.0 0 0.028575  0 0 0  1 0 0 0\n"
-    "camera\nevent 0 0 0 hover 0 -3 2  0 0 0\nendcamera\n";
-
-std::unique_ptr<Shot> load(const char* text) {
-  ShotResult result = load_shot(text, "sound");
-  REQUIRE(result.shot);
-  return std::move(result.shot);
-}
+const std::string kScene = std::string("cue 0 0\n"
+                                         "ball 0 -0.8 0 0.028575  1.5 0 0  1 0 0 0\n"
+                                         "ball 1  0.0 0 0.028575  0 0 0  1 0 0 0\n") +
+                             test::fixtures::kHoverCamera;
 
 AudioBuffer silence(double seconds) {
   AudioBuffer audio;
@@ -128,8 +122,12 @@ TEST_SUITE("sound") {
 
   TEST_CASE("a sound on the right of the picture is louder on the right channel, and the other way") {
     const CameraPose camera{Vec3(0, -3, 2), Vec3(0, 0, 0), false};
-    CHECK(view_position(camera, Vec3(1, 0, 0), 55) > 0.2);
-    CHECK(view_position(camera, Vec3(-1, 0, 0), 55) < -0.2);
+    // (1, 0, 0) seen from (0, -3, 2) looking at the origin: the view direction is (0, 3, -2) / sqrt(13)
+    // and the picture's right (view x up) is +x, so the point lies 1 m across and sqrt(13) m ahead,
+    // atan(1 / sqrt(13)) off the axis, where the picture's edge is half the 55 degree field away.
+    const double across = std::atan(1 / std::sqrt(13.0)) / (27.5 * M_PI / 180);
+    CHECK(view_position(camera, Vec3(1, 0, 0), 55) == test::near(across, 1e-12));
+    CHECK(view_position(camera, Vec3(-1, 0, 0), 55) == test::near(-across, 1e-12));
     CHECK(view_position(camera, Vec3(0, 0, 0), 55) == doctest::Approx(0).epsilon(1e-12));
     CHECK(view_position(camera, Vec3(50, 0, 0), 55) == 1.0);    // far outside the picture: clamped
     CHECK(view_position(camera, Vec3(1, -5, 0), 55) == 1.0);    // behind the camera, to its right
@@ -142,7 +140,7 @@ TEST_SUITE("sound") {
   }
 
   TEST_CASE("the shot's track: exactly its length, a sound at every hit, the cushion on its side, reproducible") {
-    const auto shot = load(kScene);
+    const auto shot = test::load_clean(kScene, "sound");
     const double duration = shot->timeline.duration();
     const auto samples = static_cast<std::size_t>(std::llround(duration * kSampleRate));
     AudioBuffer audio;
@@ -187,8 +185,7 @@ TEST_SUITE("sound") {
     const std::string path = (dir.path / "t.wav").string();
     std::string error;
     REQUIRE(write_wav(path, audio, error));
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = test::require_file(path);
     REQUIRE(bytes.size() > 44);
     CHECK(bytes.substr(0, 4) == "RIFF");
     CHECK(bytes.substr(8, 4) == "WAVE");

@@ -4,13 +4,14 @@
 
 #include <string>
 
+#include "fixtures.h"
 #include "scene_parse.h"
 
 using namespace bsim;
 
 namespace {
 
-const std::string kCam = "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+const std::string kCam = test::fixtures::kHoverCamera;
 const std::string kBall0 = "ball 0 0 0 0.028575 1 0 0 1 0 0 0\n";
 
 std::string all_messages(const ParseResult& r) {

@@ -69,4 +69,40 @@ bool parse_size_option(std::string_view text, int& width, int& height) {
   return true;
 }
 
+std::string bad_value_message(std::string_view name, std::string_view text, std::string_view expected) {
+  return "bad value '" + std::string(text) + "' for " + std::string(name) + ": expected " + std::string(expected);
+}
+
+std::string unknown_option_message(std::string_view name) {
+  return "unknown option '" + std::string(name) + "' (see --help)";
+}
+
+SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::string& message) {
+  const std::string& name = reader.word();
+  if (name == "--strict") {
+    if (!reader.no_value(message)) return SharedOption::bad;
+    o.strict = true;
+    return SharedOption::applied;
+  }
+  if (name != "--fps" && name != "--size") return SharedOption::not_shared;
+  const auto v = reader.value(message);
+  if (!v) return SharedOption::bad;
+  if (name == "--fps") {
+    const auto fps = parse_int_option(*v, 1, kMaxFps);
+    if (!fps) {
+      message = bad_value_message(name, *v, "a whole number of frames per second from 1 to " + std::to_string(kMaxFps));
+      return SharedOption::bad;
+    }
+    o.fps = *fps;
+  } else {
+    if (!parse_size_option(*v, o.width, o.height)) {
+      message = bad_value_message(
+          name, *v, "WIDTHxHEIGHT in pixels, e.g. 1280x720, each from 1 to " + std::to_string(kMaxImageSide));
+      return SharedOption::bad;
+    }
+    o.size_given = true;
+  }
+  return SharedOption::applied;
+}
+
 }  // namespace bsim

@@ -41,6 +41,27 @@ std::optional<double> parse_real_option(std::string_view text);
 /// "WxH" with both parts from 1 to kMaxImageSide.
 bool parse_size_option(std::string_view text, int& width, int& height);
 
+/// "bad value 'TEXT' for NAME: expected EXPECTED": how both programs reject an option's value.
+std::string bad_value_message(std::string_view name, std::string_view text, std::string_view expected);
+/// "unknown option 'NAME' (see --help)".
+std::string unknown_option_message(std::string_view name);
+
+/// The options both programs take, with their defaults. apply_shared_option() reads and checks
+/// them, so each is parsed in one place and rejected in the same words by both.
+struct SharedOptions {
+  int fps = 30;             ///< --fps N: frames per second of the movie or the animatic
+  int width = 1280;         ///< --size WxH: pixels
+  int height = 720;
+  bool size_given = false;  ///< --size was given
+  bool strict = false;      ///< --strict: accept only the original scene language
+};
+
+enum class SharedOption { not_shared, applied, bad };
+
+/// Applies the reader's current option when it is one of the shared ones (--fps, --size, --strict):
+/// `applied`, or `bad` with `message` set; `not_shared` leaves it to the program.
+SharedOption apply_shared_option(ArgReader& reader, SharedOptions& options, std::string& message);
+
 enum class ArgumentsOutcome { run, exit_success, exit_usage };
 
 /// The loop both front ends share: one positional scene path, `-h`/`--help` (prints `usage`),

@@ -6,6 +6,7 @@
 
 #include "physics_params.h"
 #include "source_loc.h"
+#include "table.h"
 #include "vec.h"
 
 namespace bsim {
@@ -68,9 +69,8 @@ struct Scene {
   PhysicsParams physics;
 };
 
-/// The standard 9-foot table's cushions and pockets (the spec's numbering).
+/// The standard 9-foot table's (kStandardTable's) cushions and pockets, in the spec's numbering.
 std::vector<Rail> standard_rails();
 std::vector<Pocket> standard_pockets();
-constexpr double kStandardNoseHeight = 0.0363;  ///< m above the bed
 
 }  // namespace bsim

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "camera_interpolation.h"
+#include "table.h"
 
 namespace bsim {
 
@@ -14,6 +15,9 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// deg above the horizon of the default camera: high enough to see the whole bed, low enough for depth.
 constexpr double kDefaultElevationDeg = 55.0;
+/// Horizontal over total length of a view direction below which it counts as vertical: about 0.06
+/// degrees, where a z-up picture frame degenerates (and POV-Ray's look_at would too).
+constexpr double kVerticalView = 1e-3;
 
 /// "7 events (0 to 6)", "1 ball (index 0)".
 std::string counted(int count, const std::string& noun) {
@@ -74,15 +78,26 @@ bool check_balls(const Scene& scene, std::vector<Diagnostic>& diagnostics) {
 
 }  // namespace
 
+Vec3 straight_down() { return Vec3(0, 0, -1); }
+
+CameraPose straight_down_camera(const Vec3& look_at, double height) {
+  CameraPose pose;
+  pose.look_at = look_at;
+  pose.location = look_at - height * straight_down();
+  return pose;
+}
+
+Vec3 view_direction(const Vec3& location, const Vec3& look_at) { return unit_or(location, look_at, straight_down()); }
+
+Vec3 picture_up(const Vec3& direction) {
+  if (std::hypot(direction.x(), direction.y()) <= kVerticalView * direction.norm()) return Vec3::UnitY();
+  return Vec3::UnitZ();
+}
+
 CameraShot CameraScript::default_shot(const Scene& scene) {
-  Vec3 low(-1.27, -0.635, 0), high(1.27, 0.635, 0);
-  if (!scene.rails.empty()) {
-    low = high = scene.rails.front().a;
-    for (const Rail& rail : scene.rails) {
-      low = low.cwiseMin(rail.a).cwiseMin(rail.b);
-      high = high.cwiseMax(rail.a).cwiseMax(rail.b);
-    }
-  }
+  // The nose lines' extent (the standard bed's when the scene has none).
+  const TableRect noses = table_layout(scene).noses;
+  const Vec3 low(noses.x0, noses.y0, 0), high(noses.x1, noses.y1, 0);
   const Vec3 centre(0.5 * (low.x() + high.x()), 0.5 * (low.y() + high.y()), 0);
   const double half_x = 0.5 * (high.x() - low.x()), half_y = 0.5 * (high.y() - low.y());
   // Far enough that the long side fills the width with a margin, from the near long side.
@@ -182,9 +197,8 @@ CameraPose CameraScript::interpolate(const CameraWindow& window, double t) const
   const Vec3 middle = shot_pose(window.shot, window.event_time).look_at;
   const double from_distance = (from.look_at - from.location).norm();
   const double to_distance = (to.look_at - to.location).norm();
-  // A camera sitting on its look point has no direction; borrow the other end's (or look down).
-  const Vec3 down(0, 0, -1);
-  const Vec3 to_direction = unit_or(to.location, to.look_at, unit_or(from.location, from.look_at, down));
+  // A camera sitting on its look point has no direction; borrow the other end's (or look straight down).
+  const Vec3 to_direction = unit_or(to.location, to.look_at, view_direction(from.location, from.look_at));
   const Vec3 from_direction = unit_or(from.location, from.look_at, to_direction);
 
   const double u = std::clamp((t - window.begin) / (window.end - window.begin), 0.0, 1.0);

@@ -6,6 +6,7 @@
 
 #include "camera_interpolation.h"
 #include "cue_pose.h"
+#include "table.h"
 
 namespace bsim {
 
@@ -26,7 +27,9 @@ double cushion_gap(const CuePose& stick, const Rail& rail) {
   if (!(length > 0)) return std::numeric_limits<double>::infinity();
   const Vec3 along = (b - a) / length;
   const Vec3 outward(-along.y(), along.x(), 0);  // playing side is on the right of a -> b
-  const double top = 0.5 * (rail.a.z() + rail.b.z()) + kCushionTopAboveNose;
+  // The block behind the nose: cushion and wood, up to the wood's top (above the cushion's).
+  const double top = 0.5 * (rail.a.z() + rail.b.z()) + kStandardTable.rail.top_rise;
+  const double reach = kStandardTable.rail_reach();
   double gap = std::numeric_limits<double>::infinity();
   for (double s = 0; s <= kCueLength + 1e-9; s += kAxisStep) {
     const Vec3 point = stick.tip + s * stick.axis;
@@ -34,7 +37,7 @@ double cushion_gap(const CuePose& stick, const Rail& rail) {
     Vec3 flat = point - a;
     flat.z() = 0;
     const double out = flat.dot(outward), at = flat.dot(along);
-    if (out < -radius || out > kCushionWidth || at < -kCushionWidth || at > length + kCushionWidth) continue;
+    if (out < -radius || out > reach || at < -reach || at > length + reach) continue;
     gap = std::min(gap, lowest_z(point, stick.axis, radius) - top);
   }
   return gap;

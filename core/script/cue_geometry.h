@@ -10,16 +10,13 @@
 
 namespace bsim {
 
-/// m the cushion's top rises above its nose line, and m it reaches outward from the nose (with the
-/// wooden rail): the block the stick must pass over when a ball lies near a cushion.
-inline constexpr double kCushionTopAboveNose = 0.012;
-inline constexpr double kCushionWidth = 0.18;
-
 /// m, the stick's radius at distance `s` from the tip along its axis.
 double stick_radius(double s);
 
 /// The smallest gap, m, between the stick and the bed, the cushions and the balls of `balls`
 /// (pocketed ones ignored), skipping the ball `skip` (-1 for none); negative where it cuts in.
+/// Each cushion is the block the table model puts behind its nose line: the cushion and the wood
+/// together (kStandardTable.rail_reach() wide, beyond the line's ends too), as high as the wood's top.
 double stick_clearance(const CuePose& stick, const Scene& scene, const std::vector<BallState>& balls,
                        double ball_radius, int skip = -1);
 

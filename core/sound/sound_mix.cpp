@@ -34,12 +34,9 @@ double pan_of(const SoundSource& shot, double t, const Vec3& where) {
 }  // namespace
 
 double view_position(const CameraPose& camera, const Vec3& point, double fov_deg) {
-  const Vec3 forward = camera.look_at - camera.location;
-  if (forward.norm() < 1e-12) return 0.0;
-  const Vec3 f = forward.normalized();
-  Vec3 right = f.cross(Vec3::UnitZ());  // z up: forward x up points to the right of the picture
-  if (right.norm() < 1e-9) right = Vec3::UnitX();  // looking straight down: the picture's x is the table's
-  right.normalize();
+  // The picture's frame as the front ends draw it (a camera on its look point looks straight down).
+  const Vec3 f = view_direction(camera.location, camera.look_at);
+  const Vec3 right = f.cross(picture_up(f)).normalized();  // forward x up points to the picture's right
   const Vec3 d = point - camera.location;
   const double across = d.dot(right), ahead = d.dot(f);
   const double half = fov_deg * std::numbers::pi / 360.0;

@@ -16,11 +16,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "builtin_scene.h"
+#include "files.h"
 #include "frames.h"
 #include "shot.h"
 
@@ -68,11 +68,6 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 std::string load_average() {
@@ -136,7 +131,7 @@ int main(int argc, char** argv) {
     const Run r = run({preview, "--at", at, "--size", "1280x720", "-o", png}, log);
     if (r.status != 0) {
       std::fprintf(stderr, "bench_preview: billiards-preview --at %s failed (status %d):\n%s", at, r.status,
-                   slurp(log).c_str());
+                   bsim::test::read_file(log).value_or("").c_str());
       status = 1;
       break;
     }
@@ -153,7 +148,7 @@ int main(int argc, char** argv) {
     const Run r = run({preview, "--movie", (dir / "break.mp4").string()}, log);
     if (r.status != 0) {
       std::fprintf(stderr, "bench_preview: billiards-preview --movie failed (status %d):\n%s", r.status,
-                   slurp(log).c_str());
+                   bsim::test::read_file(log).value_or("").c_str());
       status = 1;
     } else {
       std::printf("animatic (--movie FILE.mp4, %d frames at 30 fps with sound): wall %.2f s, CPU %.2f s with ffmpeg "

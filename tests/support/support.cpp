@@ -1,36 +1,43 @@
 #include "support.h"
 
-#include <cstdio>
+#include <doctest/doctest.h>
+
 #include <cstdlib>
-#include <fstream>
+#include <optional>
 #include <random>
-#include <sstream>
+#include <utility>
 #include <sys/wait.h>
 
-namespace bsim::test {
+#include "files.h"
 
-namespace {
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
+namespace bsim::test {
 
 CommandResult run_command(const std::string& command) {
   TempDir capture;
   const auto out = capture.path / "out", err = capture.path / "err";
-  const std::string full = "(" + command + ") </dev/null >'" + out.string() + "' 2>'" + err.string() + "'";
+  const std::string full = "(" + command + ") </dev/null >" + quoted(out.string()) + " 2>" + quoted(err.string());
   const int status = std::system(full.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = read_file(out).value_or("");
+  r.err = read_file(err).value_or("");
   return r;
 }
 
 std::string bin(const std::string& name) { return std::string(BSIM_BIN_DIR) + "/" + name; }
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+void require_program(const std::string& program) {
+  const bool found = run_command("command -v " + quoted(program)).exit_code == 0;
+  REQUIRE_MESSAGE(found, program << " is not installed: run bash .ci/test, which installs it");
+}
+
+std::string require_file(const std::filesystem::path& path) {
+  std::optional<std::string> bytes = read_file(path);
+  REQUIRE_MESSAGE(bytes.has_value(), "cannot read " << path);
+  return std::move(*bytes);
+}
 
 TempDir::TempDir() {
   std::random_device device;
@@ -49,7 +56,7 @@ TempDir::~TempDir() {
 std::string TempDir::file(const std::string& name, const std::string& contents) const {
   const auto p = path / name;
   std::filesystem::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << contents;
+  REQUIRE_MESSAGE(write_file(p, contents), "cannot write " << p);
   return p.string();
 }
 

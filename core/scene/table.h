@@ -1,0 +1,135 @@
+#pragma once
+// The pool table, one description for every reader: the physics' standard table (its bed, noses
+// and pockets), the cue stick's clearance over the cushions, and both front ends' models (the GL
+// preview's meshes and the POV-Ray include). A scene may bring its own nose lines and pockets; the
+// cushion profile, the wooden rail, the sights and the bed's height above the floor are the same
+// on every table.
+//
+// Numbers are a standard 9-foot pool table's, after the WPA equipment specifications where they
+// give one (marked "WPA"); the rest (which the WPA leaves open) are typical of commercial tables
+// with K-66 cushions.
+#include <vector>
+
+#include "vec.h"
+
+namespace bsim {
+
+struct Scene;
+
+/// The cushion's cross-section, measured from its nose line outward.
+struct CushionProfile {
+  double width = 0;     ///< m, the cloth-covered cushion's top from the nose to the wood
+  double top_rise = 0;  ///< m, the cushion's top above its nose
+  double undercut = 0;  ///< m, how far behind the nose the cushion's foot meets the bed
+};
+
+/// The wooden rail (the rail cap) that holds the cushion, seen from above.
+struct WoodRail {
+  double width = 0;     ///< m, the wood's top from the cushion to the table's outer edge
+  double top_rise = 0;  ///< m, the wood's top above the cushion nose
+};
+
+/// The diamond sights inlaid in the wood's top.
+struct Sights {
+  int long_spaces = 0;   ///< the long side between its corner pockets is divided into this many spaces
+  int short_spaces = 0;  ///< and the short side into this many; a sight marks each division
+  double from_nose = 0;  ///< m, each sight's centre from the cushion's nose line
+  double length = 0;     ///< m, the diamond's diagonal along the rail
+  double width = 0;      ///< m, its diagonal across the rail
+};
+
+struct TableSpec {
+  double half_length = 0;           ///< m, half the bed from nose to nose along x
+  double half_width = 0;            ///< m, half the bed from nose to nose along y
+  double nose_height = 0;           ///< m, the cushion nose above the bed
+  double corner_pocket_radius = 0;  ///< m, the drop circle of a corner pocket, centred on the nose corner
+  double side_pocket_radius = 0;    ///< m, the drop circle of a side pocket
+  double bed_height = 0;            ///< m, the bed above the floor
+  CushionProfile cushion;
+  WoodRail rail;
+  Sights sights;
+
+  /// m from the nose line to the table's outer edge: cushion and wood together, all that a cue
+  /// stick reaching over a cushion must clear.
+  constexpr double rail_reach() const { return cushion.width + rail.width; }
+};
+
+/// The standard 9-foot pool table.
+inline constexpr TableSpec kStandardTable{
+    // WPA: the playing surface is 100 x 50 in (2.54 x 1.27 m) between the cushion noses.
+    .half_length = 1.27,
+    .half_width = 0.635,
+    // WPA: the nose stands 62.5 % to 64.5 % of the ball's diameter above the bed; 63.5 % of
+    // 57.15 mm is 36.3 mm (1 7/16 in).
+    .nose_height = 0.0363,
+    // The drop circles the physics uses, centred on the nose corners and the side cushions' gap
+    // (16 cm and 13 cm across): a ball whose centre crosses one falls. A simplification of the
+    // WPA's mouths, 4.5 to 4.625 in between the corner jaws, side mouths about 1/2 in wider.
+    .corner_pocket_radius = 0.08,
+    .side_pocket_radius = 0.065,
+    // WPA: the bed stands 29 1/4 to 31 in (0.743 to 0.787 m) above the floor.
+    .bed_height = 0.76,
+    .cushion =
+        {
+            // WPA: the cloth-covered cushion is 1 7/8 to 2 in wide from the feather strip's outer
+            // edge to the nose; 5 cm is the upper end, as on most 9-foot tables.
+            .width = 0.05,
+            // The cushion's top meets the wood 1.2 mm (the cloth and the feather strip) below
+            // the rail cap's top.
+            .top_rise = 0.0108,
+            // A K-66 cushion's face slopes back from the nose to its foot, 13.5 mm behind it.
+            .undercut = 0.0135,
+        },
+    .rail =
+        {
+            // WPA: the rail, cushion included, is 4 to 7 1/2 in (10.2 to 19.1 cm) wide; a 13 cm
+            // cap makes 18 cm (7.1 in) with the cushion, the width of heavy 9-foot tables.
+            .width = 0.13,
+            // The rail cap stands 12 mm above the nose, 48 mm (1.9 in) above the bed (the WPA
+            // gives no figure).
+            .top_rise = 0.012,
+        },
+    .sights =
+        {
+            // WPA: 18 sights, 12 1/2 in apart on a 9-foot table: eighths of the long side (the
+            // middle one is the side pocket) and quarters of the short side.
+            .long_spaces = 8,
+            .short_spaces = 4,
+            // WPA: each sight's centre is 3 11/16 in (93.7 mm) from the cushion's nose.
+            .from_nose = 0.0937,
+            // WPA: a diamond sight is 1 x 7/16 in to 1 1/4 x 5/8 in; 28 x 14 mm lies between.
+            .length = 0.028,
+            .width = 0.014,
+        },
+};
+
+/// m, the standard nose height above the bed (what a `rail` line usually gives as z).
+inline constexpr double kStandardNoseHeight = kStandardTable.nose_height;
+
+/// An axis-aligned rectangle on the bed plane, m.
+struct TableRect {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  TableRect grown(double by) const { return {x0 - by, y0 - by, x1 + by, y1 + by}; }
+};
+
+/// One diamond sight: its centre on the wood's top and which way its long diagonal runs.
+struct SightPlace {
+  Vec3 centre{0, 0, 0};  ///< m; z is the wood's top
+  bool along_x = true;   ///< on a long side (the diamond's length along x), else on a short side
+};
+
+/// Where the standard cushion, wood and sights stand around one scene's nose lines: what both front
+/// ends build their table from.
+struct TableLayout {
+  TableRect noses;          ///< the nose lines' bounding box (the standard bed's when there are none)
+  TableRect wood_inner;     ///< where the wood begins: the noses grown by the cushion's width
+  TableRect wood_outer;     ///< the table's outer edge: grown further by the wood's width
+  double nose_height = 0;   ///< m, the highest nose (the standard one when there are none)
+  double cushion_top = 0;   ///< m above the bed, the cushions' top where it meets the wood
+  double rail_top = 0;      ///< m above the bed, the wood's top
+  std::vector<SightPlace> sights;
+};
+
+TableLayout table_layout(const Scene& scene);
+
+}  // namespace bsim

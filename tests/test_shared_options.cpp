@@ -1,0 +1,105 @@
+// The options both programs take (--fps, --size, --strict) are read in one place: the same
+// defaults, the same accepted forms and the same words for a bad value in billiards-export and
+// billiards-preview.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "command_line.h"
+#include "export_options.h"
+#include "preview_options.h"
+
+using namespace bsim;
+
+namespace {
+
+std::string export_rejection(const std::vector<std::string>& args) {
+  ExportOptions o;
+  std::string message;
+  CHECK(parse_export_options(args, o, message) == CommandLineOutcome::exit_usage);
+  return message;
+}
+
+std::string preview_rejection(const std::vector<std::string>& args) {
+  PreviewOptions o;
+  std::string message;
+  CHECK(parse_preview_options(args, o, message) == PreviewCommandLineOutcome::exit_usage);
+  return message;
+}
+
+}  // namespace
+
+TEST_SUITE("shared options") {
+  TEST_CASE("the same defaults") {
+    ExportOptions e;
+    PreviewOptions p;
+    std::string message;
+    REQUIRE(parse_export_options({}, e, message) == CommandLineOutcome::run);
+    REQUIRE(parse_preview_options({}, p, message) == PreviewCommandLineOutcome::run);
+    const SharedOptions defaults;
+    CHECK(e.fps == defaults.fps);
+    CHECK(p.fps == defaults.fps);
+    CHECK(e.width == defaults.width);
+    CHECK(p.width == defaults.width);
+    CHECK(e.height == p.height);
+    CHECK_FALSE(e.strict);
+    CHECK_FALSE(p.strict);
+    CHECK_FALSE(e.size_given);
+    CHECK_FALSE(p.size_given);
+  }
+
+  TEST_CASE("the same accepted forms") {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"--fps", "24", "--size", "640x360", "--strict"},
+                                                std::vector<std::string>{"--fps=24", "--size=640x360", "--strict"}}) {
+      ExportOptions e;
+      PreviewOptions p;
+      std::string message;
+      REQUIRE(parse_export_options(args, e, message) == CommandLineOutcome::run);
+      REQUIRE(parse_preview_options(args, p, message) == PreviewCommandLineOutcome::run);
+      for (const SharedOptions* o : {static_cast<const SharedOptions*>(&e), static_cast<const SharedOptions*>(&p)}) {
+        CHECK(o->fps == 24);
+        CHECK(o->width == 640);
+        CHECK(o->height == 360);
+        CHECK(o->size_given);
+        CHECK(o->strict);
+      }
+    }
+  }
+
+  TEST_CASE("the same words for a bad value, from the one reader") {
+    const std::vector<std::vector<std::string>> bad = {
+        {"--fps", "0"}, {"--fps", "2.5"}, {"--fps", "1001"}, {"--fps"},          {"--size", "12"},
+        {"--size", "0x10"}, {"--size", "+640x360"}, {"--size"}, {"--strict=yes"}};
+    for (const auto& args : bad) {
+      CAPTURE(args.front());
+      const std::string message = export_rejection(args);
+      CHECK_FALSE(message.empty());
+      CHECK(message == preview_rejection(args));
+      // The message is the shared reader's own.
+      ArgReader reader(args);
+      REQUIRE(reader.next());
+      SharedOptions o;
+      std::string shared;
+      CHECK(apply_shared_option(reader, o, shared) == SharedOption::bad);
+      CHECK(shared == message);
+    }
+    CHECK(export_rejection({"--fps", "0"}) ==
+          "bad value '0' for --fps: expected a whole number of frames per second from 1 to 1000");
+    CHECK(export_rejection({"--size", "12"}) ==
+          "bad value '12' for --size: expected WIDTHxHEIGHT in pixels, e.g. 1280x720, each from 1 to 16384");
+    CHECK(export_rejection({"--strict=yes"}) == "--strict takes no value, found 'yes'");
+    CHECK(export_rejection({"--bogus"}) == preview_rejection({"--bogus"}));
+  }
+
+  TEST_CASE("an option neither shares is left to its program") {
+    const std::vector<std::string> args = {"--jobs", "2"};
+    ArgReader reader(args);
+    REQUIRE(reader.next());
+    SharedOptions o;
+    std::string message;
+    CHECK(apply_shared_option(reader, o, message) == SharedOption::not_shared);
+    CHECK(message.empty());
+    CHECK(unknown_option_message("--jobs") == "unknown option '--jobs' (see --help)");
+  }
+}

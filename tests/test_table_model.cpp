@@ -1,0 +1,188 @@
+// One table for every reader: the physics' standard table, the cue stick's clearance, the GL
+// preview's meshes and the POV-Ray include all take the cushion, the wood and the sights from
+// kStandardTable and table_layout().
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "cue_geometry.h"
+#include "pov_format.h"
+#include "pov_table.h"
+#include "scene.h"
+#include "table.h"
+#include "table_model.h"
+
+using namespace bsim;
+
+namespace {
+
+Scene standard_scene() {
+  Scene scene;
+  scene.rails = standard_rails();
+  scene.pockets = standard_pockets();
+  return scene;
+}
+
+std::string include_text(const Scene& scene) {
+  std::ostringstream out;
+  write_pov_include(scene, Quality::draft, out);
+  return out.str();
+}
+
+/// The value of `#declare NAME = VALUE;` in a POV-Ray include, or "" when it is not there.
+std::string declared(const std::string& text, const std::string& name) {
+  const std::string key = "#declare " + name + " = ";
+  const auto at = text.find(key);
+  if (at == std::string::npos) return "";
+  const auto begin = at + key.size();
+  return text.substr(begin, text.find(';', begin) - begin);
+}
+
+struct Extent {
+  double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9, z1 = -1e9;
+};
+
+Extent extent(const MeshData& mesh) {
+  Extent e;
+  for (const Vertex& v : mesh.vertices) {
+    e.x0 = std::min<double>(e.x0, v.position[0]);
+    e.y0 = std::min<double>(e.y0, v.position[1]);
+    e.x1 = std::max<double>(e.x1, v.position[0]);
+    e.y1 = std::max<double>(e.y1, v.position[1]);
+    e.z1 = std::max<double>(e.z1, v.position[2]);
+  }
+  return e;
+}
+
+constexpr double kFloat = 1e-6;  // m, the meshes hold floats
+
+}  // namespace
+
+TEST_SUITE("table model") {
+  TEST_CASE("the physics' standard table is the description's") {
+    const TableSpec& t = kStandardTable;
+    const auto rails = standard_rails();
+    const auto pockets = standard_pockets();
+    REQUIRE(rails.size() == 6);
+    REQUIRE(pockets.size() == 6);
+    for (const Rail& r : rails) {
+      CHECK(r.a.z() == t.nose_height);
+      CHECK(r.b.z() == t.nose_height);
+    }
+    CHECK(rails[2].a.x() == t.half_length);
+    CHECK(rails[0].a.y() == t.half_width);
+    CHECK(rails[0].a.x() == -t.half_length + t.corner_pocket_radius);
+    CHECK(pockets[0].radius == t.corner_pocket_radius);
+    CHECK(pockets[1].radius == t.side_pocket_radius);
+    CHECK(kStandardNoseHeight == t.nose_height);
+  }
+
+  TEST_CASE("real 9-foot numbers: a 5 cm cushion, a rail within the WPA's 4 to 7 1/2 in, 18 sights") {
+    const TableSpec& t = kStandardTable;
+    CHECK(t.cushion.width == doctest::Approx(0.05));
+    CHECK(t.rail_reach() >= 0.1016);
+    CHECK(t.rail_reach() <= 0.1905);
+    CHECK(t.rail.top_rise > t.cushion.top_rise);  // the wood stands a little proud of the cushion
+    CHECK(table_layout(standard_scene()).sights.size() == 18);
+  }
+
+  TEST_CASE("the layout grows the noses by the cushion, then the wood; a scene without cushions gets the standard bed") {
+    const TableLayout layout = table_layout(standard_scene());
+    const TableSpec& t = kStandardTable;
+    CHECK(layout.noses.x1 == t.half_length);
+    CHECK(layout.noses.y0 == -t.half_width);
+    CHECK(layout.wood_inner.x1 == doctest::Approx(t.half_length + t.cushion.width));
+    CHECK(layout.wood_outer.y1 == doctest::Approx(t.half_width + t.rail_reach()));
+    CHECK(layout.rail_top == doctest::Approx(t.nose_height + t.rail.top_rise));
+    CHECK(layout.cushion_top == doctest::Approx(t.nose_height + t.cushion.top_rise));
+    for (const SightPlace& s : layout.sights) {
+      const double from_nose = s.along_x ? std::abs(s.centre.y()) - t.half_width : std::abs(s.centre.x()) - t.half_length;
+      CHECK(from_nose == doctest::Approx(t.sights.from_nose));
+      CHECK(s.centre.z() == layout.rail_top);
+    }
+
+    Scene bare;
+    bare.pockets = standard_pockets();
+    const TableLayout standard = table_layout(bare);
+    CHECK(standard.noses.x0 == -t.half_length);
+    CHECK(standard.noses.y1 == t.half_width);
+    CHECK(standard.nose_height == t.nose_height);
+
+    Scene high = standard_scene();
+    for (Rail& r : high.rails) r.a.z() = r.b.z() = 0.05;
+    CHECK(table_layout(high).rail_top == doctest::Approx(0.05 + t.rail.top_rise));
+  }
+
+  TEST_CASE("the preview's cushion and wood come from the model") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const TableModel model = build_table_model(scene);
+    const Extent cloth = extent(model.cloth);
+    CHECK(cloth.x1 == doctest::Approx(layout.noses.x1 + kStandardTable.cushion.width).epsilon(kFloat));
+    CHECK(cloth.y0 == doctest::Approx(layout.noses.y0 - kStandardTable.cushion.width).epsilon(kFloat));
+    const Extent tops = extent(model.tops);
+    CHECK(tops.x1 == doctest::Approx(layout.noses.x1 + kStandardTable.rail_reach()).epsilon(kFloat));
+    CHECK(tops.y1 == doctest::Approx(layout.noses.y1 + kStandardTable.rail_reach()).epsilon(kFloat));
+    CHECK(model.top_height == layout.rail_top);
+  }
+
+  TEST_CASE("the POV-Ray include declares the same model, not numbers of its own") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const std::string text = include_text(scene);
+    CHECK(declared(text, "CushionW") == pov_number(kStandardTable.cushion.width));
+    CHECK(declared(text, "CushionUndercut") == pov_number(kStandardTable.cushion.undercut));
+    CHECK(declared(text, "CushionTopZ") == pov_number(layout.cushion_top));
+    CHECK(declared(text, "RailW") == pov_number(kStandardTable.rail.width));
+    CHECK(declared(text, "RailTopZ") == pov_number(layout.rail_top));
+    CHECK(declared(text, "FloorZ") == pov_number(-kStandardTable.bed_height));
+    CHECK(declared(text, "SightLength") == pov_number(kStandardTable.sights.length));
+    CHECK(declared(text, "SightWidth") == pov_number(kStandardTable.sights.width));
+    CHECK(declared(text, "SightCount") == std::to_string(layout.sights.size()));
+    const SightPlace& first = layout.sights.front();
+    CHECK(declared(text, "SightC").find("{ " + pov_vector2(first.centre.x(), first.centre.y()) + ",") !=
+          std::string::npos);
+    // Each number is declared once, from the model: the fixed models hold none of their own.
+    for (const char* name : {"CushionW", "RailW", "RailTopZ", "FloorZ"})
+      CHECK(std::string(pov_models_text()).find(std::string("#declare ") + name) == std::string::npos);
+  }
+
+  TEST_CASE("the preview and POV-Ray agree on a table of the scene's own") {
+    Scene scene;
+    for (const auto& [a, b] : {std::pair{Vec3(-1.5, 0.8, 0.04), Vec3(1.5, 0.8, 0.04)},
+                               std::pair{Vec3(1.5, 0.8, 0.04), Vec3(1.5, -0.8, 0.04)},
+                               std::pair{Vec3(1.5, -0.8, 0.04), Vec3(-1.5, -0.8, 0.04)},
+                               std::pair{Vec3(-1.5, -0.8, 0.04), Vec3(-1.5, 0.8, 0.04)}})
+      scene.rails.push_back(Rail{a, b, {}});
+    const TableModel model = build_table_model(scene);
+    const std::string text = include_text(scene);
+    CHECK(declared(text, "RailTopZ") == pov_number(model.top_height));
+    const Extent cloth = extent(model.cloth);
+    CHECK(declared(text, "CushionW") == pov_number(std::round((cloth.x1 - 1.5) * 1e6) / 1e6));
+    const Extent tops = extent(model.tops);
+    CHECK(pov_number(std::round((tops.x1 - cloth.x1) * 1e6) / 1e6) == declared(text, "RailW"));
+  }
+
+  TEST_CASE("the cue stick clears the model's cushion and wood, and nothing beyond them") {
+    const Scene scene = standard_scene();
+    const TableSpec& t = kStandardTable;
+    // A level stick along the top long cushions (over both, across the side pocket), its lowest point
+    // (the butt) 2 mm above the wood's top.
+    const double z = t.nose_height + t.rail.top_rise + kCueButtRadius + 0.002;
+    const auto stick_at = [&](double from_nose) {
+      CuePose pose;
+      pose.tip = Vec3(-0.7, t.half_width + from_nose, z);
+      pose.axis = Vec3(1, 0, 0);
+      pose.visible = true;
+      return pose;
+    };
+    // Over the wood's outer edge: the block the model draws is the one the stick must clear.
+    CHECK(stick_clearance(stick_at(t.rail_reach() - 0.005), scene, {}, 0.028575) == doctest::Approx(0.002));
+    // Just beyond the table's outer edge only the bed's plane is left to clear.
+    CHECK(stick_clearance(stick_at(t.rail_reach() + 0.005), scene, {}, 0.028575) ==
+          doctest::Approx(z - kCueButtRadius));
+  }
+}
