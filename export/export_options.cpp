@@ -28,7 +28,8 @@ options:
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";
 
-/// One option; false with `message` set when it is unknown or its value is bad.
+/// One option of this program's own (the shared ones are read by read_arguments); false with
+/// `message` set when it is unknown or its value is bad.
 bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
   const std::string& name = reader.word();
   auto value = [&]() { return reader.value(message); };
@@ -36,11 +37,6 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
     message = bad_value_message(name, text, expected);
     return false;
   };
-  switch (apply_shared_option(reader, o, message)) {  // --fps, --size, --strict
-    case SharedOption::applied: return true;
-    case SharedOption::bad: return false;
-    case SharedOption::not_shared: break;
-  }
   if (name == "--events-only") return reader.no_value(message) && (o.events_only = true);
   if (name == "--no-render") return reader.no_value(message) && (o.no_render = true);
   if (name == "-o" || name == "--output") {
@@ -92,7 +88,7 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, kUsage, "billiards-export " BSIM_VERSION "\n", apply, message)) {
+  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-export " BSIM_VERSION "\n", apply, message)) {
     case ArgumentsOutcome::exit_success: return CommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return CommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

@@ -65,11 +65,6 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     message = bad_value_message(name, text, expected);
     return false;
   };
-  switch (apply_shared_option(reader, o, message)) {  // --fps, --size, --strict
-    case SharedOption::applied: return true;
-    case SharedOption::bad: return false;
-    case SharedOption::not_shared: break;
-  }
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
   static constexpr std::string_view kWithValue[] = {"--at", "-o", "--output", "--movie", "--overlay", "--quit-after",
                                                     "--screenshot"};
@@ -120,7 +115,7 @@ PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& 
                                                 std::string& message) {
   options = PreviewOptions{};
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, kUsage, "billiards-preview " BSIM_VERSION "\n", apply, message)) {
+  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-preview " BSIM_VERSION "\n", apply, message)) {
     case ArgumentsOutcome::exit_success: return PreviewCommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return PreviewCommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

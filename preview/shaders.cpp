@@ -138,20 +138,27 @@ void main() {
 }
 )glsl";
 
+/// `object` when its `status` (compile or link) is good; otherwise 0, the object deleted and `error`
+/// set to `what` and GL's log.
+template <class GetStatus, class GetLog, class Delete>
+unsigned checked(GLuint object, GLenum status, GetStatus get_status, GetLog get_log, Delete destroy, const char* what,
+                 std::string& error) {
+  GLint ok = 0;
+  get_status(object, status, &ok);
+  if (ok) return object;
+  std::vector<char> log(4096);
+  get_log(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  error = std::string(what) + log.data();
+  destroy(object);
+  return 0;
+}
+
 unsigned compile(GLenum kind, const char* source, std::string& error) {
   const GLuint shader = glCreateShader(kind);
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    std::vector<char> log(4096);
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    error = std::string("shader does not compile: ") + log.data();
-    glDeleteShader(shader);
-    return 0;
-  }
-  return shader;
+  return checked(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader,
+                 "shader does not compile: ", error);
 }
 
 /// The ball's ivory (stripes' ground, number discs, the stick's ferrule), from the core's colours.
@@ -179,16 +186,8 @@ unsigned build_scene_program(Material material, std::string& error) {
   glLinkProgram(program);
   glDeleteShader(vertex);
   glDeleteShader(fragment);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    std::vector<char> log(4096);
-    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    error = std::string("shader program does not link: ") + log.data();
-    glDeleteProgram(program);
-    return 0;
-  }
-  return program;
+  return checked(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram,
+                 "shader program does not link: ", error);
 }
 
 }  // namespace bsim

@@ -65,12 +65,12 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& options, std:
 enum class ArgumentsOutcome { run, exit_success, exit_usage };
 
 /// The loop both front ends share: one positional scene path, `-h`/`--help` (prints `usage`),
-/// `--version` (prints `version_line`), and `apply(reader, message)` for every other option, which
-/// returns false with `message` set for a bad option or value.
+/// `--version` (prints `version_line`), the shared options into `shared`, and `apply(reader, message)`
+/// for every other option, which returns false with `message` set for a bad option or value.
 template <class Apply>
 ArgumentsOutcome read_arguments(const std::vector<std::string>& args, std::optional<std::string>& scene_path,
-                                std::string_view usage, std::string_view version_line, Apply&& apply,
-                                std::string& message) {
+                                SharedOptions& shared, std::string_view usage, std::string_view version_line,
+                                Apply&& apply, std::string& message) {
   message.clear();
   ArgReader reader(args);
   while (reader.next()) {
@@ -90,6 +90,11 @@ ArgumentsOutcome read_arguments(const std::vector<std::string>& args, std::optio
     if (word == "--version") {
       message = version_line;
       return ArgumentsOutcome::exit_success;
+    }
+    switch (apply_shared_option(reader, shared, message)) {
+      case SharedOption::applied: continue;
+      case SharedOption::bad: return ArgumentsOutcome::exit_usage;
+      case SharedOption::not_shared: break;
     }
     if (!apply(reader, message)) return ArgumentsOutcome::exit_usage;
   }
