@@ -4,9 +4,7 @@
 
 namespace bsim {
 
-inline int frame_count(double duration, int fps) {
-  return static_cast<int>(std::floor(duration * fps + 1e-9)) + 1;
-}
+inline int frame_count(double duration, int fps) { return static_cast<int>(std::floor(duration * fps + 1e-9)) + 1; }
 inline double frame_time(int frame, int fps) { return static_cast<double>(frame) / fps; }
 
 }  // namespace bsim

@@ -31,12 +31,12 @@ struct Shot {
 };
 
 struct ShotResult {
-  std::unique_ptr<Shot> shot;            ///< null when there is an error
+  std::unique_ptr<Shot> shot;  ///< null when there is an error
   /// Set when the scene parsed and simulated but its camera script does not fit the shot (an event
   /// number the shot lacks, say): the scene and timeline without camera or cue, so a picture of the
   /// shot's events can show the user why.
   std::unique_ptr<Shot> unscripted;
-  std::vector<Diagnostic> diagnostics;   ///< parse and post-simulation errors and warnings
+  std::vector<Diagnostic> diagnostics;  ///< parse and post-simulation errors and warnings
 };
 
 /// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics.

@@ -37,8 +37,8 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   out << "  \"pocketed\": [";
   const auto& drops = timeline.pocket_drops();
   for (std::size_t k = 0; k < drops.size(); ++k)
-    out << (k ? ",\n    " : "\n    ") << "{\"time\": " << format_number(drops[k].time) << ", \"ball\": " << drops[k].ball
-        << ", \"pocket\": " << drops[k].pocket << "}";
+    out << (k ? ",\n    " : "\n    ") << "{\"time\": " << format_number(drops[k].time)
+        << ", \"ball\": " << drops[k].ball << ", \"pocket\": " << drops[k].pocket << "}";
   out << (drops.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"final\": [";

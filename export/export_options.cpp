@@ -49,9 +49,12 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
   if (name == "--quality") {
     const auto v = value();
     if (!v) return false;
-    if (*v == "draft") o.quality = Quality::draft;
-    else if (*v == "final") o.quality = Quality::final;
-    else return bad(*v, "draft or final");
+    if (*v == "draft")
+      o.quality = Quality::draft;
+    else if (*v == "final")
+      o.quality = Quality::final;
+    else
+      return bad(*v, "draft or final");
     return true;
   }
   if (name == "--jobs") {
@@ -88,7 +91,8 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-export " BSIM_VERSION "\n", apply, message)) {
+  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-export " BSIM_VERSION "\n", apply,
+                         message)) {
     case ArgumentsOutcome::exit_success: return CommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return CommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

@@ -22,8 +22,8 @@ struct ExportOptions : SharedOptions {
   bool events_only = false;
   bool no_render = false;
   Quality quality = Quality::final;
-  int jobs = 0;                 ///< 0: one per core
-  double audio_lead = 0.0;      ///< s; set to the documented default by the parser
+  int jobs = 0;             ///< 0: one per core
+  double audio_lead = 0.0;  ///< s; set to the documented default by the parser
   std::string music_path;
 };
 

@@ -23,15 +23,14 @@ std::string duration_text(double seconds) {
 }  // namespace
 
 std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output) {
-  return {settings.ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
-          "-framerate", std::to_string(settings.fps), "-start_number", "0", "-i", "frames/frame_%05d.png",
-          "-i", "soundtrack.wav", "-map", "0:v:0", "-map", "1:a:0",
+  return {settings.ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
+          std::to_string(settings.fps), "-start_number", "0", "-i", "frames/frame_%05d.png", "-i", "soundtrack.wav",
+          "-map", "0:v:0", "-map", "1:a:0",
           // The frames k = 0..N show t = k/fps, one frame more than fills the shot: cut to the sound's length.
           "-t", duration_text(settings.duration),
           // yuv420p needs even sizes: pad an odd one by a pixel rather than fail
-          "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-          "-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt", "yuv420p",
-          "-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart", "-f", "mp4", output};
+          "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt",
+          "yuv420p", "-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart", "-f", "mp4", output};
 }
 
 RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings, std::string& error) {

@@ -9,7 +9,7 @@
 namespace bsim {
 
 struct MovieSettings {
-  std::string ffmpeg;   ///< full path of the program
+  std::string ffmpeg;  ///< full path of the program
   int fps = 30;
   double duration = 0;  ///< s, the shot's: the movie is cut to it
 };

@@ -62,7 +62,8 @@ int run(const bsim::ExportOptions& options) {
     return 1;
   }
   if (!write_staged(stage, "events.json", [&](std::ostream& o) { bsim::write_events_json(shot, o); }) ||
-      !write_staged(stage, "trajectory.csv", [&](std::ostream& o) { bsim::write_trajectory_csv(shot, options.fps, o); }) ||
+      !write_staged(stage, "trajectory.csv",
+                    [&](std::ostream& o) { bsim::write_trajectory_csv(shot, options.fps, o); }) ||
       !write_staged(stage, "camera.csv", [&](std::ostream& o) { bsim::write_camera_csv(shot, options.fps, o); }))
     return 1;
   if (!options.events_only && !bsim::write_frames_and_sound(shot, options, stage, error)) {
@@ -80,8 +81,8 @@ int run(const bsim::ExportOptions& options) {
     }
     std::cerr << "wrote " << dir << "/movie.mp4\n";
   } else {
-    std::cerr << "wrote " << dir << "/ (" << shot.timeline.events().size() << " events, "
-              << shot.timeline.duration() << " s)\n";
+    std::cerr << "wrote " << dir << "/ (" << shot.timeline.events().size() << " events, " << shot.timeline.duration()
+              << " s)\n";
   }
   return 0;
 }

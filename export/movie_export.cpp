@@ -97,20 +97,23 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
     error = "cannot create " + stage.path("frames") + ": " + ec.message();
     return false;
   }
-  if (!write_file(stage.path("frames/" + std::string(kPovIncludeName)),
-                  [&](std::ostream& out) { write_pov_include(shot.scene, options.quality, out); }, error))
+  if (!write_file(
+          stage.path("frames/" + std::string(kPovIncludeName)),
+          [&](std::ostream& out) { write_pov_include(shot.scene, options.quality, out); }, error))
     return false;
   const int frames = frame_count(shot.timeline.duration(), options.fps);
   for (int k = 0; k < frames; ++k) {
-    if (!write_file(stage.path("frames/" + frame_name(k) + ".pov"),
-                    [&](std::ostream& out) { write_pov_frame(shot, k, options.fps, out); }, error))
+    if (!write_file(
+            stage.path("frames/" + frame_name(k) + ".pov"),
+            [&](std::ostream& out) { write_pov_frame(shot, k, options.fps, out); }, error))
       return false;
   }
 
   // Exactly as long as the shot; the duration is a whole number of seconds, so of frames too.
   const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
   AudioBuffer audio;
-  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = options.audio_lead, .music_path = options.music_path}, samples, audio, error))
+  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
+                      {.lead = options.audio_lead, .music_path = options.music_path}, samples, audio, error))
     return false;
   return write_wav(stage.path("soundtrack.wav"), audio, error);
 }
@@ -127,8 +130,8 @@ bool render_movie(const Shot& shot, const ExportOptions& options, const std::str
 
   const std::string frames_dir = dir + "/frames";
   const int frames = frame_count(shot.timeline.duration(), options.fps);
-  const std::string settings = std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                               quality_name(options.quality);
+  const std::string settings =
+      std::to_string(options.width) + "x" + std::to_string(options.height) + " " + quality_name(options.quality);
   const std::uint64_t common = fnv1a(settings, fnv1a(read_text(frames_dir + "/" + std::string(kPovIncludeName))));
   FrameCache cache(frames_dir);
   remove_stale(frames_dir, frames, cache);

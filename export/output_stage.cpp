@@ -1,9 +1,9 @@
 #include "output_stage.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
-#include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -43,8 +43,8 @@ bool OutputStage::open(const std::string& dir, std::string& error) {
   std::string beside = ".";
   beside += destination.filename().string();
   beside += tag;
-  const fs::path staging = fs::is_directory(status) ? destination / tag
-                                                    : nearest_existing(destination.parent_path()) / beside;
+  const fs::path staging =
+      fs::is_directory(status) ? destination / tag : nearest_existing(destination.parent_path()) / beside;
   fs::remove_all(staging, ec);
   if (!fs::create_directory(staging, ec) || ec) {
     error = "cannot create the staging directory '" + staging.string() + "': " + reason(ec);

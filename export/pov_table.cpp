@@ -22,9 +22,8 @@ double cross(const Point2& o, const Point2& a, const Point2& b) {
 
 /// Counter-clockwise convex hull (Andrew's monotone chain): the playing area inside the noses.
 std::vector<Point2> convex_hull(std::vector<Point2> points) {
-  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  });
+  std::sort(points.begin(), points.end(),
+            [](const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   points.erase(std::unique(points.begin(), points.end(),
                            [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }),
                points.end());
@@ -90,7 +89,8 @@ void write_table_description(const TableLayout& layout, std::ostream& out) {
   out << "#declare CushionW = " << pov_number(spec.cushion.width) << ";  // the cushion's top, nose to the wood\n";
   out << "#declare CushionUndercut = " << pov_number(spec.cushion.undercut)
       << ";  // the cushion's foot on the bed, behind the nose\n";
-  out << "#declare CushionTopZ = " << pov_number(layout.cushion_top) << ";  // the cushions' top where it meets the wood\n";
+  out << "#declare CushionTopZ = " << pov_number(layout.cushion_top)
+      << ";  // the cushions' top where it meets the wood\n";
   out << "#declare RailW = " << pov_number(spec.rail.width) << ";  // width of the wooden rail's top\n";
   out << "#declare RailTopZ = " << pov_number(layout.rail_top) << ";  // the wood's top, a little above the noses\n";
   out << "#declare FloorZ = " << pov_number(-spec.bed_height) << ";\n";
@@ -98,7 +98,8 @@ void write_table_description(const TableLayout& layout, std::ostream& out) {
   out << "#declare SightWidth = " << pov_number(spec.sights.width) << ";  // and across it\n";
   out << "#declare SightCount = " << layout.sights.size() << ";\n";
   if (!layout.sights.empty()) {
-    write_array(out, "SightC", layout.sights, [](const SightPlace& s) { return pov_vector2(s.centre.x(), s.centre.y()); });
+    write_array(out, "SightC", layout.sights,
+                [](const SightPlace& s) { return pov_vector2(s.centre.x(), s.centre.y()); });
     write_array(out, "SightAlongX", layout.sights, [](const SightPlace& s) { return s.along_x ? "1" : "0"; });
   }
 }
@@ -118,7 +119,8 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
   out << "// Billiards Sim: the table, balls, cue stick, room and lights shared by every frame.\n"
          "// Units are metres, z is up, the bed is z = 0 and the table's middle is the origin.\n\n"
          "// ---- from the scene\n";
-  out << "#declare Final = " << (quality == Quality::final ? 1 : 0) << ";  // area light (final) or point lights (draft)\n";
+  out << "#declare Final = " << (quality == Quality::final ? 1 : 0)
+      << ";  // area light (final) or point lights (draft)\n";
   out << "#declare BallR = " << pov_number(scene.physics.ball_radius) << ";\n";
 
   std::vector<Point2> ends;

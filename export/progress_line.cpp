@@ -22,7 +22,10 @@ std::string clock_text(double seconds) {
 }  // namespace
 
 ProgressLine::ProgressLine(std::string label, int total, int already_done)
-    : label_(std::move(label)), total_(total), done_(already_done), enabled_(wanted()),
+    : label_(std::move(label)),
+      total_(total),
+      done_(already_done),
+      enabled_(wanted()),
       start_(std::chrono::steady_clock::now()) {
   draw();
 }

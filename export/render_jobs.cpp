@@ -97,10 +97,12 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     const std::string dir = frames_dir + "/";
     const std::string png = frame_name(job.frame) + ".png";
     std::error_code ec;
-    if (success && std::filesystem::exists(dir + temp_png(job.frame))) std::filesystem::rename(dir + temp_png(job.frame), dir + png, ec);
+    if (success && std::filesystem::exists(dir + temp_png(job.frame)))
+      std::filesystem::rename(dir + temp_png(job.frame), dir + png, ec);
     if (!success || ec || !std::filesystem::exists(dir + png)) {
       if (outcome == RunOutcome::done) {
-        const std::string said = success ? "POV-Ray wrote no picture" : error_from_log(read_text(dir + log_name(job.frame)));
+        const std::string said =
+            success ? "POV-Ray wrote no picture" : error_from_log(read_text(dir + log_name(job.frame)));
         error = "frame " + std::to_string(job.frame) + " (" + frame_name(job.frame) + ".pov) failed to render: " + said;
         outcome = RunOutcome::failed;
         stop_all();  // no point finishing the others: the movie cannot be made

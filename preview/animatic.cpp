@@ -93,7 +93,8 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const auto samples = static_cast<std::size_t>(frames) * kSampleRate / static_cast<std::size_t>(fps);
   AudioBuffer audio;
   const std::filesystem::path wav = temporary_file(".wav");
-  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = kAnimaticAudioLead, .music_path = {}}, samples, audio, error) ||
+  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = kAnimaticAudioLead, .music_path = {}},
+                      samples, audio, error) ||
       !write_wav(wav.string(), audio, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
@@ -111,14 +112,12 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const std::string target = *options.movie;
   const std::string partial = target + ".partial";
   const std::vector<std::string> args = {
-      "ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
-      "-f", "rawvideo", "-pix_fmt", "rgba", "-s", std::to_string(width) + "x" + std::to_string(height),
-      "-framerate", std::to_string(fps), "-i", "-", "-i", wav.string(),
-      "-map", "0:v:0", "-map", "1:a:0",
+      "ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
+      std::to_string(width) + "x" + std::to_string(height), "-framerate", std::to_string(fps), "-i", "-", "-i",
+      wav.string(), "-map", "0:v:0", "-map", "1:a:0",
       // GL rows come bottom-up; H.264 in 4:2:0 needs even sides, so an odd size gets one black line.
-      "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2",
-      "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20", "-pix_fmt", "yuv420p",
-      "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
+      "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20", "-pix_fmt",
+      "yuv420p", "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
   // A dead ffmpeg must show up as a failed write, not kill the process.
   const auto previous = std::signal(SIGPIPE, SIG_IGN);
   FfmpegPipe ffmpeg;
@@ -131,7 +130,8 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
     renderer.draw(shot.scene, frame, width, height);
     if (overlays) {
       ImDrawList* list = canvas.begin_2d();
-      draw_overlays(*list, OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
+      draw_overlays(*list,
+                    OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
                     options.overlays);
       canvas.end_2d();
     }

@@ -34,7 +34,8 @@ MeshData make_sphere_mesh(int slices, int stacks) {
   for (int i = 0; i < stacks; ++i)
     for (int j = 0; j < slices; ++j) {
       if (i > 0) mesh.indices.insert(mesh.indices.end(), {index(i, j), index(i + 1, j), index(i, j + 1)});
-      if (i + 1 < stacks) mesh.indices.insert(mesh.indices.end(), {index(i, j + 1), index(i + 1, j), index(i + 1, j + 1)});
+      if (i + 1 < stacks)
+        mesh.indices.insert(mesh.indices.end(), {index(i, j + 1), index(i + 1, j), index(i + 1, j + 1)});
     }
   return mesh;
 }
@@ -70,7 +71,8 @@ MeshData make_cue_mesh() {
       const double a = 2 * std::numbers::pi * k / kSides;
       mesh.add_vertex(Vec3(s, std::cos(a) * radius(s), std::sin(a) * radius(s)), normal, Vec3(1, 1, 1), s);
     }
-    for (std::uint32_t k = 0; k < kSides; ++k) mesh.indices.insert(mesh.indices.end(), {centre, centre + 1 + k, centre + 2 + k});
+    for (std::uint32_t k = 0; k < kSides; ++k)
+      mesh.indices.insert(mesh.indices.end(), {centre, centre + 1 + k, centre + 2 + k});
   }
   return mesh;
 }

@@ -25,7 +25,8 @@ UiFonts add_ui_fonts(ImFontAtlas& atlas, float size) {
   config.OversampleH = 2;
   config.OversampleV = 1;
   // Latin plus the arrows and dots the labels use.
-  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x2013, 0x2014, 0x2022, 0x2022, 0x2026, 0x2026, 0x2190, 0x2193, 0x25B2, 0x25BC, 0};
+  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x2013, 0x2014, 0x2022, 0x2022, 0x2026,
+                                    0x2026, 0x2190, 0x2193, 0x25B2, 0x25BC, 0};
   const auto add = [&](const std::string& path, float px) -> ImFont* {
     if (!path.empty()) return atlas.AddFontFromFileTTF(path.c_str(), px, &config, kRanges);
     ImFontConfig fallback;

@@ -40,7 +40,8 @@ void MeshData::add_quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
   const auto at = [&](int i, int j) { return first + static_cast<std::uint32_t>(j * (nu + 1) + i); };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i)
-      indices.insert(indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      indices.insert(indices.end(),
+                     {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
 }
 
 void MeshData::add_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& color) {
@@ -62,7 +63,8 @@ void MeshData::add_polygon(const std::vector<Vec3>& points, const Vec3& color) {
   normal.normalize();
   const std::uint32_t first = static_cast<std::uint32_t>(vertices.size());
   for (const Vec3& p : points) add_vertex(p, normal, color);
-  for (std::uint32_t k = 1; k + 1 < points.size(); ++k) indices.insert(indices.end(), {first, first + k, first + k + 1});
+  for (std::uint32_t k = 1; k + 1 < points.size(); ++k)
+    indices.insert(indices.end(), {first, first + k, first + k + 1});
 }
 
 void MeshData::add_box(const Vec3& lo, const Vec3& hi, const Vec3& color) {

@@ -51,12 +51,18 @@ OsmesaContext::~OsmesaContext() {
 bool OsmesaContext::open(int width, int height, std::string& error) {
   const OsmesaApi* api = osmesa_api(error);
   if (!api) return false;
-  const int attributes[] = {OSMESA_FORMAT,        OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,    24,
-                            OSMESA_STENCIL_BITS,  8,
-                            OSMESA_PROFILE,       OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 3,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            24,
+                            OSMESA_STENCIL_BITS,
+                            8,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
                             0};
   OSMesaContext context = api->create(attributes, nullptr);
   if (!context) {

@@ -46,8 +46,10 @@ void draw_projected_path(ImDrawList& list, const Projector& project, const std::
   };
   for (const Vec3& p : points) {
     ImVec2 s;
-    if (project(p, s)) run.push_back(s);
-    else flush();
+    if (project(p, s))
+      run.push_back(s);
+    else
+      flush();
   }
   flush();
 }
@@ -137,7 +139,8 @@ void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
     const auto& path = paths.balls[static_cast<std::size_t>(i)];
     const Vec3 here = path_point(now, timeline.physics().ball_radius);
     const bool gone = now.motion == Motion::pocketed;
-    const std::vector<Vec3> past = gone ? before(path, f.time, path.empty() ? here : path.back().where) : before(path, f.time, here);
+    const std::vector<Vec3> past =
+        gone ? before(path, f.time, path.empty() ? here : path.back().where) : before(path, f.time, here);
     const std::vector<Vec3> future = gone ? std::vector<Vec3>{} : after(path, f.time, here);
     if (past.size() < 2 && future.size() < 2) continue;
     draw_projected_path(list, project, future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
@@ -165,7 +168,8 @@ void draw_event_markers(ImDrawList& list, const OverlayFrame& f) {
     const float size = f.fonts.small_size;
     const ImVec2 extent = f.fonts.small->CalcTextSizeA(size, 1e9f, 0, label.c_str());
     const ImVec2 at(s.x + r + 2 * scale, s.y - r - extent.y + 2 * scale);
-    list.AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + extent.x + 2, at.y + extent.y), IM_COL32(0, 0, 0, 150), 3.f);
+    list.AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + extent.x + 2, at.y + extent.y), IM_COL32(0, 0, 0, 150),
+                       3.f);
     list.AddText(f.fonts.small, size, at, color, label.c_str());
   }
 }
@@ -239,11 +243,14 @@ void draw_map_camera_paths(ImDrawList& list, const OverlayFrame& f, const Overla
   for (const auto& p : paths.targets) looked.push_back(m.map(p.where));
   for (const auto& p : paths.eyes) (p.time <= f.time ? past : future).push_back(m.map(p.where));
   if (!past.empty()) future.insert(future.begin(), past.back());
-  list.AddPolyline(looked.data(), static_cast<int>(looked.size()), IM_COL32(110, 200, 255, 110), ImDrawFlags_None, 1.2f * scale);
+  list.AddPolyline(looked.data(), static_cast<int>(looked.size()), IM_COL32(110, 200, 255, 110), ImDrawFlags_None,
+                   1.2f * scale);
   if (future.size() >= 2)
-    list.AddPolyline(future.data(), static_cast<int>(future.size()), IM_COL32(255, 214, 90, 110), ImDrawFlags_None, 1.5f * scale);
+    list.AddPolyline(future.data(), static_cast<int>(future.size()), IM_COL32(255, 214, 90, 110), ImDrawFlags_None,
+                     1.5f * scale);
   if (past.size() >= 2)
-    list.AddPolyline(past.data(), static_cast<int>(past.size()), IM_COL32(255, 214, 90, 255), ImDrawFlags_None, 2.f * scale);
+    list.AddPolyline(past.data(), static_cast<int>(past.size()), IM_COL32(255, 214, 90, 255), ImDrawFlags_None,
+                     2.f * scale);
 }
 
 // Where the camera is now, its horizontal field of view, and where it looks.

@@ -26,11 +26,11 @@ OverlayPaths overlay_paths(const Shot& shot);
 
 struct OverlayFrame {
   const Shot& shot;
-  double time = 0;           ///< s
-  ViewCamera camera;         ///< the camera the picture is drawn from
+  double time = 0;               ///< s
+  ViewCamera camera;             ///< the camera the picture is drawn from
   double width = 0, height = 0;  ///< px, the picture's size
   const UiFonts& fonts;
-  double left = 0, top = 0;      ///< px, where the picture sits in the draw list (a window's view)
+  double left = 0, top = 0;             ///< px, where the picture sits in the draw list (a window's view)
   const OverlayPaths* paths = nullptr;  ///< the shot's paths; sampled on the spot when null
 };
 

@@ -50,10 +50,14 @@ bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
   while (true) {
     const auto comma = rest.find(',');
     const std::string_view item = rest.substr(0, comma);
-    if (item == "paths") overlays.paths = true;
-    else if (item == "events") overlays.events = true;
-    else if (item == "camera") overlays.camera = true;
-    else return false;
+    if (item == "paths")
+      overlays.paths = true;
+    else if (item == "events")
+      overlays.events = true;
+    else if (item == "camera")
+      overlays.camera = true;
+    else
+      return false;
     if (comma == std::string_view::npos) return true;
     rest.remove_prefix(comma + 1);
   }
@@ -66,8 +70,8 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     return false;
   };
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  static constexpr std::string_view kWithValue[] = {"--at", "-o", "--output", "--movie", "--overlay", "--quit-after",
-                                                    "--screenshot"};
+  static constexpr std::string_view kWithValue[] = {"--at",      "-o",           "--output",    "--movie",
+                                                    "--overlay", "--quit-after", "--screenshot"};
   if (std::find(std::begin(kWithValue), std::end(kWithValue), name) == std::end(kWithValue)) {
     message = unknown_option_message(name);
     return false;
@@ -100,10 +104,14 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
 /// Options that only make sense together (or apart).
 bool check_combination(const PreviewOptions& o, std::string& message) {
   const bool at = o.at.has_value();
-  if (at && o.timeline) message = "--at and --timeline each write one picture; give only one";
-  else if (o.movie && (at || o.timeline)) message = "--movie cannot be combined with --at or --timeline";
-  else if ((at || o.timeline) && !o.output) message = std::string(at ? "--at" : "--timeline") + " needs -o FILE.png";
-  else if (o.output && !at && !o.timeline) message = "-o names the picture of --at or --timeline; give one of them";
+  if (at && o.timeline)
+    message = "--at and --timeline each write one picture; give only one";
+  else if (o.movie && (at || o.timeline))
+    message = "--movie cannot be combined with --at or --timeline";
+  else if ((at || o.timeline) && !o.output)
+    message = std::string(at ? "--at" : "--timeline") + " needs -o FILE.png";
+  else if (o.output && !at && !o.timeline)
+    message = "-o names the picture of --at or --timeline; give one of them";
   else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
   return message.empty();
@@ -115,7 +123,8 @@ PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& 
                                                 std::string& message) {
   options = PreviewOptions{};
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-preview " BSIM_VERSION "\n", apply, message)) {
+  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-preview " BSIM_VERSION "\n", apply,
+                         message)) {
     case ArgumentsOutcome::exit_success: return PreviewCommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return PreviewCommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

@@ -28,7 +28,7 @@ struct PreviewOptions : SharedOptions {
   bool timeline = false;                  ///< --timeline
   std::optional<std::string> movie;       ///< --movie FILE.mp4 (the animatic)
   PreviewOverlays overlays;
-  double quit_after = 0;  ///< s; > 0 closes the interactive window by itself (smoke tests)
+  double quit_after = 0;                  ///< s; > 0 closes the interactive window by itself (smoke tests)
   std::optional<std::string> screenshot;  ///< interactive: write the last frame here on quit
 };
 

@@ -12,7 +12,7 @@ namespace bsim {
 
 namespace {
 
-constexpr int kNumberCell = 128;    // px per digit cell: sharp even in close-ups
+constexpr int kNumberCell = 128;  // px per digit cell: sharp even in close-ups
 constexpr float kShadowAlpha = 0.6f;
 
 struct Program {

@@ -20,11 +20,11 @@ struct SceneSource {
 SceneSource scene_source(const std::optional<std::string>& path, bool strict);
 
 struct LoadedShot {
-  std::unique_ptr<Shot> shot;            ///< null on any error
+  std::unique_ptr<Shot> shot;  ///< null on any error
   /// The simulated shot without camera or cue when only its camera script failed (see ShotResult).
   std::unique_ptr<Shot> unscripted;
   std::vector<Diagnostic> diagnostics;
-  std::string read_error;                ///< set when the file cannot be read
+  std::string read_error;  ///< set when the file cannot be read
   /// Every problem as the lines a user sees: "PATH:LINE:COL: error: ...".
   std::vector<std::string> messages;
 };

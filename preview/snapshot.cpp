@@ -54,7 +54,8 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
   const FrameState frame = scripted_frame(shot, *t);
   renderer.draw(shot.scene, frame, options.width, options.height);
   ImDrawList* list = canvas.begin_2d();
-  draw_overlays(*list, OverlayFrame{shot, *t, frame.camera, double(options.width), double(options.height), canvas.fonts()},
+  draw_overlays(*list,
+                OverlayFrame{shot, *t, frame.camera, double(options.width), double(options.height), canvas.fonts()},
                 options.overlays);
   canvas.end_2d();
   if (!canvas.write_png(*options.output, error)) {
@@ -71,8 +72,8 @@ int run_timeline_picture(const PreviewOptions& options, const TimelineData& data
   const int errors = static_cast<int>(data.script_errors.size());
   const int extra = errors > 0 ? 60 + errors * 17 : 0;
   const int width = options.size_given ? options.width : kTimelineWidth;
-  const int height = options.size_given ? options.height
-                                        : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);
+  const int height =
+      options.size_given ? options.height : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);
   const float text_px = options.size_given ? std::clamp(std::min(height / 36.f, width / 90.f), 11.f, 20.f) : 16.f;
   std::string error;
   HeadlessCanvas canvas;

@@ -12,11 +12,11 @@ namespace {
 
 // The cushion, the wood, the sights and the floor come from the table description (kStandardTable,
 // table_layout); what follows is drawing detail.
-constexpr double kNoseRound = 0.008;      // m outward from the nose where the profile reaches the cushion's top
-constexpr double kJawSlope = 0.6;         // the cushion's end recedes this much per metre of depth
-constexpr double kApronBottom = -0.22;    // m
-constexpr double kLegSize = 0.12;         // m
-constexpr double kPocketDepth = 0.12;     // m below the bed
+constexpr double kNoseRound = 0.008;    // m outward from the nose where the profile reaches the cushion's top
+constexpr double kJawSlope = 0.6;       // the cushion's end recedes this much per metre of depth
+constexpr double kApronBottom = -0.22;  // m
+constexpr double kLegSize = 0.12;       // m
+constexpr double kPocketDepth = 0.12;   // m below the bed
 constexpr int kHoleSegments = 48;
 constexpr double kCell = 0.06;       // m, tessellation of the table for its per-vertex lighting
 constexpr double kFloorCell = 0.25;  // m
@@ -87,7 +87,8 @@ void add_walls(MeshData& mesh, const Bounds& r, double z0, double z1, const Vec3
     const Vec3& q = c[(k + 1) % 4];
     const int pieces = std::max(1, static_cast<int>(std::ceil((q - p).norm() / kCell)));
     for (int i = 0; i < pieces; ++i) {
-      const Vec3 a = p + (q - p) * (static_cast<double>(i) / pieces), b = p + (q - p) * (static_cast<double>(i + 1) / pieces);
+      const Vec3 a = p + (q - p) * (static_cast<double>(i) / pieces),
+                 b = p + (q - p) * (static_cast<double>(i + 1) / pieces);
       if (cut_by && inside_any_pocket(*cut_by, (a + b) / 2)) continue;
       mesh.add_quad(a + Vec3(0, 0, z0), b + Vec3(0, 0, z0), b + Vec3(0, 0, z1), a + Vec3(0, 0, z1), color, kCell);
     }

@@ -10,12 +10,12 @@
 namespace bsim {
 
 struct TableModel {
-  MeshData cloth;      ///< the bed, z = 0 (pocket holes are cut out of it with the stencil)
-  MeshData tops;       ///< the frame's top faces at top_height and the cushions' just below (holes cut likewise)
-  MeshData body;       ///< cushion faces, frame sides, legs, floor
-  MeshData pockets;    ///< inside of each pocket: its wall and bottom, seen through the holes
-  MeshData bed_holes;  ///< pocket circles on the bed plane (stencil masks)
-  MeshData top_holes;  ///< pocket circles at the frame's top height (stencil masks)
+  MeshData cloth;         ///< the bed, z = 0 (pocket holes are cut out of it with the stencil)
+  MeshData tops;          ///< the frame's top faces at top_height and the cushions' just below (holes cut likewise)
+  MeshData body;          ///< cushion faces, frame sides, legs, floor
+  MeshData pockets;       ///< inside of each pocket: its wall and bottom, seen through the holes
+  MeshData bed_holes;     ///< pocket circles on the bed plane (stencil masks)
+  MeshData top_holes;     ///< pocket circles at the frame's top height (stencil masks)
   double top_height = 0;  ///< m, the frame's (the wood's) top above the bed
 };
 

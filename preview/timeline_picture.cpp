@@ -127,10 +127,8 @@ struct RowLayout {
   };
   /// The four bands, in the order of kRowNames.
   std::array<Band, 4> bands() const {
-    return {{{events_top, events_bottom},
-             {drops_top, drops_bottom},
-             {camera_top, camera_bottom},
-             {cue_top, cue_bottom}}};
+    return {
+        {{events_top, events_bottom}, {drops_top, drops_bottom}, {camera_top, camera_bottom}, {cue_top, cue_bottom}}};
   }
 };
 
@@ -241,9 +239,7 @@ class TimelinePainter {
 
   const TimelineAxis& axis() const { return across_.axis; }
 
-  void draw_background() {
-    list_.AddRectFilled(ImVec2(layout_.x, layout_.y), ImVec2(right_, bottom_), kBackground);
-  }
+  void draw_background() { list_.AddRectFilled(ImVec2(layout_.x, layout_.y), ImVec2(right_, bottom_), kBackground); }
 
   /// The title and, for a script that failed, a note on how it is shown (neither when compact).
   /// Returns where the rows begin.
@@ -385,9 +381,9 @@ class TimelinePainter {
       const float x = at(d.time), mid = (rows_.drops_top + rows_.drops_bottom) / 2;
       const float s = (rows_.drops_bottom - rows_.drops_top) * 0.32f;
       list_.AddTriangleFilled(ImVec2(x - s, mid - s), ImVec2(x + s, mid - s), ImVec2(x, mid + s), pocket_color());
-      const std::string label = layout_.compact ? std::to_string(d.ball)
-                                                : "ball " + std::to_string(d.ball) + " \xE2\x86\x92 pocket " +
-                                                      std::to_string(d.pocket);
+      const std::string label =
+          layout_.compact ? std::to_string(d.ball)
+                          : "ball " + std::to_string(d.ball) + " \xE2\x86\x92 pocket " + std::to_string(d.pocket);
       const float w = text_size(fonts_.small, small, label).x;
       if (drop_levels.place(x + s + 2, w, 6) == 0 && x + s + 2 + w < across_.x1)
         list_.AddText(fonts_.small, small, ImVec2(x + s + 2, text_y), pocket_color(), label.c_str());
@@ -487,7 +483,8 @@ class TimelinePainter {
     for (const TimelineCameraSpan& c : data_.camera)
       if (!c.placed)
         a.unplaced_widths.push_back(std::max(text_size(fonts_.regular, text, camera_span_label(c, layout_.compact)).x,
-                                             text_size(fonts_.small, small, c.problem).x) + 2 * pad);
+                                             text_size(fonts_.small, small, c.problem).x) +
+                                    2 * pad);
     for (float w : a.unplaced_widths) a.zone_wanted += w;
     a.zone = std::min(a.zone_wanted, (right_ - a.x0) * 0.4f);
     a.zone_right = right_ - pad;
@@ -501,8 +498,7 @@ class TimelinePainter {
   // As many label levels as the crowding needs, up to what the height allows.
   int label_levels_needed(float top) const {
     const float spare = bottom_ - top - rows_.bands_height() - rows_.pad;
-    const int max_levels =
-        layout_.compact ? 1 : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, 4);
+    const int max_levels = layout_.compact ? 1 : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, 4);
     for (int levels = 1; levels < max_levels; ++levels)
       if (event_numbers_fit(levels)) return levels;
     return max_levels;
@@ -549,9 +545,9 @@ TimelineData timeline_data(const Shot& shot) {
     ++pocketed;
   }
   char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "%s  \xE2\x80\x94  %.2f s, %zu events (0 to %zu), %d pocketed", shot.scene.name.c_str(),
-                data.duration, timeline.events().size(), timeline.events().empty() ? 0 : timeline.events().size() - 1,
-                pocketed);
+  std::snprintf(buffer, sizeof buffer, "%s  \xE2\x80\x94  %.2f s, %zu events (0 to %zu), %d pocketed",
+                shot.scene.name.c_str(), data.duration, timeline.events().size(),
+                timeline.events().empty() ? 0 : timeline.events().size() - 1, pocketed);
   data.title = buffer;
   for (const Event& e : timeline.events()) data.events.push_back({e.index, e.time, e.type, event_label(e)});
   if (shot.camera) {
@@ -572,7 +568,8 @@ float compact_timeline_height(const UiFonts& fonts) {
   return rows.axis_bottom;
 }
 
-TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout) {
+TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts,
+                           const TimelineLayout& layout) {
   TimelinePainter painter(list, data, fonts, layout);
   painter.draw_background();
   painter.lay_out(painter.draw_header());

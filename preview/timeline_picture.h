@@ -33,9 +33,9 @@ struct TimelineCameraSpan {
   double begin = 0, end = 0;  ///< s
   int event = 0;              ///< the event number the description names (65535: the last)
   CameraMode mode = CameraMode::hover;
-  std::string label;          ///< "follow ball 0"
-  std::string problem;        ///< why the description does not fit the shot (drawn in red); empty when it does
-  bool placed = true;         ///< false: the event it names does not exist (drawn after the time axis)
+  std::string label;    ///< "follow ball 0"
+  std::string problem;  ///< why the description does not fit the shot (drawn in red); empty when it does
+  bool placed = true;   ///< false: the event it names does not exist (drawn after the time axis)
 };
 
 struct TimelineWindow {
@@ -60,8 +60,8 @@ TimelineData timeline_data(const Shot& shot);
 
 struct TimelineLayout {
   float x = 0, y = 0, width = 0, height = 0;  ///< px, the area to fill
-  bool compact = false;    ///< scrub bar: only the rows and the axis, no title, list or legend
-  double cursor = -1;      ///< s, a playhead drawn when >= 0
+  bool compact = false;                       ///< scrub bar: only the rows and the axis, no title, list or legend
+  double cursor = -1;                         ///< s, a playhead drawn when >= 0
 };
 
 /// Draws the timeline. Returns the x of time 0 and the pixels per second used (for hit testing).
@@ -73,6 +73,7 @@ struct TimelineAxis {
 /// px a compact timeline needs with these fonts.
 float compact_timeline_height(const UiFonts& fonts);
 
-TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts, const TimelineLayout& layout);
+TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts,
+                           const TimelineLayout& layout);
 
 }  // namespace bsim

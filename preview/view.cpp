@@ -52,7 +52,8 @@ Eigen::Matrix4f projection_matrix(const ViewCamera& camera, double aspect) {
 
 bool project_to_pixels(const Eigen::Matrix4f& view_projection, const Vec3& point, double width, double height,
                        double& x, double& y) {
-  const Eigen::Vector4f clip = view_projection * Eigen::Vector4f(float(point.x()), float(point.y()), float(point.z()), 1.f);
+  const Eigen::Vector4f clip =
+      view_projection * Eigen::Vector4f(float(point.x()), float(point.y()), float(point.z()), 1.f);
   if (clip.w() <= float(kNearClip)) return false;
   x = (clip.x() / clip.w() * 0.5 + 0.5) * width;
   y = (0.5 - clip.y() / clip.w() * 0.5) * height;

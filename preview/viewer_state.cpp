@@ -7,7 +7,7 @@
 namespace bsim {
 
 namespace {
-constexpr double kDegPerPixel = 0.3;  // orbit speed of a mouse drag
+constexpr double kDegPerPixel = 0.3;                        // orbit speed of a mouse drag
 constexpr double kMinDistance = 0.15, kMaxDistance = 20.0;  // m
 }  // namespace
 
@@ -35,7 +35,9 @@ void OrbitCamera::pan(double dx, double dy, double view_height_px) {
   target += (-dx * right + dy * up) * metres_per_px;
 }
 
-void OrbitCamera::zoom(double steps) { distance = std::clamp(distance * std::pow(0.88, steps), kMinDistance, kMaxDistance); }
+void OrbitCamera::zoom(double steps) {
+  distance = std::clamp(distance * std::pow(0.88, steps), kMinDistance, kMaxDistance);
+}
 
 double ViewerState::duration() const { return shot ? shot->timeline.duration() : 0; }
 

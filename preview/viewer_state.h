@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "preview_options.h"
 #include "overlays.h"
+#include "preview_options.h"
 #include "shot_source.h"
 #include "timeline_picture.h"
 #include "view.h"
@@ -17,9 +17,9 @@ namespace bsim {
 
 struct OrbitCamera {
   Vec3 target{0, 0, 0};
-  double yaw_deg = -60;    ///< around z, from +x
-  double pitch_deg = 40;   ///< above the table plane
-  double distance = 4.2;   ///< m
+  double yaw_deg = -60;   ///< around z, from +x
+  double pitch_deg = 40;  ///< above the table plane
+  double distance = 4.2;  ///< m
 
   ViewCamera view() const;
   void orbit(double dx_px, double dy_px);
@@ -33,13 +33,13 @@ struct ViewerState {
   std::vector<std::string> messages;  ///< errors and warnings of the last load, as printed
   bool load_failed = false;           ///< the last load had errors (the previous shot stays shown)
   int reloads = 0;
-  TimelineData timeline;              ///< the scrub bar's contents, for the current shot
-  OverlayPaths paths;                 ///< the overlays' paths, for the current shot
+  TimelineData timeline;  ///< the scrub bar's contents, for the current shot
+  OverlayPaths paths;     ///< the overlays' paths, for the current shot
 
-  double time = 0;        ///< s
+  double time = 0;  ///< s
   bool playing = false;
   double speed = 1.0;
-  int fps = 30;           ///< step size of the frame keys
+  int fps = 30;  ///< step size of the frame keys
   bool free_camera = false;
   OrbitCamera orbit;
   PreviewOverlays overlays;

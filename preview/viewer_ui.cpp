@@ -116,7 +116,8 @@ void problems(const ViewerState& state, float window_width) {
   ImGui::SetNextWindowPos(ImVec2(window_width / 2, 8), ImGuiCond_Always, ImVec2(0.5f, 0));
   ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(window_width - 40, 400));
   ImGui::SetNextWindowBgAlpha(0.9f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
   ImGui::Begin(state.load_failed ? "The scene has errors" : "Warnings", nullptr, flags);
   for (const std::string& line : state.messages) {
     const bool is_error = line.find(": error:") != std::string::npos;
@@ -143,17 +144,20 @@ ViewRect view_rect(float window_width, float window_height, int picture_width, i
   return r;
 }
 
-void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, const ViewRect& view, const UiFonts& fonts) {
+void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, const ViewRect& view,
+                        const UiFonts& fonts) {
   if (!state.shot) return;
   ImDrawList& list = *ImGui::GetBackgroundDrawList();
-  const OverlayFrame frame{*state.shot, state.time, camera, view.width, view.height, fonts, view.x, view.y, &state.paths};
+  const OverlayFrame frame{*state.shot, state.time, camera, view.width,  view.height,
+                           fonts,       view.x,     view.y, &state.paths};
   list.PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
   if (state.free_camera) draw_scripted_frustum(list, frame, static_cast<double>(view.width) / view.height);
   draw_overlays(list, frame, state.overlays);
-  const char* which = state.free_camera ? "free orbit camera (drag: orbit, right-drag: pan, wheel: zoom)"
-                                        : "scripted camera";
-  list.AddText(fonts.small, fonts.small_size, ImVec2(view.x + view.width - fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, 0, which).x - 8,
-                                                     view.y + view.height - fonts.small_size - 6),
+  const char* which =
+      state.free_camera ? "free orbit camera (drag: orbit, right-drag: pan, wheel: zoom)" : "scripted camera";
+  list.AddText(fonts.small, fonts.small_size,
+               ImVec2(view.x + view.width - fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, 0, which).x - 8,
+                      view.y + view.height - fonts.small_size - 6),
                IM_COL32(220, 220, 220, 200), which);
   list.PopClipRect();
 }

@@ -1,6 +1,6 @@
 // camera.csv: the header, one row per frame, exact numbers that read back to the camera's pose.
-#include <cstdlib>
 #include <doctest/doctest.h>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -78,9 +78,12 @@ TEST_SUITE("camera_csv") {
                                                       "' --events-only --fps 30 -o '" + out.string() + "'");
       REQUIRE_MESSAGE(r.exit_code == 0, r.err);
       const std::string text = test::require_file(out / "camera.csv");
-      if (run == 0) first = text;
-      else CHECK(text == first);
+      if (run == 0)
+        first = text;
+      else
+        CHECK(text == first);
     }
-    CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n0,0,-1.5,-1.5,1.2,0,0,0,0\n", 0) == 0);
+    CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n0,0,-1.5,-1.5,1.2,0,0,0,0\n",
+                      0) == 0);
   }
 }

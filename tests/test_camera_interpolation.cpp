@@ -1,6 +1,6 @@
 // The seed's interpolation pieces: Smooth, the quadratic Bezier, slerp of directions, the view cone.
-#include <cmath>
 #include <doctest/doctest.h>
+#include <cmath>
 
 #include "camera_interpolation.h"
 

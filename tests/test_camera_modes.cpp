@@ -1,7 +1,7 @@
 // hover, look and follow on simulated shots: the follow frame, the heading at rest and through a
 // cushion, the heading of a ball before it first moves, a pocketed ball's last visible place.
-#include <cmath>
 #include <doctest/doctest.h>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -30,8 +30,9 @@ constexpr double kR = 0.028575;
 
 TEST_SUITE("camera_modes") {
   TEST_CASE("hover holds its location and point") {
-    auto shot = load_scene("cue 0 0\nball 0 -0.5 0 0.028575 0.5 0 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 hover -1 -2 1.5 0.2 0.1 0\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 0\nball 0 -0.5 0 0.028575 0.5 0 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 hover -1 -2 1.5 0.2 0.1 0\nendcamera\n");
     for (double t = 0; t <= shot->timeline.duration(); t += 0.25) {
       const CameraPose pose = shot->camera->pose(t);
       CHECK(distance(pose.location, Vec3(-1, -2, 1.5)) == 0);
@@ -40,8 +41,9 @@ TEST_SUITE("camera_modes") {
   }
 
   TEST_CASE("look keeps its location and looks at the ball wherever it rolls") {
-    auto shot = load_scene("cue 0 0\nball 0 -0.5 0 0.028575 0.5 0 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 look 0 -2 1 0\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 0\nball 0 -0.5 0 0.028575 0.5 0 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 look 0 -2 1 0\nendcamera\n");
     for (double t = 0; t <= shot->timeline.duration(); t += 0.1) {
       const CameraPose pose = shot->camera->pose(t);
       CHECK(distance(pose.location, Vec3(0, -2, 1)) == 0);
@@ -53,8 +55,9 @@ TEST_SUITE("camera_modes") {
 
   TEST_CASE("follow: <-1, 0, 1> is one behind and one up, along the cue heading before and after the strike") {
     const double angle = 30 * M_PI / 180;
-    auto shot = load_scene("cue 0 30\nball 0 -0.5 -0.2 0.028575 0.3464101615137755 0.2 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 follow 0 -1 0 1\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 30\nball 0 -0.5 -0.2 0.028575 0.3464101615137755 0.2 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 follow 0 -1 0 1\nendcamera\n");
     const Vec3 offset(-1, 0, 1);
     const double duration = shot->timeline.duration();
     for (double t = 0; t <= duration; t += 0.05) {
@@ -71,7 +74,8 @@ TEST_SUITE("camera_modes") {
     // Velocity 30.5 degrees, heading 30: within the 1 degree that passes without a warning.
     const double v = 0.4, moving = 30.5 * M_PI / 180;
     auto shot = load_scene("cue 0 30\nball 0 -0.5 -0.2 0.028575 " + std::to_string(v * std::cos(moving)) + " " +
-                           std::to_string(v * std::sin(moving)) + " 0 1 0 0 0\n"
+                           std::to_string(v * std::sin(moving)) +
+                           " 0 1 0 0 0\n"
                            "camera\nevent 0 0 0 follow 0 -1 0 1\nendcamera\n");
     const Vec3 offset(-1, 0, 1);
     const Vec3 start = shot->timeline.state(0, 0).position;
@@ -82,8 +86,9 @@ TEST_SUITE("camera_modes") {
   }
 
   TEST_CASE("follow: sideways and ahead offsets turn with the ball") {
-    auto shot = load_scene("cue 0 90\nball 0 0 -0.3 0.028575 0 0.4 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 follow 0 0.5 -0.25 0.2\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 90\nball 0 0 -0.3 0.028575 0 0.4 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 follow 0 0.5 -0.25 0.2\nendcamera\n");
     const double t = shot->timeline.cue_time() + 0.5;
     const Vec3 ball = shot->timeline.state(0, t).position;
     // Heading +y: ahead is +y, the right (-0.25 to the left) is +x.
@@ -91,8 +96,9 @@ TEST_SUITE("camera_modes") {
   }
 
   TEST_CASE("follow through a cushion: the camera swings round without jumping and ends behind") {
-    auto shot = load_scene("cue 0 0\nball 0 0.9 0 0.028575 1.5 0 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 follow 0 -0.5 0 0.3\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 0\nball 0 0.9 0 0.028575 1.5 0 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 follow 0 -0.5 0 0.3\nendcamera\n");
     bool has_rail = false;
     for (const Event& e : shot->timeline.events()) has_rail |= e.type == EventType::ball_rail;
     REQUIRE(has_rail);
@@ -123,8 +129,9 @@ TEST_SUITE("camera_modes") {
   }
 
   TEST_CASE("follow: a ball at rest faces where it first goes") {
-    auto shot = load_scene("cue 0 0\nball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\nball 1 0 0.03 0.028575 0 0 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 follow 1 -1 0 1\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 0\nball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\nball 1 0 0.03 0.028575 0 0 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 follow 1 -1 0 1\nendcamera\n");
     double hit = -1;
     for (const Event& e : shot->timeline.events())
       if (e.type == EventType::ball_ball && hit < 0) hit = e.time;
@@ -138,8 +145,9 @@ TEST_SUITE("camera_modes") {
   }
 
   TEST_CASE("a pocketed ball is watched to its last visible place") {
-    auto shot = load_scene("cue 0 42.15\nball 0 0.9 0.3 0.028575 1.1118 1.0067 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 look -2 1.5 0.8 0\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 42.15\nball 0 0.9 0.3 0.028575 1.1118 1.0067 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 look -2 1.5 0.8 0\nendcamera\n");
     REQUIRE(shot->timeline.pocket_drops().size() == 1);
     const double drop = shot->timeline.pocket_drops()[0].time;
     const double duration = shot->timeline.duration();
@@ -186,9 +194,10 @@ TEST_SUITE("camera_modes") {
 
   TEST_CASE("a ball's track is where the timeline says, up to its last visible place") {
     // Spin curves the cue ball's sliding path; the 1-ball is pocketed.
-    auto shot = load_scene("cue 0 39.289\nball 0 0.2 -0.3 0.028575 1.5491933 1.2675218 0 1 0 0 0\nspin 0 20 -25 30\n"
-                           "ball 1 0.75 0.15 0.028575 0 0 0 1 0 0 0\n"
-                           "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n");
+    auto shot = load_scene(
+        "cue 0 39.289\nball 0 0.2 -0.3 0.028575 1.5491933 1.2675218 0 1 0 0 0\nspin 0 20 -25 30\n"
+        "ball 1 0.75 0.15 0.028575 0 0 0 1 0 0 0\n"
+        "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n");
     REQUIRE(shot->timeline.pocket_drops().size() == 1);
     for (int ball = 0; ball < 2; ++ball) {
       const BallTrack track(shot->scene, shot->timeline, ball, 0.0);

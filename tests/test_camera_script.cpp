@@ -1,11 +1,11 @@
 // The camera script on hand-made timelines: segments, the seed's window arithmetic, continuity,
 // cuts, touching and overlapping windows, event 65535, the default camera, validation messages.
+#include <doctest/doctest.h>
 #include <cmath>
 #include <limits>
-#include <doctest/doctest.h>
 
-#include "camera_script.h"
 #include "camera_interpolation.h"
+#include "camera_script.h"
 
 using namespace bsim;
 
@@ -68,8 +68,8 @@ double max_speed(const CameraScript& script, double from, double to, double step
     const CameraPose pose = script.pose(t);
     if (!std::isfinite(pose.location.norm()) || !std::isfinite(pose.look_at.norm()))
       return std::numeric_limits<double>::infinity();
-    fastest = std::max(fastest, std::max(distance(pose.location, previous.location),
-                                         distance(pose.look_at, previous.look_at)) / step);
+    fastest = std::max(
+        fastest, std::max(distance(pose.location, previous.location), distance(pose.look_at, previous.look_at)) / step);
     previous = pose;
   }
   return fastest;

@@ -37,8 +37,8 @@ TEST_SUITE("camera_validation") {
   TEST_CASE("an event the shot does not have") {
     const int n = event_count();
     REQUIRE(n >= 3);
-    const Diagnostic d = only_error("event 0 0 0 hover 0 -3 2 0 0 0\nevent " + std::to_string(n + 6) +
-                                    " 0.5 0 hover 1 -3 2 0 0 0\n");
+    const Diagnostic d =
+        only_error("event 0 0 0 hover 0 -3 2 0 0 0\nevent " + std::to_string(n + 6) + " 0.5 0 hover 1 -3 2 0 0 0\n");
     CHECK(d.message == "event " + std::to_string(n + 6) + " does not exist: the shot has " + std::to_string(n) +
                            " events (0 to " + std::to_string(n - 1) + ")");
     CHECK(d.loc.line == 6);
@@ -52,8 +52,8 @@ TEST_SUITE("camera_validation") {
                                     " 0.5 0 hover 1 -3 2 0 0 0\nendcamera\n",
                                 "fine");
     CHECK(fine.shot);
-    const Diagnostic d = only_error("event 0 0 0 hover 0 -3 2 0 0 0\n  event  " + std::to_string(n) +
-                                    " 0.5 0 hover 1 -3 2 0 0 0\n");
+    const Diagnostic d =
+        only_error("event 0 0 0 hover 0 -3 2 0 0 0\n  event  " + std::to_string(n) + " 0.5 0 hover 1 -3 2 0 0 0\n");
     CHECK(d.loc.line == 6);
     CHECK(d.loc.column == 10);
   }
@@ -88,8 +88,9 @@ TEST_SUITE("camera_validation") {
 
   TEST_CASE("the exporter reports the error with the path, exits 1 and writes nothing") {
     test::TempDir dir;
-    const std::string scene = dir.file("late.scn", kBalls + "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\n"
-                                                            "event 900 0 0 hover 1 -3 2 0 0 0\nendcamera\n");
+    const std::string scene = dir.file("late.scn", kBalls +
+                                                       "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\n"
+                                                       "event 900 0 0 hover 1 -3 2 0 0 0\nendcamera\n");
     const auto out = dir.path / "out";
     const test::CommandResult r =
         test::run_command(test::bin("billiards-export") + " '" + scene + "' --events-only -o '" + out.string() + "'");

@@ -1,13 +1,13 @@
 // The cue stick's four phases on simulated shots: the strike lands exactly at the cue event, two
 // practice strokes, removal out of view, and no contact with the bed, the cushions or other balls.
-#include <cmath>
 #include <doctest/doctest.h>
+#include <cmath>
 #include <string>
 
-#include "timeline.h"
 #include "cue_geometry.h"
 #include "shot.h"
 #include "shots.h"
+#include "timeline.h"
 #include "tolerance.h"
 
 using namespace bsim;
@@ -166,7 +166,8 @@ TEST_SUITE("cue_script") {
 
   TEST_CASE("a ball just behind the cue ball: the butt is raised over it") {
     // Ball 1 sits 2.2 radii behind the cue ball on the cue line.
-    auto shot = load("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 1 -0.062865 0 0.028575 0 0 0 1 0 0 0\n" + kCamera);
+    auto shot =
+        load("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 1 -0.062865 0 0.028575 0 0 0 1 0 0 0\n" + kCamera);
     // The lowest whole degree that keeps the stick the script's 2 mm from ball 1 wherever it slides
     // along its line (the strokes reach 11 cm back): 37, as README says.
     const Vec3 centre = shot->scene.balls[0].position, other = shot->scene.balls[1].position;
@@ -204,8 +205,10 @@ TEST_SUITE("cue_script") {
   }
 
   TEST_CASE("a shot with the cue heading across the table and balls about") {
-    auto shot = load("cue 0 120\nball 0 0.2 -0.3 0.028575 -1 1.7320508 0 1 0 0 0\n"
-                     "ball 1 0.5 -0.5 0.028575 0 0 0 1 0 0 0\nball 2 0.3 -0.55 0.028575 0 0 0 1 0 0 0\n" + kCamera);
+    auto shot = load(
+        "cue 0 120\nball 0 0.2 -0.3 0.028575 -1 1.7320508 0 1 0 0 0\n"
+        "ball 1 0.5 -0.5 0.028575 0 0 0 1 0 0 0\nball 2 0.3 -0.55 0.028575 0 0 0 1 0 0 0\n" +
+        kCamera);
     CHECK(worst_clearance(*shot) >= -1e-9);
     const CuePose at = shot->cue->pose(shot->timeline.cue_time());
     CHECK(std::atan2(-at.axis.y(), -at.axis.x()) == doctest::Approx(120 * M_PI / 180));

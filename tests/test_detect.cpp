@@ -71,7 +71,8 @@ TEST_SUITE("detect") {
     CHECK_FALSE(next_ball_ball(path(a), path(overlapping), 2 * kR, transition_time(overlapping, kParams)).has_value());
   }
 
-  TEST_CASE("a pair pressing without closing (a push) meets again once its overlap grows, and never deeper than allowed") {
+  TEST_CASE(
+      "a pair pressing without closing (a push) meets again once its overlap grows, and never deeper than allowed") {
     // b rolls slowly ahead; a, touching it from behind, has follow and is pulled forward by the cloth.
     const BallState a = ball(0, 0, 0.2, 0, Vec3(0, 3 / kR, 0));
     const BallState b = ball(2 * kR, 0, 0.2, 0, Vec3(0, 0.2 / kR, 0));

@@ -3,8 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <charconv>
-#include <set>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "bench/random_scenes.h"
@@ -86,8 +86,8 @@ TEST_SUITE("events.json") {
       CHECK(json.find(head) != std::string::npos);
       if (e.type == EventType::ball_rail) {
         rail = true;
-        CHECK(json.find(head + ", \"balls\": [" + std::to_string(e.balls[0]) + "], \"rail\": " + std::to_string(e.rail) +
-                        ", \"speed\": " + format_number(e.speed) + "}") != std::string::npos);
+        CHECK(json.find(head + ", \"balls\": [" + std::to_string(e.balls[0]) + "], \"rail\": " +
+                        std::to_string(e.rail) + ", \"speed\": " + format_number(e.speed) + "}") != std::string::npos);
       }
       if (e.type == EventType::ball_ball) {
         ball_ball = true;
@@ -99,8 +99,8 @@ TEST_SUITE("events.json") {
     CHECK(ball_ball);
     REQUIRE(shot.timeline.pocket_drops().size() == 1);
     const PocketDrop& drop = shot.timeline.pocket_drops()[0];
-    CHECK(json.find("\"pocketed\": [\n    {\"time\": " + format_number(drop.time) + ", \"ball\": 1, \"pocket\": 2}\n  ]") !=
-          std::string::npos);
+    CHECK(json.find("\"pocketed\": [\n    {\"time\": " + format_number(drop.time) +
+                    ", \"ball\": 1, \"pocket\": 2}\n  ]") != std::string::npos);
     CHECK(json.find("{\"ball\": 1, \"number\": 5, \"position\": [") != std::string::npos);
     CHECK(json.find("\"pocketed\": true}") != std::string::npos);
     CHECK(json.find("\"duration\": " + format_number(shot.timeline.duration()) + ",") != std::string::npos);
@@ -139,8 +139,8 @@ TEST_SUITE("events.json") {
     const std::string text =
         "cue 0 10\n"
         "ball 0 -0.6 -0.1 0.028575  2.4 0.42 0  1 0 0 0\n"
-        "ball 9 0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
-        + std::string(test::fixtures::kHoverCamera);
+        "ball 9 0.2 0.05 0.028575  0 0 0  1 0 0 0\n" +
+        std::string(test::fixtures::kHoverCamera);
     const std::string scene = dir.file("shot.scn", text);
     for (const char* out : {"a", "b"}) {
       const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scene +
@@ -152,6 +152,7 @@ TEST_SUITE("events.json") {
     REQUIRE(loaded.shot);
     CHECK(test::require_file(dir.path / "a" / "events.json") == events_json(*loaded.shot));
     CHECK(test::require_file(dir.path / "a" / "events.json") == test::require_file(dir.path / "b" / "events.json"));
-    CHECK(test::require_file(dir.path / "a" / "trajectory.csv") == test::require_file(dir.path / "b" / "trajectory.csv"));
+    CHECK(test::require_file(dir.path / "a" / "trajectory.csv") ==
+          test::require_file(dir.path / "b" / "trajectory.csv"));
   }
 }

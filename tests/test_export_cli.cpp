@@ -170,14 +170,16 @@ TEST_SUITE("export end to end") {
   TEST_CASE("a scene file that cannot be read: exit 1 naming it") {
     test::TempDir tmp;
     const std::string missing = (tmp.path / "nowhere.scn").string();
-    const test::CommandResult r = run_export(quoted(missing) + " --events-only -o " + quoted((tmp.path / "o").string()));
+    const test::CommandResult r =
+        run_export(quoted(missing) + " --events-only -o " + quoted((tmp.path / "o").string()));
     CHECK(r.exit_code == 1);
     CHECK(r.err.find(missing) != std::string::npos);
     CHECK_FALSE(fs::exists(tmp.path / "o"));
   }
 
   TEST_CASE("bad command lines: exit 2 with one line naming the problem") {
-    for (const std::string args : {"--fps 0", "--size 12", "--jobs 0", "--quality ultra", "--bogus", "--fps", "a.scn b.scn"}) {
+    for (const std::string args :
+         {"--fps 0", "--size 12", "--jobs 0", "--quality ultra", "--bogus", "--fps", "a.scn b.scn"}) {
       CAPTURE(args);
       const test::CommandResult r = run_export(args);
       CHECK(r.exit_code == 2);

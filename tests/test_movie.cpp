@@ -58,10 +58,11 @@ std::vector<std::string> leftovers(const fs::path& dir) {
 
 /// A stand-in for POV-Ray: `body` runs with $in and $out set from +I and +O.
 std::string fake_povray(const test::TempDir& dir, const std::string& body) {
-  const std::string path = dir.file("bin/povray",
-                                    "#!/bin/sh\n"
-                                    "for a in \"$@\"; do case \"$a\" in +I*) in=\"${a#+I}\";; +O*) out=\"${a#+O}\";; esac; done\n" +
-                                        body + "\n");
+  const std::string path =
+      dir.file("bin/povray",
+               "#!/bin/sh\n"
+               "for a in \"$@\"; do case \"$a\" in +I*) in=\"${a#+I}\";; +O*) out=\"${a#+O}\";; esac; done\n" +
+                   body + "\n");
   fs::permissions(path, fs::perms::owner_all);
   return (dir.path / "bin").string();
 }
@@ -69,7 +70,8 @@ std::string fake_povray(const test::TempDir& dir, const std::string& body) {
 }  // namespace
 
 TEST_SUITE("movie") {
-  TEST_CASE("a tiny movie: every frame rendered, H.264 and AAC as long as the shot, and re-runs render only what changed") {
+  TEST_CASE(
+      "a tiny movie: every frame rendered, H.264 and AAC as long as the shot, and re-runs render only what changed") {
     for (const char* tool : {"povray", "ffmpeg", "ffprobe"}) test::require_program(tool);
     test::TempDir dir;
     const std::string path = dir.file("tiny.scn", scene(kEndA));
@@ -87,7 +89,8 @@ TEST_SUITE("movie") {
 
     const test::CommandResult probe = test::run_command(
         "ffprobe -v error -show_entries stream=codec_name,codec_type,pix_fmt,width,height,sample_rate,channels:"
-        "format=duration -of json " + quoted((out / "movie.mp4").string()));
+        "format=duration -of json " +
+        quoted((out / "movie.mp4").string()));
     REQUIRE_MESSAGE(probe.exit_code == 0, probe.err);
     CHECK(probe.out.find("\"codec_name\": \"h264\"") != std::string::npos);
     CHECK(probe.out.find("\"pix_fmt\": \"yuv420p\"") != std::string::npos);
@@ -120,7 +123,8 @@ TEST_SUITE("movie") {
     r = run_export(moved, out, options);
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     again = picture_times(out / "frames");
-    const std::string last = "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".png";
+    const std::string last =
+        "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".png";
     for (const auto& entry : times) {
       const std::string& name = entry.first;  // a plain reference: doctest's CAPTURE lambda cannot capture a binding
       CAPTURE(name);
@@ -159,8 +163,8 @@ TEST_SUITE("movie") {
     test::TempDir dir;
     const std::string path = dir.file("tiny.scn", scene(kEndA));
     fs::create_directories(dir.path / "empty");
-    const test::CommandResult r = run_export(path, dir.path / "out", "--size 32x18 --fps 2",
-                                             "PATH=" + quoted((dir.path / "empty").string()));
+    const test::CommandResult r =
+        run_export(path, dir.path / "out", "--size 32x18 --fps 2", "PATH=" + quoted((dir.path / "empty").string()));
     CHECK(r.exit_code == 1);
     CHECK(r.err.find("povray") != std::string::npos);
     CHECK(r.err.find("bash .ci/make-movie") != std::string::npos);
@@ -171,10 +175,11 @@ TEST_SUITE("movie") {
   TEST_CASE("a frame POV-Ray cannot render is named with POV-Ray's own message") {
     test::TempDir dir;
     const std::string path = dir.file("tiny.scn", scene(kEndA));
-    const std::string fake = fake_povray(dir,
-                                         "if [ \"$in\" = frame_00003.pov ]; then\n"
-                                         "  echo \"File 'frame_00003.pov' line 7: Parse Error: No matrix here\" >&2; exit 1\n"
-                                         "fi\ntouch \"$out\"");
+    const std::string fake =
+        fake_povray(dir,
+                    "if [ \"$in\" = frame_00003.pov ]; then\n"
+                    "  echo \"File 'frame_00003.pov' line 7: Parse Error: No matrix here\" >&2; exit 1\n"
+                    "fi\ntouch \"$out\"");
     const test::CommandResult r =
         run_export(path, dir.path / "out", "--size 32x18 --fps 2 --jobs 1", "PATH=" + quoted(fake) + ":\"$PATH\"");
     CHECK(r.exit_code == 1);
@@ -191,11 +196,13 @@ TEST_SUITE("movie") {
     // Each stand-in starts its picture, then hangs: only the interrupt can end the run.
     const std::string fake = fake_povray(dir, "touch \"$out\"\nexec sleep 60");
     const fs::path out = dir.path / "out";
-    const std::string command =
-        "PATH=" + quoted(fake) + ":\"$PATH\" " + quoted(test::bin("billiards-export")) + " " + quoted(path) + " -o " +
-        quoted(out.string()) + " --size 32x18 --fps 2 --jobs 2 & pid=$!; i=0; "
-        "while [ -z \"$(ls -A " + quoted((out / "frames").string()) + " 2>/dev/null | grep tmp)\" ] && [ $i -lt 600 ]; do "
-        "sleep 0.05; i=$((i+1)); done; kill -INT $pid; wait $pid; echo \"status $?\"";
+    const std::string command = "PATH=" + quoted(fake) + ":\"$PATH\" " + quoted(test::bin("billiards-export")) + " " +
+                                quoted(path) + " -o " + quoted(out.string()) +
+                                " --size 32x18 --fps 2 --jobs 2 & pid=$!; i=0; "
+                                "while [ -z \"$(ls -A " +
+                                quoted((out / "frames").string()) +
+                                " 2>/dev/null | grep tmp)\" ] && [ $i -lt 600 ]; do "
+                                "sleep 0.05; i=$((i+1)); done; kill -INT $pid; wait $pid; echo \"status $?\"";
     const test::CommandResult r = test::run_command(command);
     CHECK(r.out.find("status 0") == std::string::npos);
     CHECK(leftovers(out).empty());

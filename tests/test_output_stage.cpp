@@ -48,8 +48,8 @@ TEST_SUITE("output_stage") {
     CHECK(read(dest / "events.json") == "{}");
     CHECK(read(dest / "frames" / "frame_00000.pov") == "// frame");
     CHECK_FALSE(fs::exists(stage.staging()));
-    CHECK(listing(tmp.path) == std::vector<std::string>{"out", "out/shot", "out/shot/events.json",
-                                                         "out/shot/frames", "out/shot/frames/frame_00000.pov"});
+    CHECK(listing(tmp.path) == std::vector<std::string>{"out", "out/shot", "out/shot/events.json", "out/shot/frames",
+                                                        "out/shot/frames/frame_00000.pov"});
   }
 
   TEST_CASE("a stage that is never committed leaves nothing behind") {
@@ -95,8 +95,8 @@ TEST_SUITE("output_stage") {
     CHECK(read(dest / "events.json") == "new");
     CHECK(read(dest / "frames" / "frame_00000.png") == "png");
     CHECK(read(dest / "frames" / "frame_00000.pov") == "pov");
-    CHECK(listing(dest) == std::vector<std::string>{"events.json", "frames", "frames/frame_00000.png",
-                                                     "frames/frame_00000.pov"});
+    CHECK(listing(dest) ==
+          std::vector<std::string>{"events.json", "frames", "frames/frame_00000.png", "frames/frame_00000.pov"});
   }
 
   TEST_CASE("an output path that is a regular file is an error and stays untouched") {

@@ -78,9 +78,10 @@ test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std
     REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k)));
     command += " " + frame_name(k);
   }
-  command += "; do povray -D +FN +WT1 +I$f.pov +O$f.png +W32 +H18 +Q9 +A0.3 2>$f.log & pids=\"$pids $!\"; done; "
-             "for p in $pids; do wait $p || status=1; done; "
-             "for f in *.log; do grep -h 'Error' $f; done; exit $status";
+  command +=
+      "; do povray -D +FN +WT1 +I$f.pov +O$f.png +W32 +H18 +Q9 +A0.3 2>$f.log & pids=\"$pids $!\"; done; "
+      "for p in $pids; do wait $p || status=1; done; "
+      "for f in *.log; do grep -h 'Error' $f; done; exit $status";
   return test::run_command(command);
 }
 
@@ -129,7 +130,8 @@ TEST_SUITE("pov") {
     CHECK(end.find("// ball 1") != std::string::npos);
     CHECK(end.find("CueStick") == std::string::npos);
     bool stick_seen = false;
-    for (int k = 0; k <= last && !stick_seen; k += 5) stick_seen = frame_text(*shot, k).find("CueStick") != std::string::npos;
+    for (int k = 0; k <= last && !stick_seen; k += 5)
+      stick_seen = frame_text(*shot, k).find("CueStick") != std::string::npos;
     CHECK(stick_seen);
   }
 

@@ -24,8 +24,8 @@ using bsim::test::TempDir;
 namespace {
 
 // Every camera mode and interpolation window in one short shot.
-const std::string kScene = test::fixtures::two_ball_scene({"event 2 0.5 0.4   look   1.9 -1.2 1.0   1",
-                                                           "event 65535 0.6 0 hover  0 -2.3 2.4   0 0 0"});
+const std::string kScene = test::fixtures::two_ball_scene(
+    {"event 2 0.5 0.4   look   1.9 -1.2 1.0   1", "event 65535 0.6 0 hover  0 -2.3 2.4   0 0 0"});
 
 struct CameraRow {
   int frame = 0;

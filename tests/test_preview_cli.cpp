@@ -116,9 +116,9 @@ TEST_SUITE("preview command line") {
     PreviewOptions o;
     std::string help;
     REQUIRE(parse_preview_options({"--help"}, o, help) == PreviewCommandLineOutcome::exit_success);
-    for (const char* option : {"--at SECONDS|event:N", "--timeline", "-o", "--movie FILE.mp4", "--size WxH",
-                               "--fps N", "--overlay LIST", "--strict", "--quit-after SECONDS", "--screenshot FILE.png",
-                               "--help", "--version", "(default: 1280x720)", "(default: 30)"})
+    for (const char* option : {"--at SECONDS|event:N", "--timeline", "-o", "--movie FILE.mp4", "--size WxH", "--fps N",
+                               "--overlay LIST", "--strict", "--quit-after SECONDS", "--screenshot FILE.png", "--help",
+                               "--version", "(default: 1280x720)", "(default: 30)"})
       CHECK_MESSAGE(contains(help, option), option);
     std::string version;
     REQUIRE(parse_preview_options({"--version"}, o, version) == PreviewCommandLineOutcome::exit_success);

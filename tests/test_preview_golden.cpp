@@ -39,8 +39,12 @@ Scene rack_scene() {
     for (int j = 0; j <= row; ++j) {
       // Turn every ball differently so stripes and numbers show at many angles.
       const Quat turn(Eigen::AngleAxisd(0.35 * k, Vec3(std::cos(k), std::sin(k), 0.4).normalized()));
-      scene.balls.push_back(Ball{order[k], Vec3(0.45 + row * d * std::sqrt(3.0) / 2, (j - row / 2.0) * d, r),
-                                 Vec3::Zero(), Vec3::Zero(), turn, {}});
+      scene.balls.push_back(Ball{order[k],
+                                 Vec3(0.45 + row * d * std::sqrt(3.0) / 2, (j - row / 2.0) * d, r),
+                                 Vec3::Zero(),
+                                 Vec3::Zero(),
+                                 turn,
+                                 {}});
       ++k;
     }
   return scene;
@@ -48,7 +52,8 @@ Scene rack_scene() {
 
 FrameState rack_frame(const Scene& scene) {
   FrameState frame;
-  for (const Ball& b : scene.balls) frame.balls.push_back(BallState{b.position, Vec3::Zero(), Vec3::Zero(), b.orientation, Motion::stationary});
+  for (const Ball& b : scene.balls)
+    frame.balls.push_back(BallState{b.position, Vec3::Zero(), Vec3::Zero(), b.orientation, Motion::stationary});
   frame.cue.visible = true;
   frame.cue.tip = Vec3(-0.035, -0.108, 0.03);
   frame.cue.axis = Vec3(-1, -0.2, 0.12).normalized();
@@ -85,13 +90,15 @@ TimelineData made_up_failed_script() {
   TimelineData data = made_up_timeline();
   data.windows.clear();
   data.cue.clear();
-  data.camera = {{0.0, 2.9, 0, CameraMode::hover, "hover", "", true},
-                 {4.4, 6.0, 6, CameraMode::follow, "follow ball 0", "", true},
-                 {2.9, 4.4, 2, CameraMode::look, "look ball 3",
-                  "event 2 is listed after event 6: list the camera's events in increasing order", true},
-                 {6.0, 6.0, 9, CameraMode::follow, "follow ball 1", "no such event \xE2\x80\x94 the shot has 8 (0 to 7)", false}};
-  data.script_errors = {"golden.scn:9:7: error: event 2 is listed after event 6: list the camera's events in increasing order",
-                        "golden.scn:10:7: error: event 9 does not exist: the shot has 8 events (0 to 7)"};
+  data.camera = {
+      {0.0, 2.9, 0, CameraMode::hover, "hover", "", true},
+      {4.4, 6.0, 6, CameraMode::follow, "follow ball 0", "", true},
+      {2.9, 4.4, 2, CameraMode::look, "look ball 3",
+       "event 2 is listed after event 6: list the camera's events in increasing order", true},
+      {6.0, 6.0, 9, CameraMode::follow, "follow ball 1", "no such event \xE2\x80\x94 the shot has 8 (0 to 7)", false}};
+  data.script_errors = {
+      "golden.scn:9:7: error: event 2 is listed after event 6: list the camera's events in increasing order",
+      "golden.scn:10:7: error: event 9 does not exist: the shot has 8 events (0 to 7)"};
   return data;
 }
 

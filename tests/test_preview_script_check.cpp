@@ -119,7 +119,7 @@ TEST_SUITE("preview camera script check") {
     CHECK_FALSE(spans[3].placed);
     CHECK(spans[3].event == count + 3);
     CHECK(spans[3].problem == "no such event \xE2\x80\x94 the shot has " + std::to_string(count) + " (0 to " +
-                                 std::to_string(count - 1) + ")");
+                                  std::to_string(count - 1) + ")");
   }
 
   TEST_CASE("event 65535 is the last event") {

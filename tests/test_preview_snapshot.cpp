@@ -98,7 +98,9 @@ TEST_SUITE("preview snapshots") {
     const std::string marked = (dir.path / "marked.png").string();
     REQUIRE(run_command(preview(scene + " --at 0.5 --size 160x90 -o " + early)).exit_code == 0);
     REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 -o " + late)).exit_code == 0);
-    REQUIRE(run_command(preview(scene + " --at 3.5 --size 160x90 --overlay paths,events,camera -o " + marked)).exit_code == 0);
+    REQUIRE(
+        run_command(preview(scene + " --at 3.5 --size 160x90 --overlay paths,events,camera -o " + marked)).exit_code ==
+        0);
     CHECK(require_file(early) != require_file(late));
     CHECK(require_file(late) != require_file(marked));
   }
@@ -136,7 +138,8 @@ TEST_SUITE("preview snapshots") {
     const auto r = run_command(preview(scene + " --movie " + movie + " --size 160x90 --fps 8"));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    const auto probe = run_command("ffprobe -v error -show_entries stream=codec_type,width,nb_frames -of csv=p=0 " + movie);
+    const auto probe =
+        run_command("ffprobe -v error -show_entries stream=codec_type,width,nb_frames -of csv=p=0 " + movie);
     REQUIRE_MESSAGE(probe.exit_code == 0, probe.err);
     CHECK(probe.out.find("video") != std::string::npos);
     CHECK(probe.out.find("audio") != std::string::npos);

@@ -159,7 +159,8 @@ TEST_SUITE("resolve") {
 
   TEST_CASE("a push removes the closing speed and keeps rolling balls rolling, losing energy") {
     const PhysicsParams p;
-    BallState a = ball(0, 0, Vec3(0.3, 0, 0), Vec3(0, 0.3 / kR, 0)), b = ball(2 * kR, 0, Vec3(0.29, 0, 0), Vec3(0, 0.29 / kR, 0));
+    BallState a = ball(0, 0, Vec3(0.3, 0, 0), Vec3(0, 0.3 / kR, 0)),
+              b = ball(2 * kR, 0, Vec3(0.29, 0, 0), Vec3(0, 0.29 / kR, 0));
     a = classify(a, p);
     b = classify(b, p);
     const auto [na, nb] = resolve_push(a, b, p);

@@ -204,8 +204,8 @@ TEST_SUITE("scene_parse extensions") {
   }
 
   TEST_CASE("pocket lines replace the standard pockets") {
-    const Scene s = parse_ok(
-        "cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n");
+    const Scene s =
+        parse_ok("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n");
     REQUIRE(s.pockets.size() == 2);
     check_vec(s.pockets[1].center, -1.27, 0.635, 0);
     CHECK(s.pockets[1].radius == 0.07);
@@ -238,8 +238,8 @@ TEST_SUITE("scene_parse extensions") {
 
   TEST_CASE("a param governs the checks wherever it appears in the file") {
     // The balls sit on the bed and apart only with the larger radius, given after them.
-    const Scene s = parse_ok(
-        "cue 0 0\nball 0 0 0 0.05 1 0 0 1 0 0 0\nball 1 0.1 0 0.05 0 0 0 1 0 0 0\nparam ball_radius 0.05\n");
+    const Scene s =
+        parse_ok("cue 0 0\nball 0 0 0 0.05 1 0 0 1 0 0 0\nball 1 0.1 0 0.05 0 0 0 1 0 0 0\nparam ball_radius 0.05\n");
     CHECK(s.physics.ball_radius == 0.05);
   }
 

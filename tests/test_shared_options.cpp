@@ -50,8 +50,9 @@ TEST_SUITE("shared options") {
   }
 
   TEST_CASE("the same accepted forms") {
-    for (const std::vector<std::string>& args : {std::vector<std::string>{"--fps", "24", "--size", "640x360", "--strict"},
-                                                std::vector<std::string>{"--fps=24", "--size=640x360", "--strict"}}) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"--fps", "24", "--size", "640x360", "--strict"},
+          std::vector<std::string>{"--fps=24", "--size=640x360", "--strict"}}) {
       ExportOptions e;
       PreviewOptions p;
       std::string message;
@@ -69,8 +70,8 @@ TEST_SUITE("shared options") {
 
   TEST_CASE("the same words for a bad value, from the one reader") {
     const std::vector<std::vector<std::string>> bad = {
-        {"--fps", "0"}, {"--fps", "2.5"}, {"--fps", "1001"}, {"--fps"},          {"--size", "12"},
-        {"--size", "0x10"}, {"--size", "+640x360"}, {"--size"}, {"--strict=yes"}};
+        {"--fps", "0"},     {"--fps", "2.5"},       {"--fps", "1001"}, {"--fps"},       {"--size", "12"},
+        {"--size", "0x10"}, {"--size", "+640x360"}, {"--size"},        {"--strict=yes"}};
     for (const auto& args : bad) {
       CAPTURE(args.front());
       const std::string message = export_rejection(args);

@@ -7,10 +7,10 @@
 #include "bench/physics_print.h"
 #include "bench/random_scenes.h"
 #include "bench/shot_checks.h"
-#include "timeline.h"
 #include "motion.h"
 #include "pocket_fall.h"
 #include "simulate.h"
+#include "timeline.h"
 
 using namespace bsim;
 
@@ -38,7 +38,8 @@ std::vector<const Event*> of_type(const Timeline& timeline, EventType type) {
 }  // namespace
 
 TEST_SUITE("simulate") {
-  TEST_CASE("start at 0, all at rest until the cue at kCueLeadTime, end a whole number of seconds after the last rest") {
+  TEST_CASE(
+      "start at 0, all at rest until the cue at kCueLeadTime, end a whole number of seconds after the last rest") {
     const Timeline timeline = simulate(table_with({ball(0, -0.5, 0.1, 1.2, 0.3), ball(3, 0.4, -0.2)}));
     const auto& events = timeline.events();
     REQUIRE(events.size() >= 3);

@@ -58,6 +58,6 @@ TEST_SUITE("simulate: golden") {
     // A golden file whose scene is gone would be compared with nothing.
     for (const std::string& name : stems(test::golden_path("events", ""), ".json"))
       CHECK_MESSAGE(scenes.count(name) == 1, "tests/golden/events/" << name << ".json has no scenes/" << name
-                                                                       << ".scn: remove it or restore the scene");
+                                                                    << ".scn: remove it or restore the scene");
   }
 }

@@ -22,10 +22,11 @@ namespace {
 
 // Two balls on the standard table: the cue ball runs into the object ball, which runs to the
 // right-hand cushion; the camera looks along +y, so +x is the right of the picture.
-const std::string kScene = std::string("cue 0 0\n"
-                                         "ball 0 -0.8 0 0.028575  1.5 0 0  1 0 0 0\n"
-                                         "ball 1  0.0 0 0.028575  0 0 0  1 0 0 0\n") +
-                             test::fixtures::kHoverCamera;
+const std::string kScene = std::string(
+                               "cue 0 0\n"
+                               "ball 0 -0.8 0 0.028575  1.5 0 0  1 0 0 0\n"
+                               "ball 1  0.0 0 0.028575  0 0 0  1 0 0 0\n") +
+                           test::fixtures::kHoverCamera;
 
 AudioBuffer silence(double seconds) {
   AudioBuffer audio;
@@ -54,7 +55,8 @@ double energy(const std::vector<float>& channel, double from, double to) {
 double onset_near(const AudioBuffer& audio, double t) {
   const double level = 0.25 * peak(audio, t, t + 0.005);
   for (std::size_t i = sample_at(std::max(t - 0.005, 0.0)); i < sample_at(t + 0.005); ++i)
-    if (std::abs(audio.left[i]) > level || std::abs(audio.right[i]) > level) return static_cast<double>(i) / kSampleRate;
+    if (std::abs(audio.left[i]) > level || std::abs(audio.right[i]) > level)
+      return static_cast<double>(i) / kSampleRate;
   return -1;
 }
 
@@ -129,8 +131,8 @@ TEST_SUITE("sound") {
     CHECK(view_position(camera, Vec3(1, 0, 0), 55) == test::near(across, 1e-12));
     CHECK(view_position(camera, Vec3(-1, 0, 0), 55) == test::near(-across, 1e-12));
     CHECK(view_position(camera, Vec3(0, 0, 0), 55) == doctest::Approx(0).epsilon(1e-12));
-    CHECK(view_position(camera, Vec3(50, 0, 0), 55) == 1.0);    // far outside the picture: clamped
-    CHECK(view_position(camera, Vec3(1, -5, 0), 55) == 1.0);    // behind the camera, to its right
+    CHECK(view_position(camera, Vec3(50, 0, 0), 55) == 1.0);  // far outside the picture: clamped
+    CHECK(view_position(camera, Vec3(1, -5, 0), 55) == 1.0);  // behind the camera, to its right
 
     const PhysicsParams physics;
     AudioBuffer audio = silence(1.0);
@@ -191,10 +193,10 @@ TEST_SUITE("sound") {
     CHECK(bytes.substr(8, 4) == "WAVE");
     const std::size_t fmt = bytes.find("fmt ");
     REQUIRE(fmt != std::string::npos);
-    CHECK((le32(bytes, fmt + 8) & 0xffff) == 1);           // PCM
-    CHECK((le32(bytes, fmt + 8) >> 16) == 2);              // stereo
-    CHECK(le32(bytes, fmt + 12) == 48000);                 // sample rate
-    CHECK((le32(bytes, fmt + 20) >> 16) == 16);            // bits per sample
+    CHECK((le32(bytes, fmt + 8) & 0xffff) == 1);  // PCM
+    CHECK((le32(bytes, fmt + 8) >> 16) == 2);     // stereo
+    CHECK(le32(bytes, fmt + 12) == 48000);        // sample rate
+    CHECK((le32(bytes, fmt + 20) >> 16) == 16);   // bits per sample
     const std::size_t data = bytes.find("data");
     REQUIRE(data != std::string::npos);
     CHECK(le32(bytes, data + 4) == audio.left.size() * 4);  // frames x 2 channels x 2 bytes
@@ -218,8 +220,8 @@ TEST_SUITE("sound") {
     AudioBuffer music;
     REQUIRE(load_music_bed(path, 2 * kSampleRate, music, error));
     REQUIRE(music.left.size() == static_cast<std::size_t>(2 * kSampleRate));
-    CHECK(std::abs(music.left.front()) < 1e-3);     // faded in
-    CHECK(std::abs(music.left.back()) < 1e-3);      // faded out
+    CHECK(std::abs(music.left.front()) < 1e-3);  // faded in
+    CHECK(std::abs(music.left.back()) < 1e-3);   // faded out
     CHECK(peak(music, 0, 2) == doctest::Approx(kMusicLevel).epsilon(0.01));
     CHECK(peak(music, 1.2, 1.3) > 0.5 * kMusicLevel);  // the half-second tone plays on, looped
 

@@ -16,9 +16,10 @@ using namespace bsim;
 namespace {
 
 std::unique_ptr<Shot> load(const std::string& camera) {
-  const std::string text = "cue 0 0\nball 0 -0.6 0.1 0.028575  0.8 0 0  1 0 0 0\n"
-                           "ball 1 0.2 -0.3 0.028575  0 0 0  1 0 0 0\ncamera\nevent 0 0 0 " +
-                           camera + "\nendcamera\n";
+  const std::string text =
+      "cue 0 0\nball 0 -0.6 0.1 0.028575  0.8 0 0  1 0 0 0\n"
+      "ball 1 0.2 -0.3 0.028575  0 0 0  1 0 0 0\ncamera\nevent 0 0 0 " +
+      camera + "\nendcamera\n";
   ShotResult r = load_shot(text, "down");
   REQUIRE(r.shot);
   return std::move(r.shot);
@@ -83,7 +84,7 @@ TEST_SUITE("straight-down camera") {
   TEST_CASE("the sound pans by the straight-down picture too") {
     const Vec3 eye(0.2, 0.1, 1.0);
     const CameraPose on_its_point{eye, eye, false};
-    CHECK(view_position(on_its_point, eye + Vec3(0.3, 0, -1), kCameraFovDeg) > 0.1);   // +x: right
+    CHECK(view_position(on_its_point, eye + Vec3(0.3, 0, -1), kCameraFovDeg) > 0.1);    // +x: right
     CHECK(view_position(on_its_point, eye + Vec3(-0.3, 0, -1), kCameraFovDeg) < -0.1);  // -x: left
     CHECK(view_position(on_its_point, eye + Vec3(0, 0.3, -1), kCameraFovDeg) == doctest::Approx(0));
     // A nearly vertical camera pans as its picture shows it (+x right), whichever way it leans.

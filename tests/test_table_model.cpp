@@ -89,7 +89,8 @@ TEST_SUITE("table model") {
     CHECK(table_layout(standard_scene()).sights.size() == 18);
   }
 
-  TEST_CASE("the layout grows the noses by the cushion, then the wood; a scene without cushions gets the standard bed") {
+  TEST_CASE(
+      "the layout grows the noses by the cushion, then the wood; a scene without cushions gets the standard bed") {
     const TableLayout layout = table_layout(standard_scene());
     const TableSpec& t = kStandardTable;
     CHECK(layout.noses.x1 == t.half_length);
@@ -99,7 +100,8 @@ TEST_SUITE("table model") {
     CHECK(layout.rail_top == doctest::Approx(t.nose_height + t.rail.top_rise));
     CHECK(layout.cushion_top == doctest::Approx(t.nose_height + t.cushion.top_rise));
     for (const SightPlace& s : layout.sights) {
-      const double from_nose = s.along_x ? std::abs(s.centre.y()) - t.half_width : std::abs(s.centre.x()) - t.half_length;
+      const double from_nose =
+          s.along_x ? std::abs(s.centre.y()) - t.half_width : std::abs(s.centre.x()) - t.half_length;
       CHECK(from_nose == doctest::Approx(t.sights.from_nose));
       CHECK(s.centre.z() == layout.rail_top);
     }

@@ -139,7 +139,8 @@ TEST_SUITE("validation: tokens") {
 
 TEST_SUITE("validation: balls") {
   TEST_CASE("ball numbers from 0 to 15, each once") {
-    expect_error("cue 0 0\nball 16 0 0 0.028575 1 0 0 1 0 0 0\n", 2, 6, {"expected a ball number from 0 to 15, found '16'"});
+    expect_error("cue 0 0\nball 16 0 0 0.028575 1 0 0 1 0 0 0\n", 2, 6,
+                 {"expected a ball number from 0 to 15, found '16'"});
     expect_error("cue 0 0\nball -1 0 0 0.028575 1 0 0 1 0 0 0\n", 2, 6, {"from 0 to 15, found '-1'"});
     expect_error("cue 0 0\nball 99999999999999999999999 0 0 0.028575 1 0 0 1 0 0 0\n", 2, 6, {"from 0 to 15"});
     expect_error("cue 0 0\n" + kBall0 + "ball 0 0.5 0 0.028575 0 0 0 1 0 0 0\n", 3, 6,
@@ -155,7 +156,8 @@ TEST_SUITE("validation: balls") {
   TEST_CASE("a zero quaternion") {
     expect_error("cue 0 0\nball 0 0 0 0.028575 1 0 0 0 0 0 0\n" + kCam, 2, 27,
                  {"expected a non-zero orientation quaternion", "found 0 0 0 0"});
-    expect_error("cue 0 0\nball 0 0 0 0.028575 1 0 0 0 0 nan 0\n", 2, 31, {"finite number for the ball's orientation y"});
+    expect_error("cue 0 0\nball 0 0 0 0.028575 1 0 0 0 0 nan 0\n", 2, 31,
+                 {"finite number for the ball's orientation y"});
   }
 
   TEST_CASE("a ball whose centre is not on the bed") {
@@ -234,7 +236,8 @@ TEST_SUITE("validation: camera") {
 
   TEST_CASE("camera lines outside camera ... endcamera") {
     expect_error("cue 0 0\n" + kBall0 + "endcamera\n", 3, 1, {"'endcamera' without a 'camera'"});
-    expect_error("cue 0 0\n" + kBall0 + "event 0 0 0 hover 0 -3 2 0 0 0\n", 3, 1, {"'event' outside a camera description"});
+    expect_error("cue 0 0\n" + kBall0 + "event 0 0 0 hover 0 -3 2 0 0 0\n", 3, 1,
+                 {"'event' outside a camera description"});
     expect_error("cue 0 0\n" + kBall0 + "camera\nhover 0 0 0\nendcamera\n", 4, 1,
                  {"expected 'event' or 'endcamera' in the camera description, found 'hover'"});
   }
@@ -293,7 +296,8 @@ TEST_SUITE("validation: extensions and params") {
 
   TEST_CASE("--strict rejects every extension where it appears") {
     const ParseOptions strict{.strict = true};
-    expect_error("cue 0 0 # aim\n" + kBall0 + kCam, 1, 9, {"'#' comments are an extension that --strict rejects"}, strict);
+    expect_error("cue 0 0 # aim\n" + kBall0 + kCam, 1, 9, {"'#' comments are an extension that --strict rejects"},
+                 strict);
     expect_error("cue 0 0\n" + kBall0 + "spin 0 0 0 1\n" + kCam, 3, 1, {"'spin' is an extension"}, strict);
     expect_error("cue 0 0\n" + kBall0 + "pocket 0 0 0 0.1\n" + kCam, 3, 1, {"'pocket' is an extension"}, strict);
     expect_error("cue 0 0\n" + kBall0 + kCam + "param g 9.8\n", 6, 1, {"'param' is an extension"}, strict);

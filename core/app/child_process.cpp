@@ -16,7 +16,8 @@ namespace bsim {
 namespace {
 
 volatile sig_atomic_t g_signal = 0;
-struct sigaction g_old_int {}, g_old_term {};
+struct sigaction g_old_int {
+}, g_old_term{};
 
 void on_signal(int signal) { g_signal = signal; }
 
@@ -92,8 +93,7 @@ void stop_process(pid_t pid) {
     usleep(50000);
   }
   kill(pid, SIGKILL);
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
 }
 
 pid_t wait_any(bool& success) {

@@ -49,8 +49,8 @@ std::string unknown_option_message(std::string_view name);
 /// The options both programs take, with their defaults. apply_shared_option() reads and checks
 /// them, so each is parsed in one place and rejected in the same words by both.
 struct SharedOptions {
-  int fps = 30;             ///< --fps N: frames per second of the movie or the animatic
-  int width = 1280;         ///< --size WxH: pixels
+  int fps = 30;      ///< --fps N: frames per second of the movie or the animatic
+  int width = 1280;  ///< --size WxH: pixels
   int height = 720;
   bool size_given = false;  ///< --size was given
   bool strict = false;      ///< --strict: accept only the original scene language

@@ -13,13 +13,13 @@ enum class EventType { start, cue, ball_ball, ball_rail, end };
 std::string_view to_string(EventType type);
 
 struct Event {
-  int index = 0;           ///< position in Timeline::events(), 0 = start
-  double time = 0;         ///< s
+  int index = 0;    ///< position in Timeline::events(), 0 = start
+  double time = 0;  ///< s
   EventType type = EventType::start;
-  std::vector<int> balls;  ///< file-order indices: cue [target], ball-ball [i, j] (i < j), ball-rail [i]
-  int rail = -1;           ///< ball-rail: index into Scene::rails
-  double speed = 0;        ///< m/s, closing speed along the contact normal (cue: the ball's speed)
-  Vec3 where{0, 0, 0};     ///< m, the contact point (cue: the struck ball's centre)
+  std::vector<int> balls;                ///< file-order indices: cue [target], ball-ball [i, j] (i < j), ball-rail [i]
+  int rail = -1;                         ///< ball-rail: index into Scene::rails
+  double speed = 0;                      ///< m/s, closing speed along the contact normal (cue: the ball's speed)
+  Vec3 where{0, 0, 0};                   ///< m, the contact point (cue: the struck ball's centre)
   std::vector<BallState> before, after;  ///< states of `balls` just before and after
 };
 

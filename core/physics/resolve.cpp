@@ -92,11 +92,13 @@ Vec3 cushion_contact_point(const BallState& ball, const Vec3& toward, double nos
   return ball.position + params.ball_radius * cushion_normal(toward, nose_height, params);
 }
 
-double cushion_closing_speed(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params) {
+double cushion_closing_speed(const BallState& ball, const Vec3& toward, double nose_height,
+                             const PhysicsParams& params) {
   return ball.velocity.dot(cushion_normal(toward, nose_height, params));
 }
 
-BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params) {
+BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height,
+                               const PhysicsParams& params) {
   BallState out = ball;
   const double vn = Vec3(ball.velocity.x(), ball.velocity.y(), 0).dot(toward);  // horizontal approach
   if (!(vn > 0)) return out;

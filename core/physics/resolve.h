@@ -40,9 +40,11 @@ std::pair<BallState, BallState> resolve_push(const BallState& a, const BallState
 Vec3 cushion_contact_point(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params);
 
 /// m/s, the ball's approach speed along the cushion contact normal (> 0 when closing).
-double cushion_closing_speed(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params);
+double cushion_closing_speed(const BallState& ball, const Vec3& toward, double nose_height,
+                             const PhysicsParams& params);
 
 /// A ball touching a cushion -> after the impact. Unchanged when it is not closing.
-BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height, const PhysicsParams& params);
+BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height,
+                               const PhysicsParams& params);
 
 }  // namespace bsim

@@ -6,11 +6,11 @@
 #include <queue>
 #include <tuple>
 
-#include "timeline.h"
 #include "detect.h"
 #include "motion.h"
 #include "pocket_fall.h"
 #include "resolve.h"
+#include "timeline.h"
 
 namespace bsim {
 
@@ -41,7 +41,8 @@ bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion
 
 class Simulator {
  public:
-  explicit Simulator(const Scene& scene) : scene_(scene), params_(scene.physics), n_(static_cast<int>(scene.balls.size())) {
+  explicit Simulator(const Scene& scene)
+      : scene_(scene), params_(scene.physics), n_(static_cast<int>(scene.balls.size())) {
     const double R = params_.ball_radius;
     segments_.resize(static_cast<std::size_t>(n_));
     version_.assign(static_cast<std::size_t>(n_), 0);
@@ -100,10 +101,10 @@ class Simulator {
 
   /// Each ball's path and the box it sweeps until own_time_, cached for the pair tests.
   struct Track {
-    Path path;        ///< from t0
+    Path path;  ///< from t0
     double t0 = 0;
-    SweptBox box{};   ///< from the last scheduling time to own_time_
-    bool live = true; ///< on the bed
+    SweptBox box{};    ///< from the last scheduling time to own_time_
+    bool live = true;  ///< on the bed
   };
   std::vector<Track> tracks_;
 
@@ -166,8 +167,7 @@ class Simulator {
       const bool over_pocket = std::any_of(scene_.pockets.begin(), scene_.pockets.end(), [&](const Pocket& p) {
         return Vec3(s.position.x() - p.center.x(), s.position.y() - p.center.y(), 0).norm() < p.radius;
       });
-      if (i == target)
-        add_event(EventType::cue, t, {i}, -1, s.velocity.norm(), s.position, {current(i).start}, {s});
+      if (i == target) add_event(EventType::cue, t, {i}, -1, s.velocity.norm(), s.position, {current(i).start}, {s});
       if (s.motion != Motion::stationary) begin_segment(i, t, s);
       if (s.motion != Motion::stationary || over_pocket) changed.push_back(i);
     }

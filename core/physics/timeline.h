@@ -12,9 +12,9 @@ struct Scene;
 
 /// A stretch of one ball's motion in closed form: from `start` at `t0` until the next segment.
 struct MotionSegment {
-  double t0 = 0;     ///< s
-  BallState start;   ///< state at t0
-  int pocket = -1;   ///< falling/pocketed: the pocket it drops into
+  double t0 = 0;    ///< s
+  BallState start;  ///< state at t0
+  int pocket = -1;  ///< falling/pocketed: the pocket it drops into
 };
 
 class Timeline {

@@ -16,15 +16,15 @@ inline constexpr SrgbColor kBallIvory{240, 234, 214};
 
 /// The colour of the solids 1 to 8, indexed by number (index 0 is the cue ball's ivory).
 inline constexpr SrgbColor kSolidColors[9] = {
-    kBallIvory,       // 0 cue ball
-    {250, 196, 18},   // 1 yellow
-    {18, 52, 170},    // 2 blue
-    {206, 22, 22},    // 3 red
-    {86, 28, 130},    // 4 purple
-    {248, 108, 16},   // 5 orange
-    {10, 112, 56},    // 6 green
-    {122, 22, 24},    // 7 maroon
-    {14, 14, 16},     // 8 black
+    kBallIvory,      // 0 cue ball
+    {250, 196, 18},  // 1 yellow
+    {18, 52, 170},   // 2 blue
+    {206, 22, 22},   // 3 red
+    {86, 28, 130},   // 4 purple
+    {248, 108, 16},  // 5 orange
+    {10, 112, 56},   // 6 green
+    {122, 22, 24},   // 7 maroon
+    {14, 14, 16},    // 8 black
 };
 
 /// Whether ball `number` is a stripe (9 to 15).

@@ -48,25 +48,35 @@ bool param_in_range(const ParamSpec& spec, double value) {
 }
 
 std::string describe_range(const ParamSpec& spec) {
-  if (std::isinf(spec.max))
-    return (spec.min_exclusive ? "greater than " : "at least ") + number_text(spec.min);
+  if (std::isinf(spec.max)) return (spec.min_exclusive ? "greater than " : "at least ") + number_text(spec.min);
   return (spec.min_exclusive ? "greater than " + number_text(spec.min) + " and at most "
                              : "from " + number_text(spec.min) + " to ") +
          number_text(spec.max);
 }
 
 void apply_param(PhysicsParams& p, std::string_view name, double value) {
-  if (name == "ball_radius") p.ball_radius = value;
-  else if (name == "ball_mass") p.ball_mass = value;
-  else if (name == "g") p.g = value;
-  else if (name == "mu_slide") p.mu_slide = value;
-  else if (name == "mu_roll") p.mu_roll = value;
-  else if (name == "mu_spin") p.mu_spin = value;
-  else if (name == "e_ball") p.e_ball = value;
-  else if (name == "mu_ball") p.mu_ball = value;
-  else if (name == "e_rail") p.e_rail = value;
-  else if (name == "mu_rail") p.mu_rail = value;
-  else if (name == "table_speed") p.mu_roll = 1.0 / value;
+  if (name == "ball_radius")
+    p.ball_radius = value;
+  else if (name == "ball_mass")
+    p.ball_mass = value;
+  else if (name == "g")
+    p.g = value;
+  else if (name == "mu_slide")
+    p.mu_slide = value;
+  else if (name == "mu_roll")
+    p.mu_roll = value;
+  else if (name == "mu_spin")
+    p.mu_spin = value;
+  else if (name == "e_ball")
+    p.e_ball = value;
+  else if (name == "mu_ball")
+    p.mu_ball = value;
+  else if (name == "e_rail")
+    p.e_rail = value;
+  else if (name == "mu_rail")
+    p.mu_rail = value;
+  else if (name == "table_speed")
+    p.mu_roll = 1.0 / value;
 }
 
 }  // namespace bsim

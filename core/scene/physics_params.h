@@ -30,9 +30,9 @@ struct ParamSpec {
   std::string_view name;
   std::string_view unit;
   std::string_view meaning;
-  double min;            ///< smallest physical value (inclusive unless min_exclusive)
+  double min;  ///< smallest physical value (inclusive unless min_exclusive)
   bool min_exclusive;
-  double max;            ///< largest physical value (inclusive)
+  double max;  ///< largest physical value (inclusive)
 };
 
 /// Every `param` name, in the order the documentation lists them.

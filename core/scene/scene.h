@@ -12,12 +12,12 @@
 namespace bsim {
 
 struct Ball {
-  int number = 0;         ///< painted number, 0 (cue ball) to 15
-  Vec3 position{0, 0, 0};  ///< m, centre; z = ball radius on the bed
-  Vec3 velocity{0, 0, 0};  ///< m/s, given to the ball at the cue impact
-  Vec3 spin{0, 0, 0};      ///< rad/s, angular velocity given at the cue impact (`spin` extension)
+  int number = 0;                       ///< painted number, 0 (cue ball) to 15
+  Vec3 position{0, 0, 0};               ///< m, centre; z = ball radius on the bed
+  Vec3 velocity{0, 0, 0};               ///< m/s, given to the ball at the cue impact
+  Vec3 spin{0, 0, 0};                   ///< rad/s, angular velocity given at the cue impact (`spin` extension)
   Quat orientation = Quat::Identity();  ///< normalised
-  SourceLoc loc;           ///< the `ball` keyword
+  SourceLoc loc;                        ///< the `ball` keyword
 };
 
 /// A cushion's nose line, clockwise seen from above: the playing side is on the right from a to b.
@@ -34,9 +34,9 @@ struct Pocket {
 };
 
 struct Cue {
-  int target = 0;           ///< file-order index of the struck ball
-  double heading_deg = 0;   ///< direction the stick pushes, counter-clockwise from +x
-  SourceLoc loc;            ///< the `cue` keyword
+  int target = 0;          ///< file-order index of the struck ball
+  double heading_deg = 0;  ///< direction the stick pushes, counter-clockwise from +x
+  SourceLoc loc;           ///< the `cue` keyword
   SourceLoc target_loc;
   SourceLoc heading_loc;
 };
@@ -46,26 +46,26 @@ enum class CameraMode { hover, look, follow };
 /// One `event N pre post <mode> ...` line of the camera script.
 struct CameraShot {
   static constexpr int kLastEvent = 65535;  ///< the seed's magic number for "the last event"
-  int event = 0;              ///< event number, or kLastEvent
-  double pre = 0;             ///< fraction of the span from the previous listed event, [0, 1]
-  double post = 0;            ///< fraction of the span to the next listed event, [0, 1]
+  int event = 0;                            ///< event number, or kLastEvent
+  double pre = 0;                           ///< fraction of the span from the previous listed event, [0, 1]
+  double post = 0;                          ///< fraction of the span to the next listed event, [0, 1]
   CameraMode mode = CameraMode::hover;
-  Vec3 location{0, 0, 0};     ///< hover/look: world position; follow: offset in the ball's frame
-  Vec3 target{0, 0, 0};       ///< hover: the point looked at
-  int ball = -1;              ///< look/follow: file-order index of the ball
-  SourceLoc loc;              ///< the `event` keyword
-  SourceLoc event_loc;        ///< the event number token
-  SourceLoc ball_loc;         ///< the ball index token (look/follow)
+  Vec3 location{0, 0, 0};  ///< hover/look: world position; follow: offset in the ball's frame
+  Vec3 target{0, 0, 0};    ///< hover: the point looked at
+  int ball = -1;           ///< look/follow: file-order index of the ball
+  SourceLoc loc;           ///< the `event` keyword
+  SourceLoc event_loc;     ///< the event number token
+  SourceLoc ball_loc;      ///< the ball index token (look/follow)
 };
 
 struct Scene {
-  std::string name = "scene";   ///< file stem, used for the default output directory
+  std::string name = "scene";  ///< file stem, used for the default output directory
   Cue cue;
   std::vector<Ball> balls;      ///< file order
   std::vector<Rail> rails;      ///< file order, or the standard table's six cushions
   std::vector<Pocket> pockets;  ///< file order, or the standard table's six pockets
   std::vector<CameraShot> camera;
-  SourceLoc camera_loc;         ///< the `camera` keyword
+  SourceLoc camera_loc;  ///< the `camera` keyword
   PhysicsParams physics;
 };
 

@@ -87,8 +87,7 @@ class Parser {
   void run() {
     map_.end = lexed_.end;
     if (options_.strict)
-      for (const SourceLoc& loc : lexed_.comments)
-        error(loc, "'#' comments are an extension that --strict rejects");
+      for (const SourceLoc& loc : lexed_.comments) error(loc, "'#' comments are an extension that --strict rejects");
     while (pos_ < lexed_.tokens.size() && !too_many_errors_) {
       try {
         statement();
@@ -153,14 +152,17 @@ class Parser {
     const Token& t = take("an integer for " + what);
     if (where) *where = t.loc;
     long long value = 0;
-    if (!parse_integer(t.text, value)) fail_at_value(t, "expected an integer for " + what + ", found " + quote_token(t.text));
+    if (!parse_integer(t.text, value))
+      fail_at_value(t, "expected an integer for " + what + ", found " + quote_token(t.text));
     return value;
   }
 
   /// A file-order ball index (range checked once every ball is known).
   int ball_index(const std::string& what, SourceLoc& where) {
     const long long value = integer(what, &where);
-    if (value < 0) fail(where, "expected a ball index of 0 or more for " + what + ", found " + quote_token(lexed_.tokens[pos_ - 1].text));
+    if (value < 0)
+      fail(where,
+           "expected a ball index of 0 or more for " + what + ", found " + quote_token(lexed_.tokens[pos_ - 1].text));
     return static_cast<int>(std::min<long long>(value, INT_MAX));
   }
 
@@ -217,7 +219,8 @@ class Parser {
     c.loc = keyword.loc;
     c.target = ball_index("the cue's target ball", c.target_loc);
     c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
-    if (map_.has_cue) fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
+    if (map_.has_cue)
+      fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
     scene_.cue = c;
     map_.has_cue = true;
   }
@@ -244,8 +247,7 @@ class Parser {
     // Scale first so that huge or tiny components neither overflow nor vanish when squared.
     double largest = 0;
     for (double c : q) largest = std::max(largest, std::abs(c));
-    if (largest == 0)
-      fail(w_loc, "expected a non-zero orientation quaternion (w x y z, e.g. 1 0 0 0), found 0 0 0 0");
+    if (largest == 0) fail(w_loc, "expected a non-zero orientation quaternion (w x y z, e.g. 1 0 0 0), found 0 0 0 0");
     b.orientation = Quat(q[0] / largest, q[1] / largest, q[2] / largest, q[3] / largest).normalized();
     ball_lines_[b.number] = keyword.loc.line;
     scene_.balls.push_back(b);
@@ -269,8 +271,10 @@ class Parser {
     p.center = vector("the pocket's {} centre", nullptr, &z_loc);
     p.radius = number("the pocket's radius", &radius_loc);
     if (std::abs(p.center.z()) > kPlacementTolerance)
-      fail(z_loc, "expected the pocket's centre on the bed (z = 0), found z = " + quote_token(lexed_.tokens[pos_ - 2].text));
-    if (p.radius <= 0) fail(radius_loc, "expected a pocket radius greater than 0, found " + quote_token(lexed_.tokens[pos_ - 1].text));
+      fail(z_loc,
+           "expected the pocket's centre on the bed (z = 0), found z = " + quote_token(lexed_.tokens[pos_ - 2].text));
+    if (p.radius <= 0)
+      fail(radius_loc, "expected a pocket radius greater than 0, found " + quote_token(lexed_.tokens[pos_ - 1].text));
     p.center.z() = 0;
     scene_.pockets.push_back(p);
   }
@@ -282,7 +286,8 @@ class Parser {
     const Vec3 w = vector("the ball's {} spin in rad/s");
     for (const auto& other : map_.spins)
       if (other.ball == line.ball)
-        fail(keyword.loc, "ball index " + std::to_string(line.ball) + " already has a spin on line " + std::to_string(other.loc.line));
+        fail(keyword.loc, "ball index " + std::to_string(line.ball) + " already has a spin on line " +
+                              std::to_string(other.loc.line));
     map_.spins.push_back(line);
     spins_.push_back(w);
   }
@@ -290,7 +295,8 @@ class Parser {
   void param(const Token& keyword) {
     const Token& name = take("a parameter name (" + param_names() + ")");
     const std::optional<ParamSpec> spec = find_param(name.text);
-    if (!spec) fail_at_value(name, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
+    if (!spec)
+      fail_at_value(name, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
     SourceLoc value_loc;
     const double value = number("parameter '" + std::string(spec->name) + "'", &value_loc);
     if (!param_in_range(*spec, value))
@@ -301,7 +307,8 @@ class Parser {
     if (auto seen = param_lines_.find(key); seen != param_lines_.end())
       diagnostics_.push_back({Severity::warning, keyword.loc,
                               "parameter '" + std::string(spec->name) + "' sets " + std::string(key) +
-                                  " again (first on line " + std::to_string(seen->second) + "); the last value is used"});
+                                  " again (first on line " + std::to_string(seen->second) +
+                                  "); the last value is used"});
     param_lines_[key] = keyword.loc.line;
     params_.emplace_back(spec->name, value);
   }
@@ -326,8 +333,9 @@ class Parser {
     if (t.text == "event") return event(t);
     if (is_top_keyword(t.text)) {
       // Most likely a forgotten endcamera: say so once and read the rest of the file normally.
-      error(t.loc, "expected 'event' or 'endcamera', found " + quote_token(t.text) + " (the camera description on line " +
-                       std::to_string(scene_.camera_loc.line) + " has no 'endcamera')");
+      error(t.loc, "expected 'event' or 'endcamera', found " + quote_token(t.text) +
+                       " (the camera description on line " + std::to_string(scene_.camera_loc.line) +
+                       " has no 'endcamera')");
       in_camera_ = false;
       --pos_;
       return;
@@ -351,7 +359,8 @@ class Parser {
       s.location = vector("the hover camera's {} location");
       s.target = vector("the hover camera's {} look-at point");
       if ((s.location - s.target).norm() <= kPlacementTolerance)
-        fail(mode.loc, "expected a hover camera that looks at a point away from itself, found location and look-at point equal");
+        fail(mode.loc,
+             "expected a hover camera that looks at a point away from itself, found location and look-at point equal");
     } else if (mode.text == "look") {
       s.mode = CameraMode::look;
       s.location = vector("the look camera's {} location");
@@ -423,15 +432,15 @@ ParseResult parse_scene(std::string_view text, std::string_view name, const Pars
         {Severity::error, map.end, "the scene is empty; expected a cue description and at least one ball"});
   } else if (!has_errors(result.diagnostics)) {
     if (!map.has_cue)
-      result.diagnostics.push_back({Severity::error, map.end,
-                                    "expected a cue description ('cue <ball index> <heading>'), found none"});
+      result.diagnostics.push_back(
+          {Severity::error, map.end, "expected a cue description ('cue <ball index> <heading>'), found none"});
     if (scene.balls.empty())
       result.diagnostics.push_back({Severity::error, map.end,
                                     "expected at least one ball description ('ball <number> <position> <velocity> "
                                     "<orientation>'), found none"});
     if (options.strict && !parser.camera_seen())
-      result.diagnostics.push_back({Severity::error, map.end,
-                                    "expected a camera description ('camera' ... 'endcamera'), found none"});
+      result.diagnostics.push_back(
+          {Severity::error, map.end, "expected a camera description ('camera' ... 'endcamera'), found none"});
   }
   if (!has_errors(result.diagnostics)) validate_scene(scene, map, result.diagnostics);
 

@@ -14,8 +14,8 @@ struct ParseOptions {
 };
 
 struct ParseResult {
-  std::optional<Scene> scene;            ///< present when there is no error
-  std::vector<Diagnostic> diagnostics;   ///< errors and warnings, in file order
+  std::optional<Scene> scene;           ///< present when there is no error
+  std::vector<Diagnostic> diagnostics;  ///< errors and warnings, in file order
 };
 
 /// `name` becomes Scene::name (the file stem).

@@ -70,11 +70,12 @@ class Validator {
   /// Every reference to a ball by its file-order index.
   void references() {
     if (!ball_exists(scene_.cue.target))
-      error(scene_.cue.target_loc, "expected a cue target ball index " + index_range() + ", found " +
-                                       std::to_string(scene_.cue.target));
+      error(scene_.cue.target_loc,
+            "expected a cue target ball index " + index_range() + ", found " + std::to_string(scene_.cue.target));
     for (const auto& spin : map_.spins)
       if (!ball_exists(spin.ball))
-        error(spin.ball_loc, "expected a ball index for 'spin' " + index_range() + ", found " + std::to_string(spin.ball));
+        error(spin.ball_loc,
+              "expected a ball index for 'spin' " + index_range() + ", found " + std::to_string(spin.ball));
     for (const CameraShot& shot : scene_.camera)
       if (shot.mode != CameraMode::hover && !ball_exists(shot.ball))
         error(shot.ball_loc, std::string("expected the index of the ball the camera ") +
@@ -104,8 +105,8 @@ class Validator {
       const Pocket& pocket = scene_.pockets[k];
       const Vec3 d = p - pocket.center;
       if (std::hypot(d.x(), d.y()) < pocket.radius)
-        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over pocket " +
-                                       std::to_string(k) + line_of(pocket.loc) + " and will drop into it");
+        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over pocket " + std::to_string(k) +
+                                       line_of(pocket.loc) + " and will drop into it");
     }
   }
 
@@ -128,8 +129,8 @@ class Validator {
     const bool encloses = lo_x < hi_x && lo_y < hi_y;  // a lone cushion or a wall spans no area
     if (encloses && (p.x() < lo_x - t || p.x() > hi_x + t || p.y() < lo_y - t || p.y() > hi_y + t)) {
       error(tokens.position_x, "expected the ball inside the cushions (centre x from " + fmt(lo_x) + " to " +
-                                   fmt(hi_x) + ", y from " + fmt(lo_y) + " to " + fmt(hi_y) + "), found x = " +
-                                   fmt(p.x()) + ", y = " + fmt(p.y()));
+                                   fmt(hi_x) + ", y from " + fmt(lo_y) + " to " + fmt(hi_y) +
+                                   "), found x = " + fmt(p.x()) + ", y = " + fmt(p.y()));
       return false;
     }
     std::size_t nearest = 0;
@@ -146,8 +147,9 @@ class Validator {
     const double length2 = along.x() * along.x() + along.y() * along.y();
     const double s = length2 > 0 ? (along.x() * (p.x() - r.a.x()) + along.y() * (p.y() - r.a.y())) / length2 : 0;
     if (s > 0 && s < 1 && cross2(along, p - r.a) > t * std::sqrt(length2)) {
-      error(tokens.position_x, "expected the ball on the playing side of its nearest cushion, " + rail_name(r, nearest) +
-                                   ", found it behind the cushion at x = " + fmt(p.x()) + ", y = " + fmt(p.y()));
+      error(tokens.position_x, "expected the ball on the playing side of its nearest cushion, " +
+                                   rail_name(r, nearest) + ", found it behind the cushion at x = " + fmt(p.x()) +
+                                   ", y = " + fmt(p.y()));
       return false;
     }
     if (nearest_distance < radius_ - t) {
@@ -185,9 +187,10 @@ class Validator {
       return cross2(d, p - r.a) > kPlacementTolerance * d.norm();
     });
     if (faces_away)
-      error(r.loc, "expected the rail's ends in clockwise order seen from above (the playing side is on the right "
-                   "walking from the first end to the second), found its playing side facing away from every ball; "
-                   "swap its two ends");
+      error(r.loc,
+            "expected the rail's ends in clockwise order seen from above (the playing side is on the right "
+            "walking from the first end to the second), found its playing side facing away from every ball; "
+            "swap its two ends");
   }
 
   void cue_heading() {
@@ -203,8 +206,8 @@ class Validator {
     double off = std::remainder(scene_.cue.heading_deg - along, 360.0);
     if (std::abs(off) > kHeadingToleranceDeg)
       warning(scene_.cue.heading_loc, "the cue's heading " + fmt(scene_.cue.heading_deg) +
-                                          " degrees disagrees with its ball's velocity, which points at " +
-                                          fmt(along) + " degrees (off by " + fmt(std::abs(off)) + " degrees)");
+                                          " degrees disagrees with its ball's velocity, which points at " + fmt(along) +
+                                          " degrees (off by " + fmt(std::abs(off)) + " degrees)");
   }
 
   const Scene& scene_;

@@ -25,7 +25,7 @@ struct SceneSourceMap {
   std::vector<RailTokens> rails;  ///< parallel to the scene's own rails (empty for the standard ones)
   std::vector<SpinLine> spins;
   bool has_cue = false;
-  SourceLoc end;                  ///< just past the last token
+  SourceLoc end;  ///< just past the last token
 };
 
 /// Appends errors and warnings for `scene`. Scene::rails and pockets already hold the defaults.

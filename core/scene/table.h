@@ -121,12 +121,12 @@ struct SightPlace {
 /// Where the standard cushion, wood and sights stand around one scene's nose lines: what both front
 /// ends build their table from.
 struct TableLayout {
-  TableRect noses;          ///< the nose lines' bounding box (the standard bed's when there are none)
-  TableRect wood_inner;     ///< where the wood begins: the noses grown by the cushion's width
-  TableRect wood_outer;     ///< the table's outer edge: grown further by the wood's width
-  double nose_height = 0;   ///< m, the highest nose (the standard one when there are none)
-  double cushion_top = 0;   ///< m above the bed, the cushions' top where it meets the wood
-  double rail_top = 0;      ///< m above the bed, the wood's top
+  TableRect noses;         ///< the nose lines' bounding box (the standard bed's when there are none)
+  TableRect wood_inner;    ///< where the wood begins: the noses grown by the cushion's width
+  TableRect wood_outer;    ///< the table's outer edge: grown further by the wood's width
+  double nose_height = 0;  ///< m, the highest nose (the standard one when there are none)
+  double cushion_top = 0;  ///< m above the bed, the cushions' top where it meets the wood
+  double rail_top = 0;     ///< m above the bed, the wood's top
   std::vector<SightPlace> sights;
 };
 

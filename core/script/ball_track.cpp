@@ -91,8 +91,7 @@ BallState BallTrack::motion_state(double t) const {
   auto it = std::upper_bound(list.begin(), list.end(), t, [](double v, const MotionSegment& s) { return v < s.t0; });
   if (it != list.begin()) --it;
   const double dt = std::max(0.0, t - it->t0);
-  if (it->start.motion == Motion::falling && it->pocket >= 0 &&
-      it->pocket < static_cast<int>(scene_->pockets.size()))
+  if (it->start.motion == Motion::falling && it->pocket >= 0 && it->pocket < static_cast<int>(scene_->pockets.size()))
     return fall_state(it->start, scene_->pockets[static_cast<std::size_t>(it->pocket)], physics, dt);
   return evolve(it->start, physics, std::min(dt, transition_time(it->start, physics)));
 }

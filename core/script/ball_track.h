@@ -36,11 +36,11 @@ class BallTrack {
   const Timeline* timeline_ = nullptr;
   int ball_ = 0;
   double hidden_time_ = 0;
-  double initial_angle_ = 0;        ///< rad, the heading before any motion
-  std::vector<double> arc_;         ///< m travelled (horizontally) up to sample i
-  std::vector<double> knot_arc_;    ///< m, start of each stretch of constant direction
+  double initial_angle_ = 0;           ///< rad, the heading before any motion
+  std::vector<double> arc_;            ///< m travelled (horizontally) up to sample i
+  std::vector<double> knot_arc_;       ///< m, start of each stretch of constant direction
   std::vector<double> knot_integral_;  ///< rad*m, integral of the angle over arc length up to the knot
-  std::vector<double> knot_angle_;  ///< rad, the direction over the stretch (unwrapped)
+  std::vector<double> knot_angle_;     ///< rad, the direction over the stretch (unwrapped)
 };
 
 }  // namespace bsim

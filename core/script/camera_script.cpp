@@ -30,8 +30,7 @@ std::string counted(int count, const std::string& noun) {
 SourceLoc where(const SourceLoc& token, const SourceLoc& line) { return token.known() ? token : line; }
 
 std::string describe_event(int written, int resolved) {
-  if (written == CameraShot::kLastEvent)
-    return "event 65535 (the last event, " + std::to_string(resolved) + ")";
+  if (written == CameraShot::kLastEvent) return "event 65535 (the last event, " + std::to_string(resolved) + ")";
   return "event " + std::to_string(written);
 }
 
@@ -44,9 +43,9 @@ std::vector<int> resolve_events(const Scene& scene, int event_count, std::vector
     int index = shot.event;
     if (shot.event == CameraShot::kLastEvent && event_count > 0) index = event_count - 1;
     if (shot.event == CameraShot::kLastEvent ? event_count == 0 : (index < 0 || index >= event_count)) {
-      diagnostics.push_back({Severity::error, where(shot.event_loc, shot.loc),
-                             "event " + std::to_string(shot.event) + " does not exist: the shot has " +
-                                 counted(event_count, "event")});
+      diagnostics.push_back(
+          {Severity::error, where(shot.event_loc, shot.loc),
+           "event " + std::to_string(shot.event) + " does not exist: the shot has " + counted(event_count, "event")});
       resolved.push_back(-1);
       continue;
     }
@@ -68,9 +67,9 @@ bool check_balls(const Scene& scene, std::vector<Diagnostic>& diagnostics) {
   bool ok = true;
   for (const CameraShot& shot : scene.camera) {
     if (shot.mode == CameraMode::hover || (shot.ball >= 0 && shot.ball < count)) continue;
-    diagnostics.push_back({Severity::error, where(shot.ball_loc, shot.loc),
-                           "ball " + std::to_string(shot.ball) + " does not exist: the scene has " +
-                               counted(count, "ball")});
+    diagnostics.push_back(
+        {Severity::error, where(shot.ball_loc, shot.loc),
+         "ball " + std::to_string(shot.ball) + " does not exist: the scene has " + counted(count, "ball")});
     ok = false;
   }
   return ok;
@@ -141,7 +140,8 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeli
     if (j == 0) continue;  // nothing comes before the first description, so nothing to blend from
     const double previous = times[k - 1];
     const CameraShot& shot = script.shots_[k];
-    CameraWindow window{j, times[k] - shot.pre * (times[k] - previous), times[k], times[k] + shot.post * (next - times[k])};
+    CameraWindow window{j, times[k] - shot.pre * (times[k] - previous), times[k],
+                        times[k] + shot.post * (next - times[k])};
     // Windows that would overlap share the span between their events in the ratio of their fractions.
     if (!script.windows_.empty() && script.windows_.back().end > window.begin) {
       CameraWindow& before = script.windows_.back();

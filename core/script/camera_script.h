@@ -36,18 +36,18 @@ Vec3 picture_up(const Vec3& direction);
 /// The time one listed description holds (from its event to the next listed event; the first one
 /// also holds from the start of the shot to its event).
 struct CameraSegment {
-  int shot = 0;        ///< index into CameraScript::shots() (= Scene::camera when the scene lists any)
-  double begin = 0;    ///< s
-  double end = 0;      ///< s
+  int shot = 0;      ///< index into CameraScript::shots() (= Scene::camera when the scene lists any)
+  double begin = 0;  ///< s
+  double end = 0;    ///< s
 };
 
 /// An interpolation window around a listed event, from the description before it (shot - 1) to the
 /// one that starts at it (shot). begin == end is a cut. The first listed event has none.
 struct CameraWindow {
-  int shot = 0;          ///< index into CameraScript::shots() of the description that starts at the event
-  double begin = 0;      ///< s
-  double event_time = 0; ///< s
-  double end = 0;        ///< s
+  int shot = 0;           ///< index into CameraScript::shots() of the description that starts at the event
+  double begin = 0;       ///< s
+  double event_time = 0;  ///< s
+  double end = 0;         ///< s
 };
 
 class CameraScript {

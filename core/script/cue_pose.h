@@ -11,8 +11,8 @@ inline constexpr double kCueTipRadius = 0.0065;
 inline constexpr double kCueButtRadius = 0.0145;
 
 struct CuePose {
-  Vec3 tip{0, 0, 0};   ///< m, centre of the tip's face
-  Vec3 axis{-1, 0, 0}; ///< unit vector from the tip toward the butt
+  Vec3 tip{0, 0, 0};    ///< m, centre of the tip's face
+  Vec3 axis{-1, 0, 0};  ///< unit vector from the tip toward the butt
   bool visible = false;
 };
 

@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "camera_interpolation.h"
-#include "cue_pose.h"
 #include "cue_geometry.h"
+#include "cue_pose.h"
 
 namespace bsim {
 

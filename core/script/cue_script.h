@@ -49,19 +49,19 @@ class CueScript {
   const Timeline* timeline_ = nullptr;
   const CameraScript* camera_ = nullptr;
   std::vector<CuePhaseSpan> phases_;
-  Vec3 contact_{0, 0, 0};    ///< m
-  Vec3 heading_{1, 0, 0};    ///< unit, horizontal: the direction the stick pushes
-  double elevation_ = 0;     ///< rad
-  double cue_time_ = 0;      ///< s
-  double ball_speed_ = 0;    ///< m/s the strike gives the ball
-  double tip_speed_ = 0;     ///< m/s at contact
-  double backswing_ = 0;     ///< m behind the contact point where the forward stroke starts
-  double follow_ = 0;        ///< m past the contact point where the tip stops
-  double accel_time_ = 0;    ///< s of the forward stroke
-  double follow_time_ = 0;   ///< s of the follow-through
-  double approach_from_ = 0; ///< m behind the contact point at the start (swung up, out of view)
-  double retract_to_ = 0;    ///< m behind the contact point at the end of retraction
-  double hide_time_ = 0;     ///< s, the stick is removed from here on
+  Vec3 contact_{0, 0, 0};     ///< m
+  Vec3 heading_{1, 0, 0};     ///< unit, horizontal: the direction the stick pushes
+  double elevation_ = 0;      ///< rad
+  double cue_time_ = 0;       ///< s
+  double ball_speed_ = 0;     ///< m/s the strike gives the ball
+  double tip_speed_ = 0;      ///< m/s at contact
+  double backswing_ = 0;      ///< m behind the contact point where the forward stroke starts
+  double follow_ = 0;         ///< m past the contact point where the tip stops
+  double accel_time_ = 0;     ///< s of the forward stroke
+  double follow_time_ = 0;    ///< s of the follow-through
+  double approach_from_ = 0;  ///< m behind the contact point at the start (swung up, out of view)
+  double retract_to_ = 0;     ///< m behind the contact point at the end of retraction
+  double hide_time_ = 0;      ///< s, the stick is removed from here on
 };
 
 }  // namespace bsim

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "audio_buffer.h"
 #include "camera_script.h"
 #include "physics_params.h"
 #include "sound_synth.h"
-#include "audio_buffer.h"
 
 namespace bsim {
 

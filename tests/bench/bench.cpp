@@ -44,9 +44,11 @@ void figures(const char* name, const bsim::Scene& scene, int runs) {
   volatile std::size_t sink = 0;
   const double physics = median_us(runs, [&] { sink = sink + bsim::simulate_events(scene).events.size(); });
   const double full = median_us(runs, [&] { sink = sink + bsim::simulate(scene).events().size(); });
-  std::printf("%-12s %4zu balls %6ld events %6ld segments %7ld tests  %10.1f us/shot  %10.1f us with orientation  %9.0f events/s\n",
-              name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
-              static_cast<double>(events) / (physics * 1e-6));
+  std::printf(
+      "%-12s %4zu balls %6ld events %6ld segments %7ld tests  %10.1f us/shot  %10.1f us with orientation  %9.0f "
+      "events/s\n",
+      name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
+      static_cast<double>(events) / (physics * 1e-6));
 }
 
 int soak(long count) {
@@ -73,9 +75,10 @@ int soak(long count) {
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("soak: %ld random breaks, %ld events, %ld balls pocketed, %.1f s\n", count, events, drops, seconds);
-  std::printf("soak: %ld overlaps, %ld rail escapes, %ld NaN, %ld missed contacts, %ld energy gains, %ld cut off "
-              "(%ld faulty breaks)\n",
-              sum.overlaps, sum.escapes, sum.nans, sum.missed, sum.energy_gains, cut_offs, faulty);
+  std::printf(
+      "soak: %ld overlaps, %ld rail escapes, %ld NaN, %ld missed contacts, %ld energy gains, %ld cut off "
+      "(%ld faulty breaks)\n",
+      sum.overlaps, sum.escapes, sum.nans, sum.missed, sum.energy_gains, cut_offs, faulty);
   std::printf("soak: deepest overlap of two balls or a ball and a cushion: %.3g m (faults from %.3g m)\n", sum.deepest,
               bsim::checks::kFaultTolerance);
   return sum.total() == 0 && cut_offs == 0 ? 0 : 1;

@@ -29,9 +29,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct Run {
-  int status = -1;        ///< exit status, -1 when it did not exit normally
-  double wall = 0;        ///< s
-  double cpu = 0;         ///< s, user + system of the process and the children it waited for (ffmpeg)
+  int status = -1;  ///< exit status, -1 when it did not exit normally
+  double wall = 0;  ///< s
+  double cpu = 0;   ///< s, user + system of the process and the children it waited for (ffmpeg)
 };
 
 // fork/exec rather than system(): no shell in the timing, and wait4 gives the process's CPU time.
@@ -58,7 +58,9 @@ Run run(const std::vector<std::string>& args, const std::string& log) {
   rusage usage{};
   if (wait4(pid, &status, 0, &usage) != pid) return result;
   result.wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
   result.cpu = seconds(usage.ru_utime) + seconds(usage.ru_stime);
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -139,10 +141,11 @@ int main(int argc, char** argv) {
     cpu.push_back(r.cpu);
   }
   if (!wall.empty())
-    std::printf("snapshot process (--at %s -o FILE.png, %zu runs): wall median %.3f s, min %.3f s, max %.3f s; "
-                "CPU median %.3f s\n",
-                at, wall.size(), median(wall), *std::min_element(wall.begin(), wall.end()),
-                *std::max_element(wall.begin(), wall.end()), median(cpu));
+    std::printf(
+        "snapshot process (--at %s -o FILE.png, %zu runs): wall median %.3f s, min %.3f s, max %.3f s; "
+        "CPU median %.3f s\n",
+        at, wall.size(), median(wall), *std::min_element(wall.begin(), wall.end()),
+        *std::max_element(wall.begin(), wall.end()), median(cpu));
 
   if (movie) {
     const Run r = run({preview, "--movie", (dir / "break.mp4").string()}, log);
@@ -151,9 +154,10 @@ int main(int argc, char** argv) {
                    bsim::test::read_file(log).value_or("").c_str());
       status = 1;
     } else {
-      std::printf("animatic (--movie FILE.mp4, %d frames at 30 fps with sound): wall %.2f s, CPU %.2f s with ffmpeg "
-                  "(%.1f ms of wall time a frame)\n",
-                  frames, r.wall, r.cpu, 1e3 * r.wall / frames);
+      std::printf(
+          "animatic (--movie FILE.mp4, %d frames at 30 fps with sound): wall %.2f s, CPU %.2f s with ffmpeg "
+          "(%.1f ms of wall time a frame)\n",
+          frames, r.wall, r.cpu, 1e3 * r.wall / frames);
     }
   }
   std::error_code ignored;

@@ -114,8 +114,8 @@ inline Scene stress_table(int count, std::uint64_t seed) {
   scene.name = "stress";
   const double hx = 3.0, hy = 1.5, h = kStandardNoseHeight, c = 0.12, R = scene.physics.ball_radius;
   auto rail = [h](double ax, double ay, double bx, double by) { return Rail{Vec3(ax, ay, h), Vec3(bx, by, h), {}}; };
-  scene.rails = {rail(-hx + c, hy, -c, hy),     rail(c, hy, hx - c, hy),     rail(hx, hy - c, hx, -hy + c),
-                 rail(hx - c, -hy, c, -hy),     rail(-c, -hy, -hx + c, -hy), rail(-hx, -hy + c, -hx, hy - c)};
+  scene.rails = {rail(-hx + c, hy, -c, hy), rail(c, hy, hx - c, hy),     rail(hx, hy - c, hx, -hy + c),
+                 rail(hx - c, -hy, c, -hy), rail(-c, -hy, -hx + c, -hy), rail(-hx, -hy + c, -hx, hy - c)};
   for (double x : {-hx, 0.0, hx})
     for (double y : {hy, -hy}) scene.pockets.push_back(Pocket{Vec3(x, y, 0), c, {}});
   const int columns = static_cast<int>(std::ceil(std::sqrt(2.0 * count)));

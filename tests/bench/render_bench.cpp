@@ -47,12 +47,13 @@ double own_cpu() {
 
 void remove_pictures(const std::string& frames_dir) {
   for (const auto& e : fs::directory_iterator(frames_dir))
-    if (e.path().extension() == ".png" || e.path().filename() == std::string(bsim::kFrameCacheName)) fs::remove(e.path());
+    if (e.path().extension() == ".png" || e.path().filename() == std::string(bsim::kFrameCacheName))
+      fs::remove(e.path());
 }
 
 struct RenderTiming {
-  double wall = 0;      ///< s
-  double own_cpu = 0;   ///< s of the exporter's CPU meanwhile
+  double wall = 0;     ///< s
+  double own_cpu = 0;  ///< s of the exporter's CPU meanwhile
 };
 
 RenderTiming render(const std::string& frames_dir, const std::vector<bsim::FrameJob>& jobs,
@@ -78,8 +79,10 @@ int main(int argc, char** argv) {
   options.quality = bsim::Quality::draft;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--every") every = std::max(1, std::atoi(argv[i + 1]));
-    else if (flag == "--fps") options.fps = std::max(1, std::atoi(argv[i + 1]));
+    if (flag == "--every")
+      every = std::max(1, std::atoi(argv[i + 1]));
+    else if (flag == "--fps")
+      options.fps = std::max(1, std::atoi(argv[i + 1]));
   }
   const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
   if (povray.empty() || ffmpeg.empty()) {
@@ -107,8 +110,8 @@ int main(int argc, char** argv) {
   std::vector<bsim::FrameJob> jobs;
   for (int k = 0; k < frames; k += every) jobs.push_back({k, 0});
   const std::string frames_dir = (dir / "frames").string();
-  std::printf("default break, draft %dx%d, %d frames at %d fps; rendering %zu of them\n", options.width,
-              options.height, frames, options.fps, jobs.size());
+  std::printf("default break, draft %dx%d, %d frames at %d fps; rendering %zu of them\n", options.width, options.height,
+              frames, options.fps, jobs.size());
   std::fflush(stdout);
 
   // What this machine gives two processes: three frames one after another, then six neighbouring
@@ -148,12 +151,13 @@ int main(int argc, char** argv) {
   const double inside = two.wall - two.own_cpu + encode_time;
   std::printf("exporter's own work: load and simulate %.2f s, frames and sound %.2f s, %.2f s CPU while rendering\n",
               load_time, write_time, two.own_cpu);
-  std::printf("outside POV-Ray and ffmpeg: %.2f s; inside: %.1f s; own share %.2f%% (at --jobs 2%s)\n", outside,
-              inside, 100 * outside / (outside + inside), every == 1 ? "" : ", frames sampled");
+  std::printf("outside POV-Ray and ffmpeg: %.2f s; inside: %.1f s; own share %.2f%% (at --jobs 2%s)\n", outside, inside,
+              100 * outside / (outside + inside), every == 1 ? "" : ", frames sampled");
   const double speedup = one.wall / two.wall;
-  std::printf("speed-up of --jobs 2 over --jobs 1: %.2fx; two concurrent renders of one frame: %.2fx; "
-              "parallel efficiency %.0f%%\n",
-              speedup, machine, 100 * speedup / machine);
+  std::printf(
+      "speed-up of --jobs 2 over --jobs 1: %.2fx; two concurrent renders of one frame: %.2fx; "
+      "parallel efficiency %.0f%%\n",
+      speedup, machine, 100 * speedup / machine);
   fs::remove_all(dir);
   return 0;
 }

@@ -22,6 +22,8 @@ bool write_file(const std::filesystem::path& path, std::string_view contents) {
   return static_cast<bool>(out);
 }
 
-std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(BSIM_SOURCE_DIR) / relative; }
+std::filesystem::path source_path(const std::string& relative) {
+  return std::filesystem::path(BSIM_SOURCE_DIR) / relative;
+}
 
 }  // namespace bsim::test

@@ -22,7 +22,8 @@ std::unique_ptr<Shot> load_scene(std::string_view text, std::string_view name) {
 
 std::unique_ptr<Shot> load_clean(std::string_view text, std::string_view name) {
   ShotResult result = load_shot(text, name);
-  CHECK_MESSAGE(result.diagnostics.empty(), "the scene should load without a message:\n" << listed(result.diagnostics, name));
+  CHECK_MESSAGE(result.diagnostics.empty(), "the scene should load without a message:\n"
+                                                << listed(result.diagnostics, name));
   REQUIRE_MESSAGE(result.shot, "the scene does not load");
   return std::move(result.shot);
 }

@@ -2,11 +2,11 @@
 
 #include <doctest/doctest.h>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <optional>
 #include <random>
 #include <utility>
-#include <sys/wait.h>
 
 #include "files.h"
 
