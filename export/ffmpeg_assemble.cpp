@@ -26,7 +26,7 @@ std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const s
   return {settings.ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
           std::to_string(settings.fps), "-start_number", "0", "-i", "frames/frame_%05d.png", "-i", "soundtrack.wav",
           "-map", "0:v:0", "-map", "1:a:0",
-          // The frames k = 0..N show t = k/fps, one frame more than fills the shot: cut to the sound's length.
+          // The frames fill the shot exactly (core/frames.h); the cut guards the streams' common end.
           "-t", duration_text(settings.duration),
           // yuv420p needs even sizes: pad an odd one by a pixel rather than fail
           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt",

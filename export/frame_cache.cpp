@@ -1,9 +1,14 @@
 #include "frame_cache.h"
 
-#include <charconv>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <vector>
+
+namespace fs = std::filesystem;
 
 namespace bsim {
 
@@ -16,36 +21,80 @@ std::uint64_t fnv1a(std::string_view bytes, std::uint64_t seed) {
   return h;
 }
 
-FrameCache::FrameCache(std::string frames_dir) : dir_(std::move(frames_dir)) {
-  std::ifstream in(dir_ + "/" + std::string(kFrameCacheName));
-  std::string name, hex;
-  while (in >> name >> hex) {
-    std::uint64_t key = 0;
-    const auto [end, ec] = std::from_chars(hex.data(), hex.data() + hex.size(), key, 16);
-    if (ec == std::errc() && end == hex.data() + hex.size()) keys_[name] = key;
-  }
+std::string default_frame_cache_dir() {
+  auto variable = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value ? std::string(value) : std::string();
+  };
+  const std::string chosen = variable("BSIM_CACHE_DIR");
+  if (chosen == "off") return "";
+  if (!chosen.empty()) return chosen;
+  if (const std::string xdg = variable("XDG_CACHE_HOME"); !xdg.empty()) return xdg + "/billiards-sim/frames";
+  if (const std::string home = variable("HOME"); !home.empty()) return home + "/.cache/billiards-sim/frames";
+  return "";
 }
 
-bool FrameCache::up_to_date(const std::string& png_name, std::uint64_t key) const {
-  const auto it = keys_.find(png_name);
-  return it != keys_.end() && it->second == key && std::filesystem::exists(dir_ + "/" + png_name);
-}
-
-bool FrameCache::save() const {
-  const std::string path = dir_ + "/" + std::string(kFrameCacheName);
-  const std::string temp = dir_ + "/." + std::string(kFrameCacheName) + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    for (const auto& [name, key] : keys_) {
-      char hex[24];
-      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(key));
-      out << name << ' ' << hex << '\n';
-    }
-    if (!out.flush()) return false;
-  }
+FrameCache::FrameCache(std::string store_dir, std::string frames_dir)
+    : store_(std::move(store_dir)), frames_(std::move(frames_dir)) {
+  if (store_.empty()) return;
   std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  return !ec;
+  fs::create_directories(store_, ec);
+  if (ec) store_.clear();  // no store: every frame is rendered, as it would be the first time
+}
+
+std::string FrameCache::picture(std::uint64_t key) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "%016llx.png", static_cast<unsigned long long>(key));
+  return store_ + "/" + name;
+}
+
+bool FrameCache::fetch(const std::string& png_name, std::uint64_t key) const {
+  if (store_.empty()) return false;
+  const std::string stored = picture(key);
+  std::error_code ec;
+  if (!fs::is_regular_file(stored, ec) || fs::file_size(stored, ec) == 0 || ec) return false;
+  if (!fs::copy_file(stored, frames_ + "/" + png_name, fs::copy_options::overwrite_existing, ec) || ec) return false;
+  fs::last_write_time(stored, fs::file_time_type::clock::now(), ec);  // recently used: trimmed last
+  return true;
+}
+
+void FrameCache::set(const std::string& png_name, std::uint64_t key) const {
+  if (store_.empty()) return;
+  // Copied under a name of this process, then renamed: a reader never sees half a picture, and two
+  // runs storing the same picture at once each rename a whole one.
+  const std::string stored = picture(key);
+  const std::string temp = stored + "." + std::to_string(::getpid()) + ".tmp";
+  std::error_code ec;
+  if (fs::copy_file(frames_ + "/" + png_name, temp, fs::copy_options::overwrite_existing, ec) && !ec)
+    fs::rename(temp, stored, ec);
+  if (ec) fs::remove(temp, ec);
+}
+
+void FrameCache::trim(std::uintmax_t limit) const {
+  if (store_.empty()) return;
+  struct Entry {
+    fs::file_time_type used;
+    std::uintmax_t size;
+    fs::path path;
+  };
+  std::vector<Entry> entries;
+  std::uintmax_t total = 0;
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(store_, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() != ".png") continue;
+    std::error_code entry_ec;
+    const std::uintmax_t size = it->file_size(entry_ec);
+    const fs::file_time_type used = it->last_write_time(entry_ec);
+    if (entry_ec) continue;
+    entries.push_back({used, size, it->path()});
+    total += size;
+  }
+  if (total <= limit) return;
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  for (const Entry& e : entries) {
+    if (total <= limit) break;
+    if (fs::remove(e.path, ec)) total -= e.size;
+  }
 }
 
 }  // namespace bsim

@@ -1,14 +1,21 @@
 // billiards-export: scene -> events, trajectories, camera path, POV-Ray frames, sound, movie.
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "builtin_scene.h"
+#include "child_process.h"
 #include "export_options.h"
+#include "frames.h"
 #include "movie_export.h"
 #include "output_stage.h"
 #include "outputs.h"
+#include "run_summary.h"
 #include "shot.h"
 
 namespace {
@@ -23,18 +30,57 @@ bool read_file(const std::string& path, std::string& text) {
 }
 
 template <class Writer>
-bool write_staged(const bsim::OutputStage& stage, const std::string& name, Writer&& writer) {
+bool write_staged(const bsim::OutputStage& stage, const std::string& name, Writer&& writer, std::string& error) {
   std::ofstream out(stage.path(name), std::ios::binary);
   writer(out);
   out.flush();
   if (!out) {
-    std::cerr << "billiards-export: error: cannot write " << stage.path(name) << "\n";
+    error = "cannot write " + stage.path(name) + ": " + std::strerror(errno);
     return false;
   }
   return true;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Every name a run may write into its output directory: a run removes those it did not write this
+/// time, so the directory never holds one run's data beside another's movie.
+const std::vector<std::string> kRunOutputs = {"events.json",    "trajectory.csv", "camera.csv",         "frames",
+                                              "soundtrack.wav", "movie.mp4",      bsim::kRunSummaryName};
+
+/// Everything a run writes, into the stage: the data files, then (unless --events-only) the frames'
+/// .pov files and the sound track, then (unless --no-render) the rendered frames and the movie, and
+/// run.json. Interrupted when Ctrl-C came.
+bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& options, const bsim::RunPrograms& programs,
+                         const bsim::OutputStage& stage, bsim::RunSummary& summary, std::string& error) {
+  using bsim::RunOutcome;
+  const auto start = std::chrono::steady_clock::now();
+  if (!write_staged(
+          stage, "events.json", [&](std::ostream& o) { bsim::write_events_json(shot, o); }, error) ||
+      !write_staged(
+          stage, "trajectory.csv", [&](std::ostream& o) { bsim::write_trajectory_csv(shot, options.fps, o); }, error) ||
+      !write_staged(
+          stage, "camera.csv", [&](std::ostream& o) { bsim::write_camera_csv(shot, options.fps, o); }, error))
+    return RunOutcome::failed;
+  if (options.events_only) return RunOutcome::done;
+  if (!bsim::write_frames_and_sound(shot, options, stage, error)) return RunOutcome::failed;
+  summary.writing = seconds_since(start);
+  if (bsim::InterruptGuard::interrupted()) return RunOutcome::interrupted;
+  summary.frames_total = bsim::frame_count(shot.timeline.duration(), options.fps);
+  if (!options.no_render) {
+    const RunOutcome rendered = bsim::render_movie(shot, options, programs, stage, summary, error);
+    if (rendered != RunOutcome::done) return rendered;
+    summary.povray_version = bsim::program_version(programs.povray, "--version", "POV-Ray");
+    summary.ffmpeg_version = bsim::program_version(programs.ffmpeg, "-version", "ffmpeg version");
+  }
+  if (!bsim::write_run_summary(summary, options, stage.staging(), error)) return RunOutcome::failed;
+  return bsim::InterruptGuard::interrupted() ? RunOutcome::interrupted : RunOutcome::done;
+}
+
 int run(const bsim::ExportOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   std::string text, name, shown_path;
   if (options.scene_path) {
     shown_path = *options.scene_path;
@@ -53,43 +99,49 @@ int run(const bsim::ExportOptions& options) {
   for (const bsim::Diagnostic& d : loaded.diagnostics) std::cerr << bsim::format_diagnostic(d, shown_path) << "\n";
   if (!loaded.shot) return 1;
   const bsim::Shot& shot = *loaded.shot;
+  bsim::RunSummary summary;
+  summary.scene = shown_path;
+  summary.output = options.out_dir ? *options.out_dir : "out/" + name;
+  summary.simulating = seconds_since(start);
 
-  const std::string dir = options.out_dir ? *options.out_dir : "out/" + name;
-  bsim::OutputStage stage;
+  // Every program the run needs is found before any work, so a missing one costs nothing.
   std::string error;
+  bsim::RunPrograms programs;
+  if (!bsim::find_run_programs(options, programs, error)) {
+    std::cerr << "billiards-export: error: " << error << "\n";
+    return 1;
+  }
+  const std::string& dir = summary.output;
+  bsim::InterruptGuard guard;  // Ctrl-C from here on stops the children and discards the stage first
+  bsim::OutputStage stage;
   if (!stage.open(dir, error)) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  if (!write_staged(stage, "events.json", [&](std::ostream& o) { bsim::write_events_json(shot, o); }) ||
-      !write_staged(stage, "trajectory.csv",
-                    [&](std::ostream& o) { bsim::write_trajectory_csv(shot, options.fps, o); }) ||
-      !write_staged(stage, "camera.csv", [&](std::ostream& o) { bsim::write_camera_csv(shot, options.fps, o); }))
-    return 1;
-  if (!options.events_only && !bsim::write_frames_and_sound(shot, options, stage, error)) {
-    std::cerr << "billiards-export: error: " << error << "\n";
-    return 1;
-  }
-  if (!stage.commit(error)) {
-    std::cerr << "billiards-export: error: " << error << "\n";
+  bsim::RunOutcome outcome = produce(shot, options, programs, stage, summary, error);
+  if (outcome == bsim::RunOutcome::done && !stage.commit(error, kRunOutputs)) outcome = bsim::RunOutcome::failed;
+  if (outcome != bsim::RunOutcome::done) {
+    stage.discard();                                               // the output directory stays exactly as it was
+    if (outcome == bsim::RunOutcome::interrupted) guard.finish();  // dies of the signal, as the user asked
+    std::cerr << "billiards-export: error: " << (outcome == bsim::RunOutcome::interrupted ? "interrupted" : error)
+              << "\n";
     return 1;
   }
-  if (!options.events_only && !options.no_render) {
-    if (!bsim::render_movie(shot, options, dir, error)) {
-      std::cerr << "billiards-export: error: " << error << "\n";
-      return 1;
-    }
-    std::cerr << "wrote " << dir << "/movie.mp4\n";
-  } else {
+  if (!options.events_only && !options.no_render)
+    std::cerr << "wrote " << dir << "/movie.mp4 (" << summary.frames_rendered << " frames rendered, "
+              << summary.frames_reused << " reused)\n";
+  else
     std::cerr << "wrote " << dir << "/ (" << shot.timeline.events().size() << " events, " << shot.timeline.duration()
               << " s)\n";
-  }
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file grown past the size limit fails its write (reported, the run undone) rather than killing
+  // the program with half its outputs staged.
+  std::signal(SIGXFSZ, SIG_IGN);
   std::vector<std::string> args(argv + 1, argv + argc);
   bsim::ExportOptions options;
   std::string message;

@@ -3,10 +3,12 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -19,6 +21,7 @@
 #include "pov_table.h"
 #include "progress_line.h"
 #include "render_jobs.h"
+#include "run_summary.h"
 #include "shot.h"
 #include "soundtrack.h"
 
@@ -67,24 +70,59 @@ int process_count(const ExportOptions& options) {
 
 std::string quality_name(Quality quality) { return quality == Quality::final ? "final" : "draft"; }
 
-/// Removes what a run into this directory left that no longer belongs: frame files and pictures
-/// past the shot's end, half-written pictures and logs of a run that was killed outright.
-void remove_stale(const std::string& frames_dir, int frames, FrameCache& cache) {
-  std::error_code ec;
-  std::vector<std::filesystem::path> stale;
-  for (const auto& entry : std::filesystem::directory_iterator(frames_dir, ec)) {
-    const std::string name = entry.path().filename().string();
-    int frame = -1;
-    const bool numbered = name.size() == 15 && name.rfind("frame_", 0) == 0 &&
-                          (name.ends_with(".png") || name.ends_with(".pov")) &&
-                          std::sscanf(name.c_str(), "frame_%5d.", &frame) == 1;
-    const bool leftover = name.rfind(".frame_", 0) == 0 && (name.ends_with(".tmp.png") || name.ends_with(".log"));
-    if ((numbered && frame >= frames) || leftover) stale.push_back(entry.path());
+/// A frame's text without its `//` comment lines (its number and time): what the picture depends on.
+std::string without_comment_lines(const std::string& text) {
+  std::string kept;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    end = end == std::string::npos ? text.size() : end + 1;
+    if (text.compare(start, 2, "//") != 0) kept.append(text, start, end - start);
+    start = end;
   }
-  for (const auto& path : stale) {  // removed after listing: removing while iterating is unspecified
-    std::filesystem::remove(path, ec);
-    cache.erase(path.filename().string());
+  return kept;
+}
+
+/// Frames whose inputs are all the same (balls at rest under a still camera) are rendered once.
+struct FramePlan {
+  std::vector<FrameJob> jobs;                   ///< to render
+  std::vector<std::pair<int, int>> duplicates;  ///< (frame, the earlier frame it copies)
+  int fetched = 0;                              ///< copied from the store
+};
+
+FramePlan plan_frames(const std::string& frames_dir, int frames, std::uint64_t common, const FrameCache& cache) {
+  FramePlan plan;
+  std::map<std::uint64_t, int> first;
+  for (int k = 0; k < frames; ++k) {
+    const std::uint64_t key =
+        fnv1a(without_comment_lines(read_text(frames_dir + "/" + frame_name(k) + ".pov")), common);
+    const auto [it, fresh] = first.emplace(key, k);
+    if (!fresh)
+      plan.duplicates.emplace_back(k, it->second);
+    else if (cache.fetch(frame_name(k) + ".png", key))
+      ++plan.fetched;
+    else
+      plan.jobs.push_back({k, key});
   }
+  return plan;
+}
+
+bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
+  for (const auto& [frame, source] : plan.duplicates) {
+    std::error_code ec;
+    const std::string to = frames_dir + "/" + frame_name(frame) + ".png";
+    std::filesystem::copy_file(frames_dir + "/" + frame_name(source) + ".png", to,
+                               std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) {
+      error = "cannot write " + to + ": " + ec.message();
+      return false;
+    }
+  }
+  return true;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -118,46 +156,49 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
   return write_wav(stage.path("soundtrack.wav"), audio, error);
 }
 
-bool render_movie(const Shot& shot, const ExportOptions& options, const std::string& dir, std::string& error) {
-  const std::string povray = find_program("povray"), ffmpeg = find_program("ffmpeg");
-  for (const auto& [program, path] : {std::pair{"povray", povray}, std::pair{"ffmpeg", ffmpeg}}) {
+bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std::string& error) {
+  programs = {};
+  if (options.events_only || options.no_render) return true;
+  programs.povray = find_program("povray");
+  programs.ffmpeg = find_program("ffmpeg");
+  for (const auto& [program, path] : {std::pair{"povray", programs.povray}, std::pair{"ffmpeg", programs.ffmpeg}}) {
     if (path.empty()) {
       error = std::string(program) + " is not installed; run `" + kSetUpCommand +
               "` (see README) to set up, or pass --no-render";
       return false;
     }
   }
+  return true;
+}
 
-  const std::string frames_dir = dir + "/frames";
+RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const RunPrograms& programs,
+                        const OutputStage& stage, RunSummary& summary, std::string& error) {
+  const std::string frames_dir = stage.path("frames");
   const int frames = frame_count(shot.timeline.duration(), options.fps);
-  const std::string settings =
-      std::to_string(options.width) + "x" + std::to_string(options.height) + " " + quality_name(options.quality);
+  // What every picture depends on besides its own .pov text; "v2" names the store's key format.
+  const std::string settings = "v2 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                               quality_name(options.quality);
   const std::uint64_t common = fnv1a(settings, fnv1a(read_text(frames_dir + "/" + std::string(kPovIncludeName))));
-  FrameCache cache(frames_dir);
-  remove_stale(frames_dir, frames, cache);
-  std::vector<FrameJob> jobs;
-  for (int k = 0; k < frames; ++k) {
-    const std::uint64_t key = fnv1a(read_text(frames_dir + "/" + frame_name(k) + ".pov"), common);
-    if (!cache.up_to_date(frame_name(k) + ".png", key)) jobs.push_back({k, key});
-  }
-  // A movie left from before no longer matches these frames.
-  std::error_code ec;
-  std::filesystem::remove(dir + "/movie.mp4", ec);
+  FrameCache cache(default_frame_cache_dir(), frames_dir);
+  const FramePlan plan = plan_frames(frames_dir, frames, common, cache);
+  summary.frames_total = frames;
+  summary.frames_rendered = static_cast<int>(plan.jobs.size());
+  summary.frames_reused = frames - summary.frames_rendered;
 
-  InterruptGuard guard;
-  const RenderSettings render{povray, options.width, options.height, options.quality, process_count(options)};
-  RunOutcome outcome = render_frames(frames_dir, jobs, frames, render, cache, error);
-  if (outcome == RunOutcome::done) {
-    const MovieSettings movie{ffmpeg, options.fps, shot.timeline.duration()};
-    if (ProgressLine::wanted()) std::fputs("encoding movie.mp4\n", stderr);
-    outcome = assemble_movie(dir, movie, error);
-  }
-  if (outcome == RunOutcome::interrupted) {
-    guard.finish();  // dies of the signal, as the user asked, now that nothing half-written is left
-    error = "interrupted";
-  }
-  cache.save();
-  return outcome == RunOutcome::done;
+  auto start = std::chrono::steady_clock::now();
+  const RenderSettings render{programs.povray, options.width, options.height, options.quality, process_count(options)};
+  RunOutcome outcome = render_frames(frames_dir, plan.jobs, frames, render, cache, error);
+  if (outcome == RunOutcome::done && !copy_duplicates(frames_dir, plan, error)) outcome = RunOutcome::failed;
+  summary.rendering = seconds_since(start);
+  cache.trim();
+  if (outcome != RunOutcome::done) return outcome;
+
+  start = std::chrono::steady_clock::now();
+  const MovieSettings movie{programs.ffmpeg, options.fps, shot.timeline.duration()};
+  if (ProgressLine::wanted()) std::fputs("encoding movie.mp4\n", stderr);
+  outcome = assemble_movie(stage.staging(), movie, error);
+  summary.encoding = seconds_since(start);
+  return outcome;
 }
 
 }  // namespace bsim

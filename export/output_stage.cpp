@@ -62,31 +62,61 @@ std::string OutputStage::path(const std::string& relative) const {
   return p.string();
 }
 
-bool OutputStage::commit(std::string& error) {
+bool OutputStage::commit(std::string& error, const std::vector<std::string>& owned) {
   if (!open_) {
     error = "nothing staged to commit";
     return false;
   }
   std::error_code ec;
-  std::vector<fs::path> files;
-  for (auto it = fs::recursive_directory_iterator(staging_, ec); !ec && it != fs::recursive_directory_iterator();
-       it.increment(ec))
-    if (it->is_regular_file(ec)) files.push_back(fs::relative(it->path(), staging_, ec));
+  const fs::path destination(destination_);
+  if (!fs::exists(destination, ec)) {
+    if (destination.has_parent_path()) fs::create_directories(destination.parent_path(), ec);
+    if (!ec) fs::rename(staging_, destination, ec);
+    if (ec) {
+      error = "cannot move the staged outputs to '" + destination_ + "': " + reason(ec);
+      return false;
+    }
+    open_ = false;
+    return true;
+  }
+  std::vector<fs::path> entries;
+  for (auto it = fs::directory_iterator(staging_, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+    entries.push_back(it->path().filename());
   if (ec) {
     error = "cannot list the staged files in '" + staging_ + "': " + reason(ec);
     return false;
   }
   // Name order for a reproducible sequence; events.json last, since its presence marks a whole run.
-  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+  std::sort(entries.begin(), entries.end(), [](const fs::path& a, const fs::path& b) {
     const bool a_last = a == "events.json", b_last = b == "events.json";
     return a_last != b_last ? b_last : a < b;
   });
-  for (const fs::path& relative : files) {
-    const fs::path target = fs::path(destination_) / relative;
-    fs::create_directories(target.parent_path(), ec);
-    if (!ec) fs::rename(fs::path(staging_) / relative, target, ec);  // atomic replacement of an older copy
+  for (const fs::path& name : entries) {
+    const fs::path from = fs::path(staging_) / name, to = destination / name;
+    if (fs::is_directory(from, ec) && fs::exists(to, ec)) {
+      // The older folder steps aside under a hidden name, the new one takes its place, the old goes.
+      const fs::path old = destination / ("." + name.string() + ".old-" + std::to_string(::getpid()));
+      fs::remove_all(old, ec);
+      fs::rename(to, old, ec);
+      if (!ec) {
+        fs::rename(from, to, ec);
+        std::error_code ignored;
+        if (ec) fs::rename(old, to, ignored);  // put the older folder back: the destination stays whole
+        fs::remove_all(old, ignored);
+      }
+    } else {
+      fs::rename(from, to, ec);  // atomic replacement of an older copy
+    }
     if (ec) {
-      error = "cannot move '" + relative.string() + "' into '" + destination_ + "': " + reason(ec);
+      error = "cannot move '" + name.string() + "' into '" + destination_ + "': " + reason(ec);
+      return false;
+    }
+  }
+  for (const std::string& name : owned) {
+    if (std::find(entries.begin(), entries.end(), fs::path(name)) != entries.end()) continue;
+    fs::remove_all(destination / name, ec);
+    if (ec) {
+      error = "cannot remove the older '" + name + "' from '" + destination_ + "': " + reason(ec);
       return false;
     }
   }

@@ -2,6 +2,7 @@
 // Writes a run's outputs under a temporary directory beside the destination and moves them into
 // place only when the whole run succeeded, so a failing run leaves nothing half-written.
 #include <string>
+#include <vector>
 
 namespace bsim {
 
@@ -11,8 +12,12 @@ class OutputStage {
   bool open(const std::string& dir, std::string& error);
   /// Path inside the staging directory for a relative name ("events.json", "frames/frame_00000.pov").
   std::string path(const std::string& relative) const;
-  /// Moves every staged file into the destination (creating it), replacing older copies.
-  bool commit(std::string& error);
+  /// Moves what is staged into the destination: a destination that does not exist yet is the staging
+  /// directory renamed; otherwise each top-level file replaces an older copy (one rename each,
+  /// events.json last) and each top-level folder replaces the older folder whole. Then each name in
+  /// `owned` (what a run may write) that this run did not stage is removed, so the destination holds
+  /// one run's outputs, never a mix of two; anything else in it is left alone.
+  bool commit(std::string& error, const std::vector<std::string>& owned = {});
   /// Removes the staging directory; the destination is untouched. Also done by the destructor.
   void discard();
   ~OutputStage();

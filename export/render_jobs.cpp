@@ -112,7 +112,6 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     }
     cleanup(job.frame);
     cache.set(png, job.key);
-    cache.save();
     progress.advance();
   }
   progress.finish();

@@ -116,7 +116,7 @@ TEST_SUITE("events.json") {
     REQUIRE(!lines.empty());
     CHECK(lines[0] == "time,ball,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,state");
     const int frames = frame_count(shot.timeline.duration(), fps);
-    CHECK(frames == static_cast<int>(shot.timeline.duration()) * fps + 1);
+    CHECK(frames == static_cast<int>(shot.timeline.duration()) * fps);  // t = k/fps below the duration
     REQUIRE(lines.size() == 1 + static_cast<std::size_t>(frames * shot.timeline.ball_count()));
     const std::set<std::string> names = {"stationary", "sliding", "rolling", "spinning", "falling", "pocketed"};
     for (std::size_t row = 1; row < lines.size(); row += 37) {

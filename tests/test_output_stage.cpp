@@ -79,24 +79,27 @@ TEST_SUITE("output_stage") {
     CHECK(read(dest / "events.json") == "old");
   }
 
-  TEST_CASE("commit into an existing directory replaces staged names and keeps the others") {
+  TEST_CASE("commit into an existing directory: staged files and folders replace theirs whole, others stay") {
     test::TempDir tmp;
     const fs::path dest = tmp.path / "shot";
     fs::create_directories(dest / "frames");
     write((dest / "events.json").string(), "old");
     write((dest / "frames" / "frame_00000.png").string(), "png");
+    write((dest / "notes.txt").string(), "mine");
+    write((dest / "movie.mp4").string(), "an older run's");
     OutputStage stage;
     std::string error;
     REQUIRE(stage.open(dest.string(), error));
     CHECK(fs::path(stage.staging()).parent_path() == dest);  // one file system for the renames
     write(stage.path("events.json"), "new");
     write(stage.path("frames/frame_00000.pov"), "pov");
-    REQUIRE(stage.commit(error));
+    REQUIRE(stage.commit(error, {"events.json", "frames", "movie.mp4"}));
     CHECK(read(dest / "events.json") == "new");
-    CHECK(read(dest / "frames" / "frame_00000.png") == "png");
     CHECK(read(dest / "frames" / "frame_00000.pov") == "pov");
-    CHECK(listing(dest) ==
-          std::vector<std::string>{"events.json", "frames", "frames/frame_00000.png", "frames/frame_00000.pov"});
+    // The older frames folder went whole, and so did the older movie this run did not make; the
+    // file the run does not own stayed.
+    CHECK(read(dest / "notes.txt") == "mine");
+    CHECK(listing(dest) == std::vector<std::string>{"events.json", "frames", "frames/frame_00000.pov", "notes.txt"});
   }
 
   TEST_CASE("an output path that is a regular file is an error and stays untouched") {

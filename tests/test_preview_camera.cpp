@@ -63,7 +63,7 @@ TEST_SUITE("preview camera") {
     const std::vector<CameraRow> rows = read_camera_csv((out / "camera.csv").string());
     const ShotResult loaded = load_shot(kScene, "tour");
     REQUIRE(loaded.shot);
-    REQUIRE(rows.size() == static_cast<std::size_t>(std::floor(loaded.shot->timeline.duration() * 24 + 1e-9)) + 1);
+    REQUIRE(rows.size() == static_cast<std::size_t>(std::llround(loaded.shot->timeline.duration() * 24)));
     int interpolating = 0;
     for (const CameraRow& row : rows) {
       const ViewCamera view = scripted_view(*loaded.shot, row.time);

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -145,7 +146,7 @@ TEST_SUITE("preview snapshots") {
     CHECK(probe.out.find("audio") != std::string::npos);
     const ShotResult loaded = load_shot(kScene, "cluster");
     REQUIRE(loaded.shot);
-    const int frames = static_cast<int>(loaded.shot->timeline.duration() * 8 + 1e-9) + 1;
+    const int frames = static_cast<int>(std::llround(loaded.shot->timeline.duration() * 8));  // t < duration
     CHECK(probe.out.find("160," + std::to_string(frames)) != std::string::npos);
     CHECK_FALSE(std::ifstream(movie + ".partial").good());
   }

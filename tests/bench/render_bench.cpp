@@ -47,8 +47,7 @@ double own_cpu() {
 
 void remove_pictures(const std::string& frames_dir) {
   for (const auto& e : fs::directory_iterator(frames_dir))
-    if (e.path().extension() == ".png" || e.path().filename() == std::string(bsim::kFrameCacheName))
-      fs::remove(e.path());
+    if (e.path().extension() == ".png") fs::remove(e.path());
 }
 
 struct RenderTiming {
@@ -59,7 +58,7 @@ struct RenderTiming {
 RenderTiming render(const std::string& frames_dir, const std::vector<bsim::FrameJob>& jobs,
                     const bsim::RenderSettings& settings) {
   remove_pictures(frames_dir);
-  bsim::FrameCache cache(frames_dir);
+  bsim::FrameCache cache("", frames_dir);  // no store: every frame is rendered
   std::string error;
   const double cpu = own_cpu();
   const auto start = Clock::now();
