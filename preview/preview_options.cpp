@@ -70,10 +70,12 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     return false;
   };
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  static constexpr std::string_view kWithValue[] = {"--at",      "-o",           "--output",    "--movie",
-                                                    "--overlay", "--quit-after", "--screenshot"};
-  if (std::find(std::begin(kWithValue), std::end(kWithValue), name) == std::end(kWithValue)) {
-    message = unknown_option_message(name);
+  static const std::vector<std::string_view> kWithValue = {"--at",      "-o",           "--output",    "--movie",
+                                                           "--overlay", "--quit-after", "--screenshot"};
+  if (std::find(kWithValue.begin(), kWithValue.end(), name) == kWithValue.end()) {
+    std::vector<std::string_view> own = kWithValue;
+    own.push_back("--timeline");
+    message = unknown_option_message(name, own);
     return false;
   }
   const auto v = reader.value(message);
