@@ -20,6 +20,7 @@ options:
   -o, --output FILE.png  the picture --at or --timeline writes
   --movie FILE.mp4       write the animatic: the whole shot at preview quality
   --size WxH             picture, animatic or window size in pixels (default: 1280x720)
+                         without --size the window's picture is smaller if need be, to fit the screen
   --fps N                animatic frames per second, 1 to 1000 (default: 30)
   --overlay LIST         draw extras, comma-separated: paths, events, camera (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
