@@ -80,7 +80,8 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
     o.music_path = *v;
     return true;
   }
-  message = unknown_option_message(name);
+  message = unknown_option_message(
+      name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs", "--audio-lead", "--music"});
   return false;
 }
 

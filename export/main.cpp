@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <optional>
 
 #include "builtin_scene.h"
 #include "child_process.h"
@@ -16,18 +16,10 @@
 #include "output_stage.h"
 #include "outputs.h"
 #include "run_summary.h"
+#include "scene_file.h"
 #include "shot.h"
 
 namespace {
-
-bool read_file(const std::string& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  text = buffer.str();
-  return !in.bad();
-}
 
 template <class Writer>
 bool write_staged(const bsim::OutputStage& stage, const std::string& name, Writer&& writer, std::string& error) {
@@ -84,10 +76,13 @@ int run(const bsim::ExportOptions& options) {
   std::string text, name, shown_path;
   if (options.scene_path) {
     shown_path = *options.scene_path;
-    if (!read_file(shown_path, text)) {
-      std::cerr << shown_path << ": error: cannot read the scene file\n";
+    std::string error;
+    std::optional<std::string> read = bsim::read_scene_file(shown_path, error);
+    if (!read) {
+      std::cerr << error << "\n";
       return 1;
     }
+    text = std::move(*read);
     name = std::filesystem::path(shown_path).stem().string();
   } else {
     text = std::string(bsim::builtin_scene_text());

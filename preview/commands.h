@@ -17,7 +17,8 @@ std::optional<double> resolve_time(const TimeSpec& at, const Timeline& timeline,
 /// Body text size for a picture `height` pixels high: readable at 720 lines, still legible when small.
 float picture_text_px(int height);
 
-/// --at T -o FILE.png
+/// --at T -o FILE.png, or several --at into a directory or a pattern: the scene is set up once and
+/// each time drawn in turn.
 int run_snapshot(const PreviewOptions& options, const Shot& shot);
 /// --timeline -o FILE.png, of a loaded shot (timeline_data) or of one whose camera script failed
 /// (unscripted_timeline_data).

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     case bsim::PreviewCommandLineOutcome::run: break;
   }
   const bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
-  if (!options.at && !options.timeline && !options.movie) return bsim::run_window(options, source);
+  if (options.at.empty() && !options.timeline && !options.movie) return bsim::run_window(options, source);
 
   const bsim::LoadedShot loaded = bsim::load_source(source);
   for (const std::string& line : loaded.messages) std::cerr << line << "\n";
@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!loaded.shot) return 1;
-  if (options.at) return bsim::run_snapshot(options, *loaded.shot);
+  if (!options.at.empty()) return bsim::run_snapshot(options, *loaded.shot);
   if (options.timeline) return bsim::run_timeline_picture(options, bsim::timeline_data(*loaded.shot));
   return bsim::run_animatic(options, *loaded.shot);
 }

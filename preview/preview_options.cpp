@@ -1,6 +1,10 @@
 #include "preview_options.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <set>
 #include <string_view>
 
 #include "command_line.h"
@@ -15,11 +19,15 @@ Shows SCENE (default: the built-in break) as the scene's camera sees it. With no
 opens the interactive window; otherwise it writes one picture or the animatic and exits.
 
 options:
-  --at SECONDS|event:N   write the frame at this time, or at the instant of event N (needs -o)
+  --at SECONDS|event:N   write the frame at this time, or at the instant of event N (needs -o);
+                         give it several times for one picture per time
   --timeline             write the timeline of events and camera interpolation windows (needs -o)
-  -o, --output FILE.png  the picture --at or --timeline writes
+  -o, --output FILE.png  the picture --at or --timeline writes; for several --at, a directory
+                         (DIR/: pictures at_2.500.png, at_event_3.png) or a name with %t
+                         (shot_%t.png: shot_2.500.png, shot_event_3.png)
   --movie FILE.mp4       write the animatic: the whole shot at preview quality
   --size WxH             picture, animatic or window size in pixels (default: 1280x720)
+                         without --size the window's picture is smaller if need be, to fit the screen
   --fps N                animatic frames per second, 1 to 1000 (default: 30)
   --overlay LIST         draw extras, comma-separated: paths, events, camera (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
@@ -70,10 +78,12 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     return false;
   };
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  static constexpr std::string_view kWithValue[] = {"--at",      "-o",           "--output",    "--movie",
-                                                    "--overlay", "--quit-after", "--screenshot"};
-  if (std::find(std::begin(kWithValue), std::end(kWithValue), name) == std::end(kWithValue)) {
-    message = unknown_option_message(name);
+  static const std::vector<std::string_view> kWithValue = {"--at",      "-o",           "--output",    "--movie",
+                                                           "--overlay", "--quit-after", "--screenshot"};
+  if (std::find(kWithValue.begin(), kWithValue.end(), name) == kWithValue.end()) {
+    std::vector<std::string_view> own = kWithValue;
+    own.push_back("--timeline");
+    message = unknown_option_message(name, own);
     return false;
   }
   const auto v = reader.value(message);
@@ -81,7 +91,7 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
   if (name == "--at") {
     TimeSpec at;
     if (!parse_time(*v, at)) return bad(*v, "seconds from 0 (e.g. 2.5) or event:N (e.g. event:3)");
-    o.at = at;
+    o.at.push_back(at);
   } else if (name == "-o" || name == "--output") {
     if (v->empty()) return bad(*v, "a file");
     o.output = *v;
@@ -101,9 +111,62 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
   return true;
 }
 
-/// Options that only make sense together (or apart).
-bool check_combination(const PreviewOptions& o, std::string& message) {
-  const bool at = o.at.has_value();
+/// Whether `path` ends in `extension` (".png"), in any case.
+bool has_extension(std::string_view path, std::string_view extension) {
+  if (path.size() <= extension.size()) return false;
+  const std::string_view end = path.substr(path.size() - extension.size());
+  return std::equal(end.begin(), end.end(), extension.begin(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+  });
+}
+
+/// The file each --at writes: -o itself, DIR/at_LABEL.png, or the pattern with %t replaced by LABEL.
+bool name_pictures(PreviewOptions& o, std::string& message) {
+  const std::string& out = *o.output;
+  std::error_code ignored;
+  const bool directory = out.ends_with('/') || std::filesystem::is_directory(out, ignored);
+  const bool pattern = !directory && out.find("%t") != std::string::npos;
+  if (directory) {
+    o.picture_dir = out;
+    for (const TimeSpec& at : o.at)
+      o.pictures.push_back(out + (out.ends_with('/') ? "" : "/") + "at_" + time_label(at) + ".png");
+  } else if (pattern) {
+    if (!has_extension(out, ".png")) {
+      message = bad_value_message("-o", out, "a name ending in .png (e.g. shot_%t.png)");
+      return false;
+    }
+    for (const TimeSpec& at : o.at) {
+      std::string name = out;
+      for (auto p = name.find("%t"); p != std::string::npos; p = name.find("%t", p)) {
+        name.replace(p, 2, time_label(at));
+        p += time_label(at).size();
+      }
+      o.pictures.push_back(name);
+    }
+  } else if (o.at.size() > 1) {
+    message =
+        "several --at write one picture each: -o needs a directory (e.g. shots/) or a name with %t (e.g. "
+        "shot_%t.png), found '" +
+        out + "'";
+    return false;
+  } else if (!has_extension(out, ".png")) {
+    message = bad_value_message("-o", out, "a file name ending in .png (or, for --at, a directory or a name with %t)");
+    return false;
+  } else {
+    o.pictures.push_back(out);
+  }
+  std::set<std::string> seen;
+  for (const std::string& picture : o.pictures)
+    if (!seen.insert(picture).second) {
+      message = "two --at times would both write '" + picture + "'; give each time once";
+      return false;
+    }
+  return true;
+}
+
+/// Options that only make sense together (or apart), and the extensions of the files they write.
+bool check_combination(PreviewOptions& o, std::string& message) {
+  const bool at = !o.at.empty();
   if (at && o.timeline)
     message = "--at and --timeline each write one picture; give only one";
   else if (o.movie && (at || o.timeline))
@@ -114,10 +177,23 @@ bool check_combination(const PreviewOptions& o, std::string& message) {
     message = "-o names the picture of --at or --timeline; give one of them";
   else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
+  else if (o.movie && !has_extension(*o.movie, ".mp4"))
+    message = bad_value_message("--movie", *o.movie, "a file name ending in .mp4");
+  else if (o.timeline && !has_extension(*o.output, ".png"))
+    message = bad_value_message("-o", *o.output, "a file name ending in .png");
+  else if (at)
+    return name_pictures(o, message);
   return message.empty();
 }
 
 }  // namespace
+
+std::string time_label(const TimeSpec& at) {
+  if (at.event >= 0) return "event_" + std::to_string(at.event);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3f", at.seconds);
+  return text;
+}
 
 PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& args, PreviewOptions& options,
                                                 std::string& message) {

@@ -14,6 +14,10 @@ struct TimeSpec {
   int event = -1;  ///< >= 0 when given as `event:N`
 };
 
+/// How a time names its picture when -o is a directory or a pattern: the seconds to three decimals
+/// ("2.500") or "event_N".
+std::string time_label(const TimeSpec& at);
+
 struct PreviewOverlays {
   bool paths = false;   ///< every ball's path
   bool events = false;  ///< event markers
@@ -22,11 +26,13 @@ struct PreviewOverlays {
 
 /// fps, width, height, size_given and strict are the options both programs share (SharedOptions).
 struct PreviewOptions : SharedOptions {
-  std::optional<std::string> scene_path;  ///< none: the built-in break
-  std::optional<std::string> output;      ///< -o FILE (.png for --at/--timeline, .mp4 for --movie)
-  std::optional<TimeSpec> at;             ///< --at SECONDS | event:N
-  bool timeline = false;                  ///< --timeline
-  std::optional<std::string> movie;       ///< --movie FILE.mp4 (the animatic)
+  std::optional<std::string> scene_path;   ///< none: the built-in break
+  std::optional<std::string> output;       ///< -o FILE.png, DIR/ or a pattern with %t (for --at)
+  std::vector<TimeSpec> at;                ///< each --at SECONDS | event:N, in command-line order
+  std::vector<std::string> pictures;       ///< set by the parser: the file each --at writes, in the same order
+  std::optional<std::string> picture_dir;  ///< set by the parser when -o names a directory (made if missing)
+  bool timeline = false;                   ///< --timeline
+  std::optional<std::string> movie;        ///< --movie FILE.mp4 (the animatic)
   PreviewOverlays overlays;
   double quit_after = 0;                  ///< s; > 0 closes the interactive window by itself (smoke tests)
   std::optional<std::string> screenshot;  ///< interactive: write the last frame here on quit

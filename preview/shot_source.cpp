@@ -1,10 +1,9 @@
 #include "shot_source.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "builtin_scene.h"
+#include "scene_file.h"
 
 namespace bsim {
 
@@ -26,15 +25,12 @@ LoadedShot load_source(const SceneSource& source) {
   LoadedShot loaded;
   std::string text;
   if (source.path) {
-    std::ifstream in(*source.path, std::ios::binary);
-    std::ostringstream buffer;
-    if (in) buffer << in.rdbuf();
-    if (!in || in.bad()) {
-      loaded.read_error = source.shown_path + ": error: cannot read the scene file";
+    std::optional<std::string> read = read_scene_file(*source.path, loaded.read_error);
+    if (!read) {
       loaded.messages.push_back(loaded.read_error);
       return loaded;
     }
-    text = buffer.str();
+    text = std::move(*read);
   } else {
     text = std::string(builtin_scene_text());
   }

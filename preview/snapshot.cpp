@@ -1,6 +1,7 @@
 // --at: one frame of the shot, drawn headless, with optional overlays.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include <imgui.h>
@@ -35,14 +36,27 @@ float picture_text_px(int height) { return std::clamp(static_cast<float>(height)
 
 int run_snapshot(const PreviewOptions& options, const Shot& shot) {
   std::string error;
-  const std::optional<double> t = resolve_time(*options.at, shot.timeline, error);
-  if (!t) {
-    std::cerr << "billiards-preview: " << error << "\n";
-    return 2;
+  std::vector<double> times;
+  for (const TimeSpec& at : options.at) {
+    const std::optional<double> t = resolve_time(at, shot.timeline, error);
+    if (!t) {
+      std::cerr << "billiards-preview: " << error << "\n";
+      return 2;
+    }
+    if (at.event < 0 && at.seconds > shot.timeline.duration())
+      std::cerr << "billiards-preview: warning: --at " << at.seconds << " is after the end of the shot; showing "
+                << shot.timeline.duration() << " s\n";
+    times.push_back(*t);
   }
-  if (options.at->event < 0 && options.at->seconds > shot.timeline.duration())
-    std::cerr << "billiards-preview: warning: --at " << options.at->seconds << " is after the end of the shot; showing "
-              << shot.timeline.duration() << " s\n";
+  if (options.picture_dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(*options.picture_dir, ec);
+    if (ec) {
+      std::cerr << "billiards-preview: error: cannot create the directory " << *options.picture_dir << ": "
+                << ec.message() << "\n";
+      return 1;
+    }
+  }
   HeadlessCanvas canvas;
   SceneRenderer renderer;
   if (!canvas.open(options.width, options.height, picture_text_px(options.height), error) || !renderer.init(error)) {
@@ -51,16 +65,22 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
   }
   renderer.set_multisampling(kSnapshotSamples);
   renderer.set_scene(shot.scene);
-  const FrameState frame = scripted_frame(shot, *t);
-  renderer.draw(shot.scene, frame, options.width, options.height);
-  ImDrawList* list = canvas.begin_2d();
-  draw_overlays(*list,
-                OverlayFrame{shot, *t, frame.camera, double(options.width), double(options.height), canvas.fonts()},
-                options.overlays);
-  canvas.end_2d();
-  if (!canvas.write_png(*options.output, error)) {
-    std::cerr << "billiards-preview: error: " << error << "\n";
-    return 1;
+  // A directory or a pattern names the pictures: say which files they are.
+  const bool named_here = options.pictures.front() != *options.output;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double t = times[i];
+    const FrameState frame = scripted_frame(shot, t);
+    renderer.draw(shot.scene, frame, options.width, options.height);
+    ImDrawList* list = canvas.begin_2d();
+    draw_overlays(*list,
+                  OverlayFrame{shot, t, frame.camera, double(options.width), double(options.height), canvas.fonts()},
+                  options.overlays);
+    canvas.end_2d();
+    if (!canvas.write_png(options.pictures[i], error)) {
+      std::cerr << "billiards-preview: error: " << error << "\n";
+      return 1;
+    }
+    if (named_here) std::cerr << "wrote " << options.pictures[i] << "\n";
   }
   return 0;
 }

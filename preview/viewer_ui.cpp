@@ -131,6 +131,15 @@ void problems(const ViewerState& state, float window_width) {
 
 }  // namespace
 
+PictureSize default_window_picture(int area_width, int area_height) {
+  constexpr int kLargest = 720, kSmallest = 180, kFallback = 432;  // picture heights, px
+  auto at_height = [](int height) { return PictureSize{(height * 16 + 8) / 9, height}; };
+  if (area_width <= 0 || area_height <= 0) return at_height(kFallback);
+  const int by_height = area_height - kDecorationsHeight - kControlsHeight;
+  const int by_width = (area_width - kDecorationsWidth) * 9 / 16;
+  return at_height(std::clamp(std::min(by_height, by_width), kSmallest, kLargest));
+}
+
 ViewRect view_rect(float window_width, float window_height, int picture_width, int picture_height) {
   const float area_h = std::max(0.f, window_height - kControlsHeight);
   const float aspect = static_cast<float>(picture_width) / static_cast<float>(std::max(picture_height, 1));

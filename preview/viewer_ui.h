@@ -11,6 +11,19 @@ namespace bsim {
 /// px of window height below the picture for the controls.
 inline constexpr int kControlsHeight = 240;
 
+/// px a window manager may add around the window (frame, title bar), left out of the work area.
+inline constexpr int kDecorationsWidth = 16, kDecorationsHeight = 48;
+
+struct PictureSize {
+  int width = 0, height = 0;  ///< px
+};
+
+/// The picture size of a window opened without --size: 1280x720, or smaller at 16:9 so that the
+/// window (the picture, the controls below it and the decorations) fits a screen's work area of
+/// `area_width` x `area_height` (never below 320x180). Without a work area (0 x 0): 768x432, a window of
+/// 768x672 that fits a 1366x768 screen with its task bar.
+PictureSize default_window_picture(int area_width, int area_height);
+
 /// Where the 3D picture goes in the window (window units, origin top-left).
 struct ViewRect {
   float x = 0, y = 0, width = 0, height = 0;

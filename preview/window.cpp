@@ -113,6 +113,15 @@ bool save_screenshot(const std::string& path, int width, int height) {
   return true;
 }
 
+// The default picture size for the primary monitor's work area (the screen less task bars).
+PictureSize fitting_picture() {
+  int x = 0, y = 0, width = 0, height = 0;
+#if GLFW_VERSION_MAJOR > 3 || (GLFW_VERSION_MAJOR == 3 && GLFW_VERSION_MINOR >= 3)
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(monitor, &x, &y, &width, &height);
+#endif
+  return default_window_picture(width, height);
+}
+
 // Opens the window with a GL 3.3 core context and loads the GL functions. Returns 0, or the exit
 // status when that fails (2: no display at all).
 int open_window(GlfwSession& session, const PreviewOptions& options, const std::string& shown_path) {
@@ -128,8 +137,9 @@ int open_window(GlfwSession& session, const PreviewOptions& options, const std::
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
   glfwWindowHint(GLFW_STENCIL_BITS, 8);
   const std::string title = "billiards-preview \xE2\x80\x94 " + shown_path;
-  // The window is the picture plus room for the controls below it.
-  session.window = glfwCreateWindow(options.width, options.height + kControlsHeight, title.c_str(), nullptr, nullptr);
+  // The window is the picture plus room for the controls below it; without --size it fits the screen.
+  const PictureSize picture = options.size_given ? PictureSize{options.width, options.height} : fitting_picture();
+  session.window = glfwCreateWindow(picture.width, picture.height + kControlsHeight, title.c_str(), nullptr, nullptr);
   if (!session.window) {
     std::cerr << "billiards-preview: error: cannot open an OpenGL 3.3 window (" << g_glfw_error << ")\n";
     return 1;

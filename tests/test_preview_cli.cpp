@@ -38,7 +38,7 @@ TEST_SUITE("preview command line") {
     const PreviewOptions o = accepted({});
     CHECK_FALSE(o.scene_path);
     CHECK_FALSE(o.output);
-    CHECK_FALSE(o.at);
+    CHECK(o.at.empty());
     CHECK_FALSE(o.timeline);
     CHECK_FALSE(o.movie);
     CHECK(o.width == 1280);
@@ -55,17 +55,17 @@ TEST_SUITE("preview command line") {
 
   TEST_CASE("--at takes seconds or event:N") {
     const PreviewOptions seconds = accepted({"s.scn", "--at", "1.5", "-o", "f.png", "--size", "320x180"});
-    REQUIRE(seconds.at);
-    CHECK(seconds.at->seconds == 1.5);
-    CHECK(seconds.at->event == -1);
+    REQUIRE(seconds.at.size() == 1);
+    CHECK(seconds.at[0].seconds == 1.5);
+    CHECK(seconds.at[0].event == -1);
     CHECK(*seconds.output == "f.png");
     CHECK(*seconds.scene_path == "s.scn");
     CHECK(seconds.width == 320);
     CHECK(seconds.height == 180);
     CHECK(seconds.size_given);
     const PreviewOptions event = accepted({"--at=event:3", "--output", "f.png"});
-    REQUIRE(event.at);
-    CHECK(event.at->event == 3);
+    REQUIRE(event.at.size() == 1);
+    CHECK(event.at[0].event == 3);
   }
 
   TEST_CASE("--timeline, --movie, --overlay, --fps, --strict") {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "spelling.h"
+
 namespace bsim {
 
 bool ArgReader::next() {
@@ -73,8 +75,10 @@ std::string bad_value_message(std::string_view name, std::string_view text, std:
   return "bad value '" + std::string(text) + "' for " + std::string(name) + ": expected " + std::string(expected);
 }
 
-std::string unknown_option_message(std::string_view name) {
-  return "unknown option '" + std::string(name) + "' (see --help)";
+std::string unknown_option_message(std::string_view name, const std::vector<std::string_view>& own) {
+  std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--help", "--version"};
+  known.insert(known.end(), own.begin(), own.end());
+  return "unknown option '" + std::string(name) + "'" + did_you_mean(name, known) + " (see --help)";
 }
 
 SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::string& message) {

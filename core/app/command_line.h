@@ -43,8 +43,9 @@ bool parse_size_option(std::string_view text, int& width, int& height);
 
 /// "bad value 'TEXT' for NAME: expected EXPECTED": how both programs reject an option's value.
 std::string bad_value_message(std::string_view name, std::string_view text, std::string_view expected);
-/// "unknown option 'NAME' (see --help)".
-std::string unknown_option_message(std::string_view name);
+/// "unknown option 'NAME' (see --help)", or "unknown option 'NAME'; did you mean 'OPTION'? (see --help)"
+/// when NAME looks like a misspelling of one of the program's `own` options or of the shared ones.
+std::string unknown_option_message(std::string_view name, const std::vector<std::string_view>& own = {});
 
 /// The options both programs take, with their defaults. apply_shared_option() reads and checks
 /// them, so each is parsed in one place and rejected in the same words by both.

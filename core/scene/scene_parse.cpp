@@ -13,6 +13,7 @@
 
 #include "scene_lexer.h"
 #include "scene_validate.h"
+#include "spelling.h"
 
 namespace bsim {
 
@@ -60,6 +61,19 @@ std::string keyword_list(bool strict) {
   for (auto k : kSeedKeywords) add(k);
   if (!strict)
     for (auto k : kExtensionKeywords) add(k);
+  return out;
+}
+
+/// The keywords a statement may start with here, for "did you mean".
+std::vector<std::string_view> keywords(bool strict) {
+  std::vector<std::string_view> out(std::begin(kSeedKeywords), std::end(kSeedKeywords));
+  if (!strict) out.insert(out.end(), std::begin(kExtensionKeywords), std::end(kExtensionKeywords));
+  return out;
+}
+
+std::vector<std::string_view> param_name_list() {
+  std::vector<std::string_view> out;
+  for (const ParamSpec& spec : param_specs()) out.push_back(spec.name);
   return out;
 }
 
@@ -211,7 +225,8 @@ class Parser {
     if (parse_double(k, ignored) != NumberStatus::not_number)
       fail(t.loc, "expected a keyword (" + keyword_list(options_.strict) + "), found the number " + quote_token(k) +
                       " (too many values on the line before?)");
-    fail(t.loc, "unknown keyword " + quote_token(k) + "; expected one of " + keyword_list(options_.strict));
+    fail(t.loc, "unknown keyword " + quote_token(k) + "; expected one of " + keyword_list(options_.strict) +
+                    did_you_mean(k, keywords(options_.strict)));
   }
 
   void cue(const Token& keyword) {
@@ -296,7 +311,8 @@ class Parser {
     const Token& name = take("a parameter name (" + param_names() + ")");
     const std::optional<ParamSpec> spec = find_param(name.text);
     if (!spec)
-      fail_at_value(name, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names());
+      fail_at_value(name, "unknown parameter " + quote_token(name.text) + "; expected one of " + param_names() +
+                              did_you_mean(name.text, param_name_list()));
     SourceLoc value_loc;
     const double value = number("parameter '" + std::string(spec->name) + "'", &value_loc);
     if (!param_in_range(*spec, value))
@@ -340,7 +356,8 @@ class Parser {
       --pos_;
       return;
     }
-    fail(t.loc, "expected 'event' or 'endcamera' in the camera description, found " + quote_token(t.text));
+    fail(t.loc, "expected 'event' or 'endcamera' in the camera description, found " + quote_token(t.text) +
+                    did_you_mean(t.text, {"event", "endcamera"}));
   }
 
   void event(const Token& keyword) {
@@ -372,7 +389,8 @@ class Parser {
       if (s.location.norm() <= kPlacementTolerance)
         fail(mode.loc, "expected a follow camera offset away from the ball, found 0 0 0");
     } else {
-      fail(mode.loc, "expected a camera mode (hover, look or follow), found " + quote_token(mode.text));
+      fail(mode.loc, "expected a camera mode (hover, look or follow), found " + quote_token(mode.text) +
+                         did_you_mean(mode.text, {"hover", "look", "follow"}));
     }
     scene_.camera.push_back(s);
   }
