@@ -186,7 +186,8 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   summary.frames_reused = frames - summary.frames_rendered;
 
   auto start = std::chrono::steady_clock::now();
-  const RenderSettings render{programs.povray, options.width, options.height, options.quality, process_count(options)};
+  RenderSettings render{programs.povray, options.width, options.height, options.quality, process_count(options), ""};
+  render.shown_frames_dir = summary.output + "/frames";  // where `--no-render` would put the file to look at
   RunOutcome outcome = render_frames(frames_dir, plan.jobs, frames, render, cache, error);
   if (outcome == RunOutcome::done && !copy_duplicates(frames_dir, plan, error)) outcome = RunOutcome::failed;
   summary.rendering = seconds_since(start);

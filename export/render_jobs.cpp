@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "child_process.h"
@@ -30,7 +33,67 @@ void remove_quietly(const std::string& path) {
   std::filesystem::remove(path, ignored);
 }
 
+/// What POV-Ray 3.7 prints when it cannot start its render thread in time, as happens under load.
+constexpr const char* kWorkerTimeout = "Timed out waiting for worker thread startup";
+
+/// A frame waiting to be rendered, and which attempt at it this is (1 for the first).
+struct Attempt {
+  FrameJob job;
+  int number = 1;
+};
+
+/// The frame's file as the messages name it, relative to the output directory.
+std::string shown_frame(int frame) {
+  return "frame " + std::to_string(frame) + " (frames/" + frame_name(frame) + ".pov)";
+}
+
+/// Prints a line on standard error, first clearing the progress line if one is drawn.
+void print_line(const std::string& line) {
+  const std::string clear = ProgressLine::wanted() ? "\r\033[K" : "";
+  std::fputs((clear + line + "\n").c_str(), stderr);
+  std::fflush(stderr);
+}
+
+/// Why a failed attempt that is not a parse error failed, in a few words.
+std::string failure_reason(bool exited_zero, int signal, bool picture_there, const std::string& log_text) {
+  if (signal != 0) return "killed by signal " + std::to_string(signal) + ": " + strsignal(signal);
+  if (exited_zero) return picture_there ? "wrote an empty picture" : "wrote no picture";
+  if (log_text.find(kWorkerTimeout) != std::string::npos) return kWorkerTimeout;
+  return error_from_log(log_text);
+}
+
 }  // namespace
+
+std::optional<PovParseError> find_parse_error(const std::string& log_text) {
+  // POV-Ray wraps long messages at 80 columns, breaking before a space: a line that starts with
+  // one continues the message above.
+  std::vector<std::string> messages;
+  std::stringstream in(log_text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!messages.empty() && !line.empty() && line.front() == ' ')
+      messages.back() += line;
+    else
+      messages.push_back(line);
+  }
+  static const std::regex located(R"(File '([^']*)' line ([0-9]+):\s*$)");
+  const std::string marker = "Parse Error:", warning = "Possible ";
+  for (const std::string& message : messages) {
+    const std::size_t at = message.find(marker);
+    if (at == std::string::npos) continue;
+    if (at >= warning.size() && message.compare(at - warning.size(), warning.size(), warning) == 0) continue;
+    PovParseError found;
+    found.message = message.substr(at);
+    std::smatch m;
+    const std::string before = message.substr(0, at);
+    if (std::regex_search(before, m, located) && m[2].length() <= 9) {
+      found.file = m[1];
+      found.line = std::stoi(m[2]);
+    }
+    return found;
+  }
+  return std::nullopt;
+}
 
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame) {
   // -D: no display (with one asked for and none there, POV-Ray draws ASCII art on stdout).
@@ -54,37 +117,49 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, int fr
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
                          const RenderSettings& settings, FrameCache& cache, std::string& error) {
   ProgressLine progress("rendering", total, total - static_cast<int>(jobs.size()));
-  std::map<pid_t, FrameJob> running;
-  std::size_t next = 0;
+  std::deque<Attempt> waiting;
+  for (const FrameJob& job : jobs) waiting.push_back({job, 1});
+  std::map<pid_t, Attempt> running;
   RunOutcome outcome = RunOutcome::done;
+  const std::string dir = frames_dir + "/";
 
   auto cleanup = [&](int frame) {
-    remove_quietly(frames_dir + "/" + temp_png(frame));
-    remove_quietly(frames_dir + "/" + log_name(frame));
+    remove_quietly(dir + temp_png(frame));
+    remove_quietly(dir + log_name(frame));
   };
   auto stop_all = [&] {
-    for (const auto& [pid, job] : running) {
+    for (const auto& [pid, attempt] : running) {
       stop_process(pid);
-      cleanup(job.frame);
+      cleanup(attempt.job.frame);
     }
     running.clear();
   };
+  auto fail = [&](int frame, const std::string& message) {
+    if (outcome == RunOutcome::done) {
+      error = message;
+      outcome = RunOutcome::failed;
+      stop_all();  // no point finishing the others: the movie cannot be made
+    }
+    cleanup(frame);
+  };
 
-  while (next < jobs.size() || !running.empty()) {
-    while (outcome == RunOutcome::done && next < jobs.size() &&
+  while (!waiting.empty() || !running.empty()) {
+    while (outcome == RunOutcome::done && !waiting.empty() &&
            static_cast<int>(running.size()) < std::max(settings.processes, 1) && !InterruptGuard::interrupted()) {
-      const FrameJob& job = jobs[next++];
-      const pid_t pid = start_process(povray_arguments(settings, job.frame), frames_dir,
-                                      frames_dir + "/" + log_name(job.frame), error);
+      const Attempt attempt = waiting.front();
+      waiting.pop_front();
+      const pid_t pid = start_process(povray_arguments(settings, attempt.job.frame), frames_dir,
+                                      dir + log_name(attempt.job.frame), error);
       if (pid < 0) {
         outcome = RunOutcome::failed;
         break;
       }
-      running[pid] = job;
+      running[pid] = attempt;
     }
     if (running.empty()) break;
     bool success = false;
-    const pid_t pid = wait_any(success);
+    int signal = 0;
+    const pid_t pid = wait_any(success, &signal);
     if (pid < 0) {  // Ctrl-C
       stop_all();
       outcome = RunOutcome::interrupted;
@@ -92,27 +167,57 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;
-    const FrameJob job = it->second;
+    const Attempt attempt = it->second;
     running.erase(it);
-    const std::string dir = frames_dir + "/";
-    const std::string png = frame_name(job.frame) + ".png";
+    const int frame = attempt.job.frame;
+    const std::string png = frame_name(frame) + ".png";
     std::error_code ec;
-    if (success && std::filesystem::exists(dir + temp_png(job.frame)))
-      std::filesystem::rename(dir + temp_png(job.frame), dir + png, ec);
-    if (!success || ec || !std::filesystem::exists(dir + png)) {
-      if (outcome == RunOutcome::done) {
-        const std::string said =
-            success ? "POV-Ray wrote no picture" : error_from_log(read_text(dir + log_name(job.frame)));
-        error = "frame " + std::to_string(job.frame) + " (" + frame_name(job.frame) + ".pov) failed to render: " + said;
-        outcome = RunOutcome::failed;
-        stop_all();  // no point finishing the others: the movie cannot be made
+    const auto size = std::filesystem::file_size(dir + temp_png(frame), ec);
+    const bool picture_there = !ec;
+    if (success && picture_there && size > 0) {
+      std::filesystem::rename(dir + temp_png(frame), dir + png, ec);
+      if (ec) {
+        fail(frame, "cannot write " + dir + png + ": " + ec.message());
+        continue;
       }
-      cleanup(job.frame);
+      cleanup(frame);
+      cache.set(png, attempt.job.key);
+      progress.advance();
       continue;
     }
-    cleanup(job.frame);
-    cache.set(png, job.key);
-    progress.advance();
+
+    if (InterruptGuard::interrupted()) {
+      // Ctrl-C reaches POV-Ray too, which dies of it: the user stopping the run, not a failure.
+      cleanup(frame);
+      stop_all();
+      outcome = RunOutcome::interrupted;
+      break;
+    }
+    const std::string log_text = read_text(dir + log_name(frame));
+    if (const std::optional<PovParseError> parse = find_parse_error(log_text)) {
+      // The scene itself is wrong: another attempt would fail the same way.
+      if (outcome == RunOutcome::done) {
+        std::string file = parse->file.empty() ? frame_name(frame) + ".pov" : parse->file;
+        if (file.front() != '/')
+          file = (settings.shown_frames_dir.empty() ? frames_dir : settings.shown_frames_dir) + "/" + file;
+        const std::string line = parse->line > 0 ? ":" + std::to_string(parse->line) : "";
+        progress.finish();
+        print_line(file + line + ": error: povray: " + parse->message);
+      }
+      fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
+      continue;
+    }
+    const std::string reason = failure_reason(success, signal, picture_there, log_text);
+    if (outcome == RunOutcome::done && attempt.number < kRenderAttempts) {
+      cleanup(frame);
+      print_line("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
+                 "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
+                 std::to_string(kRenderAttempts) + ")");
+      waiting.push_front({attempt.job, attempt.number + 1});
+      continue;
+    }
+    fail(frame, shown_frame(frame) + " failed to render (" + std::to_string(attempt.number) +
+                    (attempt.number == 1 ? " attempt): " : " attempts): ") + reason);
   }
   progress.finish();
   if (outcome == RunOutcome::done && InterruptGuard::interrupted()) outcome = RunOutcome::interrupted;

@@ -2,6 +2,7 @@
 // Rendering frames with POV-Ray: several processes at once, each frame written to a temporary
 // name and renamed when whole, the frame record updated as each one lands.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,16 +22,37 @@ struct RenderSettings {
   int height = 720;
   Quality quality = Quality::final;
   int processes = 1;  ///< POV-Ray processes at once, one render thread each
+  /// Where messages say the frames are (the output directory's frames/, while they render in a
+  /// staging directory); empty: where they render.
+  std::string shown_frames_dir;
 };
 
 enum class RunOutcome { done, failed, interrupted };
 
+/// Attempts a frame gets when POV-Ray fails for a reason that is not in the scene: it times out
+/// starting its worker thread under load, dies of a signal, or exits 0 without a picture.
+constexpr int kRenderAttempts = 3;
+
+/// A parse error POV-Ray reported: the file and line it names (empty and 0 when it names none) and
+/// its message from "Parse Error:" on, with the lines POV-Ray wrapped joined again.
+struct PovParseError {
+  std::string file;
+  int line = 0;
+  std::string message;
+};
+
+/// The parse error in POV-Ray's output, if there is one. "Possible Parse Error" lines are warnings,
+/// not errors.
+std::optional<PovParseError> find_parse_error(const std::string& log_text);
+
 /// POV-Ray's command line for one frame, run inside the frames directory.
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame);
 
-/// Renders `jobs` (frames of `total`; the others are up to date) in `frames_dir`. On failure
-/// `error` names the frame and quotes POV-Ray; interrupted means Ctrl-C came and every child was
-/// stopped. Either way no partial picture is left behind.
+/// Renders `jobs` (frames of `total`; the others are up to date) in `frames_dir`. A frame that fails
+/// for a reason not in the scene is tried again, up to kRenderAttempts in all, with a warning on
+/// standard error; a parse error is never retried and is printed as `FILE:LINE: error: povray: ...`.
+/// On failure `error` names the frame and quotes POV-Ray; interrupted means Ctrl-C came and every
+/// child was stopped. Either way no partial picture is left behind.
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
                          const RenderSettings& settings, FrameCache& cache, std::string& error);
 

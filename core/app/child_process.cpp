@@ -96,13 +96,14 @@ void stop_process(pid_t pid) {
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
 }
 
-pid_t wait_any(bool& success) {
+pid_t wait_any(bool& success, int* signal) {
   for (;;) {
     if (InterruptGuard::interrupted()) return -1;
     int status = 0;
     const pid_t pid = waitpid(-1, &status, 0);
     if (pid > 0) {
       success = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      if (signal) *signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
       return pid;
     }
     if (errno != EINTR) return -1;

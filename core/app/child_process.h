@@ -21,9 +21,10 @@ pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd
 /// Stops a child (SIGTERM, then SIGKILL if it lingers for 5 s) and reaps it.
 void stop_process(pid_t pid);
 
-/// Waits for a child to finish. Returns its pid and sets `success` (exit status 0), or returns -1
-/// when the wait was cut short by Ctrl-C (InterruptGuard::interrupted()).
-pid_t wait_any(bool& success);
+/// Waits for a child to finish. Returns its pid and sets `success` (exit status 0) and, when given,
+/// `signal` (the signal that killed it, else 0), or returns -1 when the wait was cut short by Ctrl-C
+/// (InterruptGuard::interrupted()).
+pid_t wait_any(bool& success, int* signal = nullptr);
 
 /// Waits for one child; true when it exited with status 0.
 bool wait_for(pid_t pid);

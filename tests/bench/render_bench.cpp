@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
 
   // What this machine gives two processes: three frames one after another, then six neighbouring
   // frames (so as much work apiece) two at a time.
-  bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 1};
+  bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 1, ""};
   std::vector<bsim::FrameJob> three, six;
   for (int k = 0; k < 6; ++k) {
     if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
