@@ -17,7 +17,6 @@
 #include "output_stage.h"
 #include "pov_frame.h"
 #include "pov_table.h"
-#include "progress_line.h"
 #include "render_jobs.h"
 #include "shot.h"
 #include "soundtrack.h"
@@ -145,11 +144,11 @@ bool render_movie(const Shot& shot, const ExportOptions& options, const std::str
   std::filesystem::remove(dir + "/movie.mp4", ec);
 
   InterruptGuard guard;
-  const RenderSettings render{povray, options.width, options.height, options.quality, process_count(options)};
+  RenderSettings render{povray, options.width, options.height, options.quality, process_count(options)};
+  render.quiet = options.quiet;
   RunOutcome outcome = render_frames(frames_dir, jobs, frames, render, cache, error);
   if (outcome == RunOutcome::done) {
-    const MovieSettings movie{ffmpeg, options.fps, shot.timeline.duration()};
-    if (ProgressLine::wanted()) std::fputs("encoding movie.mp4\n", stderr);
+    const MovieSettings movie{ffmpeg, options.fps, shot.timeline.duration(), options.quiet};
     outcome = assemble_movie(dir, movie, error);
   }
   if (outcome == RunOutcome::interrupted) {

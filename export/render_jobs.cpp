@@ -9,7 +9,7 @@
 
 #include "child_process.h"
 #include "pov_frame.h"
-#include "progress_line.h"
+#include "progress_reporter.h"
 
 namespace bsim {
 
@@ -53,7 +53,8 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, int fr
 
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
                          const RenderSettings& settings, FrameCache& cache, std::string& error) {
-  ProgressLine progress("rendering", total, total - static_cast<int>(jobs.size()));
+  ProgressReporter progress("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
+                            progress_style(settings.quiet));
   std::map<pid_t, FrameJob> running;
   std::size_t next = 0;
   RunOutcome outcome = RunOutcome::done;
@@ -84,7 +85,11 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     }
     if (running.empty()) break;
     bool success = false;
-    const pid_t pid = wait_any(success);
+    const pid_t pid = wait_any(success, std::chrono::seconds(1));
+    if (pid == 0) {  // still rendering
+      progress.tick();
+      continue;
+    }
     if (pid < 0) {  // Ctrl-C
       stop_all();
       outcome = RunOutcome::interrupted;

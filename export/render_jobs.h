@@ -20,7 +20,8 @@ struct RenderSettings {
   int width = 1280;
   int height = 720;
   Quality quality = Quality::final;
-  int processes = 1;  ///< POV-Ray processes at once, one render thread each
+  int processes = 1;   ///< POV-Ray processes at once, one render thread each
+  bool quiet = false;  ///< no progress lines
 };
 
 enum class RunOutcome { done, failed, interrupted };

@@ -1,6 +1,7 @@
 // The progress reporter with a clock the test moves by hand: off a terminal a plain line every tenth
 // of the frames and at least every 30 s, and one at the end; on a terminal one line rewritten in place;
-// nothing when quiet. Also the wait that lets a run report while its children work.
+// nothing when quiet. Also how ffmpeg's progress is read, and the wait that lets a run report while
+// its children work.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "child_process.h"
+#include "ffmpeg_assemble.h"
 #include "progress_reporter.h"
 
 using namespace bsim;
@@ -188,6 +190,22 @@ TEST_SUITE("progress") {
     CHECK(progress_time_text(605) == "10m05s");
     CHECK(progress_time_text(3723) == "1h02m03s");
     CHECK(progress_time_text(-3) == "0s");
+  }
+
+  TEST_CASE("ffmpeg's progress: the last frame count it wrote, and the frames the movie holds") {
+    CHECK(encoded_frames("") == 0);
+    CHECK(encoded_frames("frame=12\nfps=0.00\nprogress=continue\n") == 12);
+    CHECK(encoded_frames("frame=12\ndup_frames=0\ndrop_frames=3\nprogress=continue\nframe=24\nfps=0.00\n") == 24);
+    CHECK(encoded_frames("frame=7\nkeyframe=9\n") == 7);
+    // frame k shows t = k / fps; the movie is cut at the end of the shot
+    CHECK(movie_frame_count({.ffmpeg = "", .fps = 30, .duration = 10.0, .quiet = false}) == 300);
+    CHECK(movie_frame_count({.ffmpeg = "", .fps = 10, .duration = 2.41, .quiet = false}) == 25);
+    CHECK(movie_frame_count({.ffmpeg = "", .fps = 4, .duration = 0.1, .quiet = false}) == 1);
+    const std::vector<std::string> args =
+        ffmpeg_arguments({.ffmpeg = "ffmpeg", .fps = 30, .duration = 1, .quiet = false}, "o.mp4", "p");
+    const auto at = std::find(args.begin(), args.end(), "-progress");
+    REQUIRE(at != args.end());
+    CHECK(*(at + 1) == "p");
   }
 
   TEST_CASE("a wait for children that gives up, so a run can report while they work") {
