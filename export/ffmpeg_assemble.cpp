@@ -1,11 +1,16 @@
 #include "ffmpeg_assemble.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "child_process.h"
+#include "frames.h"
+#include "progress_reporter.h"
 
 namespace bsim {
 
@@ -13,6 +18,9 @@ namespace {
 
 constexpr const char* kTempMovie = ".movie.tmp.mp4";
 constexpr const char* kLog = ".ffmpeg.log";
+constexpr const char* kProgress = ".ffmpeg.progress";
+/// How often ffmpeg's progress is read while it encodes (it writes every half second).
+constexpr std::chrono::milliseconds kProgressPoll{250};
 
 std::string duration_text(double seconds) {
   char text[32];
@@ -20,9 +28,17 @@ std::string duration_text(double seconds) {
   return text;
 }
 
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
-std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output) {
+std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output,
+                                          const std::string& progress) {
   return {settings.ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
           std::to_string(settings.fps), "-start_number", "0", "-i", "frames/frame_%05d.png", "-i", "soundtrack.wav",
           "-map", "0:v:0", "-map", "1:a:0",
@@ -30,22 +46,43 @@ std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const s
           "-t", duration_text(settings.duration),
           // yuv420p needs even sizes: pad an odd one by a pixel rather than fail
           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt",
-          "yuv420p", "-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart", "-f", "mp4", output};
+          "yuv420p", "-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart", "-progress", progress, "-f", "mp4",
+          output};
+}
+
+int movie_frame_count(const MovieSettings& settings) {
+  const int cut = static_cast<int>(std::ceil(settings.duration * settings.fps - 1e-9));
+  return std::clamp(cut, 1, frame_count(settings.duration, settings.fps));
+}
+
+int encoded_frames(const std::string& progress_text) {
+  for (auto at = progress_text.rfind("frame="); at != std::string::npos; at = progress_text.rfind("frame=", at - 1)) {
+    if (at == 0 || progress_text[at - 1] == '\n') return std::max(0, std::atoi(progress_text.c_str() + at + 6));
+  }
+  return 0;
 }
 
 RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings, std::string& error) {
-  const std::string temp = dir + "/" + kTempMovie, log = dir + "/" + kLog;
+  const std::string temp = dir + "/" + kTempMovie, log = dir + "/" + kLog, progress_file = dir + "/" + kProgress;
   auto cleanup = [&] {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
     std::filesystem::remove(log, ignored);
+    std::filesystem::remove(progress_file, ignored);
   };
-  const pid_t pid = start_process(ffmpeg_arguments(settings, kTempMovie), dir, log, error);
+  cleanup();  // a progress file left by a killed run must not be read as this one's
+  const pid_t pid = start_process(ffmpeg_arguments(settings, kTempMovie, kProgress), dir, log, error);
   if (pid < 0) return RunOutcome::failed;
+  const int total = movie_frame_count(settings);
+  ProgressReporter progress("billiards-export", "encoding", total, 0, progress_style(settings.quiet));
   bool success = false;
   pid_t done = -1;
   while (done != pid) {
-    done = wait_any(success);
+    done = wait_any(success, kProgressPoll);
+    if (done == 0) {
+      progress.set_done(encoded_frames(read_text(progress_file)));
+      continue;
+    }
     if (done < 0) {
       stop_process(pid);
       cleanup();
@@ -53,13 +90,12 @@ RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings,
     }
   }
   if (!success) {
-    std::ifstream in(log, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    error = "ffmpeg could not make movie.mp4: " + error_from_log(text.str());
+    error = "ffmpeg could not make movie.mp4: " + error_from_log(read_text(log));
     cleanup();
     return RunOutcome::failed;
   }
+  progress.set_done(total);
+  progress.finish();
   std::error_code ec;
   std::filesystem::rename(temp, dir + "/movie.mp4", ec);
   cleanup();

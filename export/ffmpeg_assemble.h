@@ -12,10 +12,19 @@ struct MovieSettings {
   std::string ffmpeg;  ///< full path of the program
   int fps = 30;
   double duration = 0;  ///< s, the shot's: the movie is cut to it
+  bool quiet = false;   ///< no progress lines
 };
 
-/// ffmpeg's command line, run inside the output directory, writing `output`.
-std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output);
+/// ffmpeg's command line, run inside the output directory, writing `output` and its progress
+/// (`-progress`, key=value lines) to `progress`.
+std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output,
+                                          const std::string& progress);
+
+/// The frames the movie holds: those that start before the end of the shot.
+int movie_frame_count(const MovieSettings& settings);
+
+/// The frames ffmpeg has encoded so far, from what it wrote with `-progress` (its last `frame=N`).
+int encoded_frames(const std::string& progress_text);
 
 /// Encodes dir/frames/frame_%05d.png and dir/soundtrack.wav into dir/movie.mp4.
 RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings, std::string& error);

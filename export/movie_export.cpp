@@ -19,7 +19,6 @@
 #include "output_stage.h"
 #include "pov_frame.h"
 #include "pov_table.h"
-#include "progress_line.h"
 #include "render_jobs.h"
 #include "run_summary.h"
 #include "shot.h"
@@ -186,8 +185,10 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   summary.frames_reused = frames - summary.frames_rendered;
 
   auto start = std::chrono::steady_clock::now();
-  RenderSettings render{programs.povray, options.width, options.height, options.quality, process_count(options), ""};
+  RenderSettings render{
+      programs.povray, options.width, options.height, options.quality, process_count(options), "", false};
   render.shown_frames_dir = summary.output + "/frames";  // where `--no-render` would put the file to look at
+  render.quiet = options.quiet;
   RunOutcome outcome = render_frames(frames_dir, plan.jobs, frames, render, cache, error);
   if (outcome == RunOutcome::done && !copy_duplicates(frames_dir, plan, error)) outcome = RunOutcome::failed;
   summary.rendering = seconds_since(start);
@@ -195,8 +196,7 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   if (outcome != RunOutcome::done) return outcome;
 
   start = std::chrono::steady_clock::now();
-  const MovieSettings movie{programs.ffmpeg, options.fps, shot.timeline.duration()};
-  if (ProgressLine::wanted()) std::fputs("encoding movie.mp4\n", stderr);
+  const MovieSettings movie{programs.ffmpeg, options.fps, shot.timeline.duration(), options.quiet};
   outcome = assemble_movie(stage.staging(), movie, error);
   summary.encoding = seconds_since(start);
   return outcome;

@@ -12,7 +12,7 @@
 
 #include "child_process.h"
 #include "pov_frame.h"
-#include "progress_line.h"
+#include "progress_reporter.h"
 
 namespace bsim {
 
@@ -49,7 +49,7 @@ std::string shown_frame(int frame) {
 
 /// Prints a line on standard error, first clearing the progress line if one is drawn.
 void print_line(const std::string& line) {
-  const std::string clear = ProgressLine::wanted() ? "\r\033[K" : "";
+  const std::string clear = progress_style(false) == ProgressStyle::terminal ? "\r\033[K" : "";
   std::fputs((clear + line + "\n").c_str(), stderr);
   std::fflush(stderr);
 }
@@ -116,7 +116,8 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, int fr
 
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
                          const RenderSettings& settings, FrameCache& cache, std::string& error) {
-  ProgressLine progress("rendering", total, total - static_cast<int>(jobs.size()));
+  ProgressReporter progress("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
+                            progress_style(settings.quiet));
   std::deque<Attempt> waiting;
   for (const FrameJob& job : jobs) waiting.push_back({job, 1});
   std::map<pid_t, Attempt> running;
@@ -159,7 +160,11 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     if (running.empty()) break;
     bool success = false;
     int signal = 0;
-    const pid_t pid = wait_any(success, &signal);
+    const pid_t pid = wait_any(success, std::chrono::seconds(1), &signal);
+    if (pid == 0) {  // still rendering
+      progress.tick();
+      continue;
+    }
     if (pid < 0) {  // Ctrl-C
       stop_all();
       outcome = RunOutcome::interrupted;

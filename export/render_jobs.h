@@ -25,6 +25,7 @@ struct RenderSettings {
   /// Where messages say the frames are (the output directory's frames/, while they render in a
   /// staging directory); empty: where they render.
   std::string shown_frames_dir;
+  bool quiet = false;  ///< no progress lines
 };
 
 enum class RunOutcome { done, failed, interrupted };

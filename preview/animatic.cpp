@@ -17,6 +17,7 @@
 #include "frames.h"
 #include "headless_canvas.h"
 #include "overlays.h"
+#include "progress_reporter.h"
 #include "scene_renderer.h"
 #include "soundtrack.h"
 
@@ -124,6 +125,7 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   bool ok = ffmpeg.start(args, temporary_file(".log"), error);
   const bool overlays = options.overlays.paths || options.overlays.events || options.overlays.camera;
   const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
+  ProgressReporter progress("billiards-preview", "animatic", frames, 0, progress_style(options.quiet));
   for (int k = 0; ok && k < frames; ++k) {
     const double t = frame_time(k, fps);
     const FrameState frame = scripted_frame(shot, t);
@@ -136,8 +138,10 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
       canvas.end_2d();
     }
     ok = ffmpeg.write(canvas.pixels());
+    if (ok) progress.advance();
   }
   ok = ffmpeg.finish(error) && ok;
+  progress.finish();
   std::signal(SIGPIPE, previous);
   std::filesystem::remove(wav);
   std::error_code ec;

@@ -31,6 +31,7 @@ options:
   --fps N                animatic frames per second, 1 to 1000 (default: 30)
   --overlay LIST         draw extras, comma-separated: paths, events, camera (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
+  --quiet                print no progress lines (errors and warnings still print)
   --quit-after SECONDS   interactive: close the window after this long (default: stay open)
   --screenshot FILE.png  interactive: save the last frame shown when the window closes
   -h, --help             show this help and exit

@@ -1,4 +1,4 @@
-// The options both programs take (--fps, --size, --strict) are read in one place: the same
+// The options both programs take (--fps, --size, --strict, --quiet) are read in one place: the same
 // defaults, the same accepted forms and the same words for a bad value in billiards-export and
 // billiards-preview.
 #include <doctest/doctest.h>
@@ -45,14 +45,16 @@ TEST_SUITE("shared options") {
     CHECK(e.height == p.height);
     CHECK_FALSE(e.strict);
     CHECK_FALSE(p.strict);
+    CHECK_FALSE(e.quiet);
+    CHECK_FALSE(p.quiet);
     CHECK_FALSE(e.size_given);
     CHECK_FALSE(p.size_given);
   }
 
   TEST_CASE("the same accepted forms") {
     for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"--fps", "24", "--size", "640x360", "--strict"},
-          std::vector<std::string>{"--fps=24", "--size=640x360", "--strict"}}) {
+         {std::vector<std::string>{"--fps", "24", "--size", "640x360", "--strict", "--quiet"},
+          std::vector<std::string>{"--fps=24", "--size=640x360", "--strict", "--quiet"}}) {
       ExportOptions e;
       PreviewOptions p;
       std::string message;
@@ -64,14 +66,15 @@ TEST_SUITE("shared options") {
         CHECK(o->height == 360);
         CHECK(o->size_given);
         CHECK(o->strict);
+        CHECK(o->quiet);
       }
     }
   }
 
   TEST_CASE("the same words for a bad value, from the one reader") {
     const std::vector<std::vector<std::string>> bad = {
-        {"--fps", "0"},     {"--fps", "2.5"},       {"--fps", "1001"}, {"--fps"},       {"--size", "12"},
-        {"--size", "0x10"}, {"--size", "+640x360"}, {"--size"},        {"--strict=yes"}};
+        {"--fps", "0"},     {"--fps", "2.5"},       {"--fps", "1001"}, {"--fps"},        {"--size", "12"},
+        {"--size", "0x10"}, {"--size", "+640x360"}, {"--size"},        {"--strict=yes"}, {"--quiet=yes"}};
     for (const auto& args : bad) {
       CAPTURE(args.front());
       const std::string message = export_rejection(args);

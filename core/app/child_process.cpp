@@ -4,8 +4,10 @@
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -107,6 +109,29 @@ pid_t wait_any(bool& success, int* signal) {
       return pid;
     }
     if (errno != EINTR) return -1;
+  }
+}
+
+pid_t wait_any(bool& success, std::chrono::milliseconds timeout, int* signal) {
+  // Polled: a blocking wait cannot time out, and an alarm signal would disturb the children.
+  constexpr auto kPoll = std::chrono::milliseconds(10);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    if (InterruptGuard::interrupted()) return -1;
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, WNOHANG);
+    if (pid > 0) {
+      success = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      if (signal) *signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+      return pid;
+    }
+    if (pid < 0 && errno != EINTR) return -1;
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) return 0;
+    const auto pause = std::min<std::chrono::steady_clock::duration>(kPoll, deadline - now);
+    const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(pause).count();
+    timespec request{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+    nanosleep(&request, nullptr);  // a signal ends it early; the loop looks again
   }
 }
 

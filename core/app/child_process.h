@@ -4,6 +4,7 @@
 // Ctrl-C handling that lets a run stop its children and clean up before it dies.
 #include <sys/types.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ void stop_process(pid_t pid);
 /// `signal` (the signal that killed it, else 0), or returns -1 when the wait was cut short by Ctrl-C
 /// (InterruptGuard::interrupted()).
 pid_t wait_any(bool& success, int* signal = nullptr);
+/// The same, giving up after `timeout`: then it returns 0, so the caller can report progress.
+pid_t wait_any(bool& success, std::chrono::milliseconds timeout, int* signal = nullptr);
 
 /// Waits for one child; true when it exited with status 0.
 bool wait_for(pid_t pid);

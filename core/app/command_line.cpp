@@ -83,9 +83,9 @@ std::string unknown_option_message(std::string_view name, const std::vector<std:
 
 SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::string& message) {
   const std::string& name = reader.word();
-  if (name == "--strict") {
+  if (name == "--strict" || name == "--quiet") {
     if (!reader.no_value(message)) return SharedOption::bad;
-    o.strict = true;
+    (name == "--strict" ? o.strict : o.quiet) = true;
     return SharedOption::applied;
   }
   if (name != "--fps" && name != "--size") return SharedOption::not_shared;

@@ -55,11 +55,12 @@ struct SharedOptions {
   int height = 720;
   bool size_given = false;  ///< --size was given
   bool strict = false;      ///< --strict: accept only the original scene language
+  bool quiet = false;       ///< --quiet: no progress lines (errors and warnings still print)
 };
 
 enum class SharedOption { not_shared, applied, bad };
 
-/// Applies the reader's current option when it is one of the shared ones (--fps, --size, --strict):
+/// Applies the reader's current option when it is one of the shared ones (--fps, --size, --strict, --quiet):
 /// `applied`, or `bad` with `message` set; `not_shared` leaves it to the program.
 SharedOption apply_shared_option(ArgReader& reader, SharedOptions& options, std::string& message);
 
