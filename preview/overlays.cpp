@@ -11,6 +11,7 @@
 
 #include "labels.h"
 #include "shot.h"
+#include "table.h"
 
 namespace bsim {
 
@@ -352,8 +353,60 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
   }
 }
 
+namespace {
+
+/// A label centred on a point of the table, on a dark pill so it reads over cloth and wood alike.
+void draw_label(ImDrawList& list, const OverlayFrame& f, const Projector& project, const Vec3& where,
+                const std::string& text, ImU32 color) {
+  ImVec2 at;
+  if (!project(where, at)) return;
+  ImFont* font = f.fonts.regular;
+  const float size = f.fonts.regular_size;
+  const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0, text.c_str());
+  const ImVec2 corner(at.x - extent.x / 2, at.y - extent.y / 2);
+  const float pad = 4;
+  list.AddRectFilled(ImVec2(corner.x - pad, corner.y - pad / 2),
+                     ImVec2(corner.x + extent.x + pad, corner.y + extent.y + pad / 2), IM_COL32(0, 0, 0, 170), 5.f);
+  list.AddText(font, size, corner, color, text.c_str());
+}
+
+}  // namespace
+
+void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
+  const Scene& scene = f.shot.scene;
+  const Projector project = projector(f);
+  const TableLayout layout = table_layout(scene);
+  // Rails on the wood beside their nose line: the playing side is on the right walking from a to b.
+  const double onto_wood = kStandardTable.cushion.width + kStandardTable.rail.width / 2;
+  for (std::size_t i = 0; i < scene.rails.size(); ++i) {
+    const Rail& rail = scene.rails[i];
+    const Vec3 along = rail.b - rail.a;
+    const Vec3 outward = Vec3(-along.y(), along.x(), 0).normalized();
+    const Vec3 mid = (rail.a + rail.b) / 2 + outward * onto_wood;
+    draw_label(list, f, project, Vec3(mid.x(), mid.y(), layout.rail_top), "rail " + std::to_string(i),
+               IM_COL32(255, 226, 140, 255));
+  }
+  // Pockets just outside their hole, away from the table's centre.
+  const Vec3 centre((layout.noses.x0 + layout.noses.x1) / 2, (layout.noses.y0 + layout.noses.y1) / 2, 0);
+  for (std::size_t i = 0; i < scene.pockets.size(); ++i) {
+    const Pocket& pocket = scene.pockets[i];
+    Vec3 away = pocket.center - centre;
+    away.z() = 0;
+    away = away.norm() > 0 ? away.normalized() : Vec3(0, 1, 0);
+    const Vec3 at = pocket.center + away * (pocket.radius + 0.04);
+    draw_label(list, f, project, Vec3(at.x(), at.y(), layout.rail_top), "pocket " + std::to_string(i), pocket_color());
+  }
+  // Each ball's index in file order (what `cue`, `look`, `follow` and `spin` refer to).
+  for (int i = 0; i < f.shot.timeline.ball_count(); ++i) {
+    const BallState s = f.shot.timeline.state(i, f.time);
+    if (s.motion == Motion::pocketed) continue;
+    const double r = scene.physics.ball_radius;  // the label just beyond the ball, leaving it in sight
+    draw_label(list, f, project, s.position + Vec3(0, 3 * r, r), std::to_string(i), IM_COL32(255, 255, 255, 255));
+  }
+}
+
 void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOverlays& overlays) {
-  if (!overlays.paths && !overlays.events && !overlays.camera) return;
+  if (!overlays.paths && !overlays.events && !overlays.camera && !overlays.table) return;
   OverlayPaths local;
   OverlayFrame frame = given;
   if (!frame.paths) {
@@ -363,6 +416,7 @@ void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOve
   if (overlays.paths) draw_ball_paths(list, frame);
   if (overlays.events) draw_event_markers(list, frame);
   if (overlays.camera) draw_camera_map(list, frame);
+  if (overlays.table) draw_table_numbering(list, frame);
   draw_status_line(list, frame);
 }
 

@@ -43,6 +43,10 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& frame);
 /// The scripted camera at `time` as a frustum and its path, seen from the frame's (free) camera.
 void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& frame, double aspect);
 
+/// The numbers a scene refers to, written on the table: each rail's and pocket's index (as events.json
+/// and camera keys give them) and each ball's index in file order.
+void draw_table_numbering(ImDrawList& list, const OverlayFrame& frame);
+
 /// Every overlay the options ask for (and the status line when any is on).
 void draw_overlays(ImDrawList& list, const OverlayFrame& frame, const PreviewOverlays& overlays);
 

@@ -29,7 +29,8 @@ options:
   --size WxH             picture, animatic or window size in pixels (default: 1280x720)
                          without --size the window's picture is smaller if need be, to fit the screen
   --fps N                animatic frames per second, 1 to 1000 (default: 30)
-  --overlay LIST         draw extras, comma-separated: paths, events, camera (default: none)
+  --overlay LIST         draw extras, comma-separated: paths, events, camera, table
+                         (the rails', pockets' and balls' numbers) (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
   --quiet                print no progress lines (errors and warnings still print)
   --quit-after SECONDS   interactive: close the window after this long (default: stay open)
@@ -65,6 +66,8 @@ bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
       overlays.events = true;
     else if (item == "camera")
       overlays.camera = true;
+    else if (item == "table")
+      overlays.table = true;
     else
       return false;
     if (comma == std::string_view::npos) return true;
@@ -100,7 +103,7 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     if (v->empty()) return bad(*v, "a file");
     o.movie = *v;
   } else if (name == "--overlay") {
-    if (!parse_overlays(*v, o.overlays)) return bad(*v, "a comma-separated list of paths, events, camera");
+    if (!parse_overlays(*v, o.overlays)) return bad(*v, "a comma-separated list of paths, events, camera, table");
   } else if (name == "--quit-after") {
     const auto seconds = parse_real_option(*v);
     if (!seconds || *seconds <= 0) return bad(*v, "seconds greater than 0");

@@ -22,6 +22,7 @@ struct PreviewOverlays {
   bool paths = false;   ///< every ball's path
   bool events = false;  ///< event markers
   bool camera = false;  ///< the camera's own path seen from above
+  bool table = false;   ///< the rails', pockets' and balls' numbers
 };
 
 /// fps, width, height, size_given and strict are the options both programs share (SharedOptions).

@@ -65,6 +65,8 @@ void switches(ViewerState& state) {
   ImGui::Checkbox("events", &state.overlays.events);
   ImGui::SameLine();
   ImGui::Checkbox("camera map", &state.overlays.camera);
+  ImGui::SameLine();
+  ImGui::Checkbox("numbers", &state.overlays.table);
   ImGui::SameLine(0, 30);
   ImGui::Checkbox("antialias", &state.antialias);
 }

@@ -82,6 +82,7 @@ void handle_keys(ViewerState& state, GLFWwindow* window) {
   if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state.overlays.paths = !state.overlays.paths;
   if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.overlays.events = !state.overlays.events;
   if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) state.overlays.camera = !state.overlays.camera;
+  if (ImGui::IsKeyPressed(GLFW_KEY_N, false)) state.overlays.table = !state.overlays.table;
   if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) state.antialias = !state.antialias;
   if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) load_into(state);
   if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))

@@ -48,6 +48,7 @@ TEST_SUITE("preview command line") {
     CHECK_FALSE(o.overlays.paths);
     CHECK_FALSE(o.overlays.events);
     CHECK_FALSE(o.overlays.camera);
+    CHECK_FALSE(o.overlays.table);
     CHECK_FALSE(o.strict);
     CHECK(o.quit_after == 0);
     CHECK_FALSE(o.screenshot);
@@ -79,7 +80,9 @@ TEST_SUITE("preview command line") {
     CHECK(movie.overlays.paths);
     CHECK(movie.overlays.camera);
     CHECK(movie.overlays.events);
+    CHECK_FALSE(movie.overlays.table);
     CHECK(movie.strict);
+    CHECK(accepted({"--at", "0", "-o", "n.png", "--overlay", "table"}).overlays.table);
   }
 
   TEST_CASE("interactive options") {

@@ -15,12 +15,16 @@
 #include <imgui.h>
 #include <stb_image.h>
 
+#include "files.h"
 #include "golden.h"
 #include "headless_canvas.h"
+#include "overlays.h"
 #include "png_writer.h"
 #include "scene_renderer.h"
+#include "shot.h"
 #include "support.h"
 #include "timeline_picture.h"
+#include "view.h"
 
 using namespace bsim;
 
@@ -190,5 +194,25 @@ TEST_SUITE("preview golden pictures") {
     draw_timeline(*list, made_up_failed_script(), canvas.fonts(), {0, 0, 800, 360});
     canvas.end_2d();
     check_against_golden(canvas, "timeline_script_error.png");
+  }
+
+  TEST_CASE("the standard table's numbering from above: rails, pockets and balls (README's picture)") {
+    // scenes/numbering.scn as `billiards-preview scenes/numbering.scn --at 0 --overlay table` draws it.
+    const ShotResult loaded = load_shot(test::require_file(test::source_path("scenes/numbering.scn")), "numbering", {});
+    REQUIRE(loaded.shot);
+    const Shot& shot = *loaded.shot;
+    HeadlessCanvas canvas;
+    SceneRenderer renderer;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(960, 540, 14, error), error);
+    REQUIRE_MESSAGE(renderer.init(error), error);
+    renderer.set_multisampling(4);
+    renderer.set_scene(shot.scene);
+    const FrameState frame = scripted_frame(shot, 0.0);
+    renderer.draw(shot.scene, frame, 960, 540);
+    ImDrawList* list = canvas.begin_2d();
+    draw_table_numbering(*list, OverlayFrame{shot, 0.0, frame.camera, 960.0, 540.0, canvas.fonts()});
+    canvas.end_2d();
+    check_against_golden(canvas, "numbering.png");
   }
 }
