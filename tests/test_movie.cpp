@@ -46,16 +46,6 @@ std::map<std::string, fs::file_time_type> picture_times(const fs::path& frames) 
   return times;
 }
 
-/// Files a run must never leave: temporary pictures, logs, a temporary movie.
-std::vector<std::string> leftovers(const fs::path& dir) {
-  std::vector<std::string> found;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind('.', 0) == 0 || name.find(".tmp") != std::string::npos) found.push_back(name);
-  }
-  return found;
-}
-
 /// A stand-in for POV-Ray: `body` runs with $in and $out set from +I and +O.
 std::string fake_povray(const test::TempDir& dir, const std::string& body) {
   const std::string path =
@@ -85,7 +75,7 @@ TEST_SUITE("movie") {
     const int frames = frame_count(duration, 4);
     auto times = picture_times(out / "frames");
     CHECK(static_cast<int>(times.size()) == frames);
-    CHECK(leftovers(out).empty());
+    CHECK(test::leftovers(out).empty());
 
     const test::CommandResult probe = test::run_command(
         "ffprobe -v error -show_entries stream=codec_name,codec_type,pix_fmt,width,height,sample_rate,channels:"
@@ -128,7 +118,7 @@ TEST_SUITE("movie") {
     CHECK(json_number(summary, "rendered") >= 1);
     CHECK(json_number(summary, "reused") >= 10);
     CHECK(test::require_file(out / "frames" / "frame_00000.png") == first_picture);
-    CHECK(leftovers(out).empty());
+    CHECK(test::leftovers(out).empty());
 
     // A shorter shot into the same directory: the frames past its end go, files and pictures.
     r = run_export(dir.file("tiny.scn", scene(kEndA, 0.15)), out, options);

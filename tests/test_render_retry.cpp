@@ -84,16 +84,6 @@ int povs(const fs::path& frames) {
   return n;
 }
 
-/// Files a run must never leave: temporary pictures, logs, a temporary movie.
-std::vector<std::string> leftovers(const fs::path& dir) {
-  std::vector<std::string> found;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind('.', 0) == 0 || name.find(".tmp") != std::string::npos) found.push_back(name);
-  }
-  return found;
-}
-
 std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -175,7 +165,7 @@ TEST_SUITE("render retry") {
     REQUIRE(frames >= 5);
     CHECK(pictures(out / "frames") == frames);
     CHECK(fs::file_size(out / "movie.mp4") > 0);
-    CHECK(leftovers(out).empty());
+    CHECK(test::leftovers(out).empty());
 
     const std::string retry = "; retrying (attempt 2 of 3)\n";
     CHECK(r.err.find("billiards-export: warning: frame 0 (frames/frame_00000.pov): povray failed (" +

@@ -39,6 +39,15 @@ std::string require_file(const std::filesystem::path& path) {
   return std::move(*bytes);
 }
 
+std::vector<std::string> leftovers(const std::filesystem::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.starts_with('.') || name.find(".tmp") != std::string::npos) found.push_back(name);
+  }
+  return found;
+}
+
 TempDir::TempDir() {
   std::random_device device;
   std::mt19937_64 random(device());

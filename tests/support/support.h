@@ -2,6 +2,7 @@
 // Helpers shared by the tests: running the binaries and the tools they call, temporary directories.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace bsim::test {
 
@@ -28,6 +29,10 @@ void require_program(const std::string& program);
 /// The bytes of the file at `path`; fails the test case if it cannot be read (so two missing files
 /// never compare equal).
 std::string require_file(const std::filesystem::path& path);
+
+/// Files below `dir` a run must never leave: hidden ones (temporary pictures, logs, staging
+/// directories) and any with ".tmp" in the name.
+std::vector<std::string> leftovers(const std::filesystem::path& dir);
 
 /// A fresh empty directory under the system temp directory, removed when the object dies.
 struct TempDir {
