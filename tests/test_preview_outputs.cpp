@@ -128,8 +128,9 @@ TEST_SUITE("preview outputs") {
     CHECK(std::distance(fs::directory_iterator(shots), fs::directory_iterator()) == 3);
 
     const fs::path alone = dir.path / "alone.png";
-    for (const auto& [at, name] : {std::pair{"0.5", "at_0.500.png"}, std::pair{"event:2", "at_event_2.png"},
-                                   std::pair{"1.25", "at_1.250.png"}}) {
+    for (const auto& entry : {std::pair{"0.5", "at_0.500.png"}, std::pair{"event:2", "at_event_2.png"},
+                              std::pair{"1.25", "at_1.250.png"}}) {
+      const std::string at = entry.first, name = entry.second;  // plain names: CAPTURE cannot take a binding
       CAPTURE(name);
       REQUIRE(preview(common + "--at " + at + " -o " + quoted(alone.string())).exit_code == 0);
       CHECK(require_file(shots / name) == require_file(alone));

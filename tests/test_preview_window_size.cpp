@@ -27,8 +27,9 @@ TEST_SUITE("preview window size") {
     const PictureSize large = default_window_picture(1920, 1040);
     CHECK(large.width == 1280);
     CHECK(large.height == 720);
-    for (const auto& [w, h] : {std::pair{1366, 768}, std::pair{1366, 728}, std::pair{1280, 800}, std::pair{1024, 768},
+    for (const auto& screen : {std::pair{1366, 768}, std::pair{1366, 728}, std::pair{1280, 800}, std::pair{1024, 768},
                                std::pair{800, 600}}) {
+      const int w = screen.first, h = screen.second;  // plain names: CAPTURE cannot take a binding
       CAPTURE(w);
       CAPTURE(h);
       const PictureSize p = default_window_picture(w, h);

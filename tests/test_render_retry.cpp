@@ -183,7 +183,9 @@ TEST_SUITE("render retry") {
 
     const std::map<std::string, int> count = attempts(dir);
     CHECK(static_cast<int>(count.size()) <= frames);  // frames alike are rendered once
-    for (const auto& [pov, n] : count) {
+    for (const auto& entry : count) {
+      const std::string& pov = entry.first;  // a plain name: CAPTURE cannot take a binding
+      const int n = entry.second;
       CAPTURE(pov);
       const int expected = pov < std::string("frame_00004.pov") ? 2 : 1;
       CHECK(n == expected);
