@@ -1,5 +1,5 @@
-// Collision models: conservation and dissipation laws, the frictionless textbook limits, the
-// friction limits (stick and slip), and the cushion acting at its nose height.
+// Ball-ball collision models: conservation and dissipation laws, the frictionless textbook limits
+// and the friction limits (stick and slip). The cushion has its own tests (test_cushion.cpp).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -169,60 +169,5 @@ TEST_SUITE("resolve") {
     CHECK(nb.motion == Motion::rolling);
     CHECK(na.velocity.x() + nb.velocity.x() == doctest::Approx(0.59));
     CHECK(energy(na, nb, p) < energy(a, b, p));
-  }
-
-  TEST_CASE("cushion: a head-on ball leaves at e_rail times its approach; the nose above its centre spins it") {
-    PhysicsParams p;
-    const Vec3 toward(1, 0, 0);
-    const BallState s = ball(0, 0, Vec3(1, 0, 0));
-    const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
-    CHECK(out.velocity.x() == doctest::Approx(-p.e_rail));
-    CHECK(out.velocity.y() == doctest::Approx(0).scale(1));
-    CHECK(out.velocity.z() == 0);
-    // Friction at the nose, above the centre, leaves the ball turning about the cushion's axis; without
-    // friction, or with the nose at the centre's height, it does not.
-    CHECK(out.spin.y() > 0);
-    CHECK(out.spin.x() == doctest::Approx(0).scale(1));
-    const double lift = std::asin((kStandardNoseHeight - kR) / kR);
-    CHECK(cushion_closing_speed(s, toward, kStandardNoseHeight, p) == doctest::Approx(std::cos(lift)));
-    PhysicsParams smooth = p;
-    smooth.mu_rail = 0;
-    CHECK(resolve_ball_cushion(s, toward, kStandardNoseHeight, smooth).spin.norm() == 0);
-    CHECK(resolve_ball_cushion(s, toward, kR, p).spin.norm() == doctest::Approx(0).scale(1));
-  }
-
-  TEST_CASE("cushion: friction at the nose acts on spin; mirroring the approach mirrors the result") {
-    const PhysicsParams p;
-    const Vec3 toward(0, 1, 0);
-    const BallState s = ball(0, 0, Vec3(0.7, 0.7, 0), Vec3(-0.7 / kR, 0.7 / kR, 10));
-    const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
-    CHECK(out.velocity.y() < 0);
-    CHECK(out.spin != s.spin);
-    CHECK(kinetic_energy(out, p) < kinetic_energy(s, p));
-    BallState mirrored = s;
-    mirrored.velocity.x() = -s.velocity.x();
-    mirrored.spin = Vec3(s.spin.x(), -s.spin.y(), -s.spin.z());  // reflection x -> -x of an axial vector
-    const BallState mirrored_out = resolve_ball_cushion(mirrored, toward, kStandardNoseHeight, p);
-    CHECK(mirrored_out.velocity.x() == doctest::Approx(-out.velocity.x()));
-    CHECK(mirrored_out.velocity.y() == doctest::Approx(out.velocity.y()));
-    CHECK(mirrored_out.spin.z() == doctest::Approx(-out.spin.z()));
-  }
-
-  TEST_CASE("cushion on random inputs: energy never created, and the ball leaves the cushion") {
-    scenes::Rng rng(5);
-    for (int k = 0; k < 500; ++k) {
-      PhysicsParams p;
-      p.e_rail = rng.uniform(0, 1);
-      p.mu_rail = rng.uniform(0, 0.5);
-      const double angle = rng.uniform(0, 2 * M_PI);
-      const Vec3 toward(std::cos(angle), std::sin(angle), 0);
-      const Vec3 v = rng.vector(-3, 3), w = rng.vector(-100, 100, -100, 100);
-      const BallState s = ball(0, 0, v, w);
-      if (s.velocity.dot(toward) <= 0) continue;
-      CAPTURE(s);
-      const BallState out = resolve_ball_cushion(s, toward, kStandardNoseHeight, p);
-      CHECK(kinetic_energy(out, p) <= kinetic_energy(s, p) * (1 + 1e-12));
-      CHECK(cushion_closing_speed(out, toward, kStandardNoseHeight, p) <= 1e-12);
-    }
   }
 }

@@ -100,39 +100,36 @@ double cushion_closing_speed(const BallState& ball, const Vec3& toward, double n
 BallState resolve_ball_cushion(const BallState& ball, const Vec3& toward, double nose_height,
                                const PhysicsParams& params) {
   BallState out = ball;
-  const double vn = Vec3(ball.velocity.x(), ball.velocity.y(), 0).dot(toward);  // horizontal approach
-  if (!(vn > 0)) return out;
   const double m = params.ball_mass, R = params.ball_radius, e = params.e_rail, mu = params.mu_rail;
+  // Han, "Dynamics in carom and three cushion billiards", J. Mech. Sci. Tech. 19(4), 2005. The nose
+  // touches the ball at angle theta above its equator, sin theta = (h - R) / R, so the contact normal
+  // n (from the centre to the nose) leans up by theta. The ball is taken as free during the impact:
+  //  - normal: restitution e along n, P = (1 + e) m c, where c is the approach speed along n;
+  //  - friction F in the tangent plane at the nose, against the slip s of the ball's point there. An
+  //    impulse F through that point changes s by 7/(2m) F (its velocity by F/m, and its spin's part by
+  //    5/(2m) F), so F = -2m s / 7 stops the slip ("stick"), unless that needs more than mu P: then
+  //    the nose slides on the ball and F = -mu P s / |s| (Coulomb).
+  // The ball's velocity changes by (-P n + F) / m and its spin by the torque of F about its centre
+  // (P passes through the centre). The bed then takes the vertical velocity this leaves.
   const double sin_lift = std::clamp((nose_height - R) / R, -0.99, 0.99);
-  const double cos_lift = std::sqrt(1 - sin_lift * sin_lift);
-  // Contact frame: n from the centre to the nose; e1 along the cushion; e2 completes the tangent plane.
-  const Vec3 n = cos_lift * toward + Vec3(0, 0, sin_lift);
-  const Vec3 e1 = Vec3(0, 0, 1).cross(toward);
-  const Vec3 e2 = -sin_lift * toward + Vec3(0, 0, cos_lift);
+  const Vec3 n = std::sqrt(1 - sin_lift * sin_lift) * toward + Vec3(0, 0, sin_lift);
+  const double approach = ball.velocity.dot(n);
+  if (!(approach > 0)) return out;
+  const double normal = (1 + e) * m * approach;
   const Vec3 arm = R * n;
   const Vec3 slip = ball.velocity + ball.spin.cross(arm);
-  const double u1 = slip.dot(e1), u2 = slip.dot(e2);
-
-  // Impulses: P along -n at the nose, F = F1 e1 + F2 e2 friction there, and the bed's B along +z under
-  // the ball, which keeps it on the bed (B = P sin - F2 cos). Restitution acts on the horizontal
-  // approach: the ball leaves at e times it, m dv_n = -P cos - F2 sin = -(1 + e) m vn. The nose's slip
-  // then changes by 7/(2m) F1 along e1 and by (1 + e) vn sin + 5/(2m) F2 along e2, so it sticks with
-  // F1 = -2m u1 / 7, F2 = -2m (u2 + (1 + e) vn sin) / 5, unless that needs more than mu P: then the
-  // friction slides, in the same direction, at mu P (Coulomb).
-  double f1 = -2.0 * m * u1 / 7.0, f2 = -2.0 * m * (u2 + (1 + e) * vn * sin_lift) / 5.0;
-  auto normal_impulse = [&](double friction2) { return ((1 + e) * m * vn - friction2 * sin_lift) / cos_lift; };
-  const double stick = std::hypot(f1, f2);
-  if (stick > mu * normal_impulse(f2)) {
-    const double scale = mu * (1 + e) * m * vn / (stick * cos_lift + mu * f2 * sin_lift);
-    f1 *= scale;
-    f2 *= scale;
-  }
-  const double p = normal_impulse(f2);
-  const Vec3 friction = f1 * e1 + f2 * e2;
-  const double inertia = 0.4 * m * R * R;
-  out.velocity += (-p * n + friction + (p * sin_lift - f2 * cos_lift) * Vec3(0, 0, 1)) / m;
-  out.velocity.z() = 0;  // exactly what the bed's impulse does, without round-off
-  out.spin += arm.cross(friction) / inertia;
+  Vec3 friction = -2.0 * m / 7.0 * (slip - slip.dot(n) * n);
+  const double stick = friction.norm();
+  if (stick > mu * normal) friction *= mu * normal / stick;
+  const Vec3 impulse = -normal * n + friction;
+  out.velocity += impulse / m;
+  out.velocity.z() = 0;
+  out.spin += arm.cross(friction) / (0.4 * m * R * R);
+  // With a small e (below about 0.15 at the standard nose and mu_rail 0.2) the nose's push down into
+  // the bed can leave the free ball still moving into the cushion once the bed has taken its vertical
+  // velocity; the cushion then stops that approach with a push through the centre (no spin).
+  const double still_closing = out.velocity.dot(toward);
+  if (still_closing > 0) out.velocity -= still_closing * toward;
   return classify(out, params);
 }
 

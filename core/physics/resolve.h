@@ -7,12 +7,11 @@
 //  of Alciatore's throw analysis (TP A-14: throw = min(mu v_n, v_slip / 7)); with mu_ball = 0 it is
 //  exactly the frictionless textbook collision and each ball keeps its spin.
 //
-//  Ball-cushion: after Han, "Dynamics in carom and three cushion billiards", J. Mech. Sci. Tech.
-//  19(4), 2005: the impulse acts at the nose, which touches the ball at height h above the bed, along
-//  the line to the ball's centre, with friction mu_rail against the slip of that point (stick or slide),
-//  so the cushion also acts on the ball's spin. Unlike Han, the bed's reaction is part of the impact,
-//  so the ball stays on the bed, and restitution e_rail applies to the horizontal approach: the ball
-//  always leaves the cushion at e_rail times the speed it came in with.
+//  Ball-cushion: Han, "Dynamics in carom and three cushion billiards", J. Mech. Sci. Tech. 19(4),
+//  2005, as published: the impulse acts at the nose, which touches the ball at height h above the bed,
+//  along the line to the ball's centre, with restitution e_rail along that line and friction mu_rail
+//  against the slip of that point (stick or slide), so the cushion also acts on the ball's spin. The
+//  ball is free during the impact; the bed then takes the vertical velocity the tilted impulse leaves.
 //
 // The bed keeps balls on it: a vertical velocity an impulse would give is dropped (no jumps).
 #include <utility>
