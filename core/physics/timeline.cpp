@@ -1,7 +1,7 @@
 #include "timeline.h"
 
 #include <algorithm>
-#include <optional>
+#include <memory>
 
 #include "motion.h"
 #include "pocket_fall.h"
@@ -13,7 +13,7 @@ namespace bsim {
 /// or its pocket fall saved every few steps.
 struct Timeline::SegmentSteps {
   std::vector<Quat> orientations;
-  std::optional<FallPath> fall;
+  std::unique_ptr<const FallPath> fall;
 };
 
 Timeline::Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> segments, std::vector<Event> events,
@@ -36,7 +36,8 @@ Timeline::Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> s
       const double dt = std::max(0.0, end - seg.t0);
       if (seg.start.motion == Motion::falling && seg.pocket >= 0) {
         const auto p = static_cast<std::size_t>(seg.pocket);
-        saved[k].fall.emplace(seg.start, Pocket{pocket_centres_[p], pocket_radii_[p], {}}, physics_, dt);
+        saved[k].fall =
+            std::make_unique<const FallPath>(seg.start, Pocket{pocket_centres_[p], pocket_radii_[p], {}}, physics_, dt);
       } else {
         saved[k].orientations =
             orientation_steps(seg.start, physics_, std::min(dt, transition_time(seg.start, physics_)));
