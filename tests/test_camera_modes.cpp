@@ -200,7 +200,7 @@ TEST_SUITE("camera_modes") {
         "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n");
     REQUIRE(shot->timeline.pocket_drops().size() == 1);
     for (int ball = 0; ball < 2; ++ball) {
-      const BallTrack track(shot->scene, shot->timeline, ball, 0.0);
+      const BallTrack track(shot->timeline, ball, 0.0);
       const double hidden = track.hidden_time();
       CHECK(std::isinf(hidden) == (ball == 0));
       for (double t = 0; t <= shot->timeline.duration(); t += 0.01) {

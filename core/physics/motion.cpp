@@ -1,7 +1,9 @@
 #include "motion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace bsim {
 
@@ -175,7 +177,11 @@ BallState after_transition(const BallState& s, const PhysicsParams& params) {
   }
 }
 
-Quat advance_orientation(const BallState& s, const PhysicsParams& params, double dt) {
+namespace {
+
+/// advance_orientation where the rotation axis stays fixed, in closed form; nullopt where it turns
+/// (which depends on `s` alone, never on dt > 0).
+std::optional<Quat> closed_form_orientation(const BallState& s, const PhysicsParams& params, double dt) {
   if (dt <= 0 || s.motion == Motion::stationary || s.motion == Motion::pocketed) return s.orientation;
   const double R = params.ball_radius;
   const double k = params.spin_decel();
@@ -203,31 +209,78 @@ Quat advance_orientation(const BallState& s, const PhysicsParams& params, double
       return turned(axis * (w0 * dt + 0.5 * accel * dt * dt));
     }
   }
+  return std::nullopt;
+}
 
-  // The axis turns: fourth-order Magnus steps on a fixed grid from the segment start. Within a state
-  // the spin is linear in time, w(t) = w0 + w1 t, except where spin about z reaches zero, so each step
-  // (split at that instant) is exp(h w_mid - h^3/12 w_mid x w1) to fourth order.
-  const double kink = s.spin.z() != 0 && k > 0 ? std::abs(s.spin.z()) / k : -1.0;
-  Quat q = s.orientation;
-  auto magnus = [&](double a, double b) {
+/// The axis turns: fourth-order Magnus steps on a fixed grid from the segment start. Within a state
+/// the spin is linear in time, w(t) = w0 + w1 t, except where spin about z reaches zero, so each step
+/// (split at that instant) is exp(h w_mid - h^3/12 w_mid x w1) to fourth order.
+class MagnusGrid {
+ public:
+  MagnusGrid(const BallState& s, const PhysicsParams& params)
+      : s_(s),
+        params_(params),
+        kink_(s.spin.z() != 0 && params.spin_decel() > 0 ? std::abs(s.spin.z()) / params.spin_decel() : -1.0) {}
+
+  /// Whole steps of the grid before dt.
+  static long whole_steps(double dt) { return static_cast<long>(std::floor(dt / kOrientationStep)); }
+  /// s, where step i of the grid starts.
+  static double node(long i) { return static_cast<double>(i) * kOrientationStep; }
+
+  /// q turned over [a, b], split where spin about z stops.
+  void step(Quat& q, double a, double b) const {
+    if (kink_ > a && kink_ < b) {
+      magnus(q, a, kink_);
+      magnus(q, kink_, b);
+    } else {
+      magnus(q, a, b);
+    }
+  }
+
+ private:
+  void magnus(Quat& q, double a, double b) const {
     const double h = b - a;
     if (h <= 0) return;
-    const Vec3 wa = spin_at(s, params, a), wb = spin_at(s, params, b), mid = 0.5 * (wa + wb);
+    const Vec3 wa = spin_at(s_, params_, a), wb = spin_at(s_, params_, b), mid = 0.5 * (wa + wb);
     q = (rotation(h * mid - (h * h / 12.0) * mid.cross(wb - wa)) * q).normalized();
-  };
-  auto step = [&](double a, double b) {
-    if (kink > a && kink < b) {
-      magnus(a, kink);
-      magnus(kink, b);
-    } else {
-      magnus(a, b);
-    }
-  };
-  const double h = kOrientationStep;
-  const auto steps = static_cast<long>(std::floor(dt / h));
-  for (long i = 0; i < steps; ++i) step(static_cast<double>(i) * h, static_cast<double>(i + 1) * h);
-  step(static_cast<double>(steps) * h, dt);
+  }
+
+  const BallState& s_;
+  const PhysicsParams& params_;
+  double kink_;
+};
+
+}  // namespace
+
+Quat advance_orientation(const BallState& s, const PhysicsParams& params, double dt) {
+  return advance_orientation(s, params, dt, {});
+}
+
+Quat advance_orientation(const BallState& s, const PhysicsParams& params, double dt, const std::vector<Quat>& steps) {
+  if (const std::optional<Quat> q = closed_form_orientation(s, params, dt)) return *q;
+  const MagnusGrid grid(s, params);
+  const long whole = MagnusGrid::whole_steps(dt);
+  // Resume from the last saved whole step at or before dt: the same steps follow, so the same value.
+  long i = steps.empty() ? 0 : std::min(whole, static_cast<long>(steps.size()) - 1);
+  Quat q = steps.empty() ? s.orientation : steps[static_cast<std::size_t>(i)];
+  for (; i < whole; ++i) grid.step(q, MagnusGrid::node(i), MagnusGrid::node(i + 1));
+  grid.step(q, MagnusGrid::node(whole), dt);
   return q;
+}
+
+std::vector<Quat> orientation_steps(const BallState& s, const PhysicsParams& params, double dt_max) {
+  std::vector<Quat> steps;
+  if (closed_form_orientation(s, params, dt_max)) return steps;
+  const MagnusGrid grid(s, params);
+  const long whole = MagnusGrid::whole_steps(dt_max);
+  steps.reserve(static_cast<std::size_t>(whole) + 1);
+  Quat q = s.orientation;
+  steps.push_back(q);
+  for (long i = 0; i < whole; ++i) {
+    grid.step(q, MagnusGrid::node(i), MagnusGrid::node(i + 1));
+    steps.push_back(q);
+  }
+  return steps;
 }
 
 double kinetic_energy(const BallState& s, const PhysicsParams& params) {

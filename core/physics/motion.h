@@ -7,6 +7,8 @@
 //   rolling : u = 0; the centre decelerates at mu_roll*g, horizontal spin stays locked to v.
 //   spinning: only spin about z is left.
 // In every state spin about z decays at 5*mu_spin*g/(2R) until it reaches zero.
+#include <vector>
+
 #include "ball_state.h"
 #include "physics_params.h"
 
@@ -46,6 +48,16 @@ BallState after_transition(const BallState& s, const PhysicsParams& params);
 /// fixed; otherwise integrated in fixed steps of kOrientationStep from `s` (fourth-order Magnus; the
 /// drift is below a milliradian a second), so the same query always gives the same answer.
 Quat advance_orientation(const BallState& s, const PhysicsParams& params, double dt);
+
+/// The orientations the integration of advance_orientation(s, params, dt) passes through at whole
+/// steps of kOrientationStep, for every dt up to dt_max (first s.orientation); empty where the axis is
+/// fixed and the closed form needs none. Saved once per segment, they make every later query cheap.
+std::vector<Quat> orientation_steps(const BallState& s, const PhysicsParams& params, double dt_max);
+
+/// advance_orientation(s, params, dt), resumed from the last of `steps` (orientation_steps of the
+/// same s and params) at or before dt: at most one step is integrated, and the value is the same to
+/// the bit, as the same steps are taken in the same order. With no steps, it integrates from s.
+Quat advance_orientation(const BallState& s, const PhysicsParams& params, double dt, const std::vector<Quat>& steps);
 
 /// s, step of the orientation integration when the rotation axis turns (display only).
 inline constexpr double kOrientationStep = 1.0 / 60.0;

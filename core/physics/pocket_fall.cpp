@@ -41,6 +41,18 @@ class Fall {
   bool settled() const { return settled_; }
   double time() const { return t_; }
 
+  /// Everything a step changes, to save and to resume from.
+  FallPath::Saved saved() const { return {position_, velocity_, theta_, theta_rate_, t_, pivoting_, settled_}; }
+  void resume(const FallPath::Saved& m) {
+    position_ = m.position;
+    velocity_ = m.velocity;
+    theta_ = m.theta;
+    theta_rate_ = m.theta_rate;
+    t_ = m.t;
+    pivoting_ = m.pivoting;
+    settled_ = m.settled;
+  }
+
   /// Advances by h (or less, stopping exactly where the ball settles).
   void step(double h) {
     if (settled_) return;
@@ -122,13 +134,41 @@ double fall_duration(const BallState& entry, const Pocket& pocket, const Physics
   return fall.time();
 }
 
-BallState fall_state(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt) {
-  Fall fall(entry, pocket, params);
+namespace {
+/// fall_state from `fall` after `done` whole steps (at or before dt): the same steps and the same
+/// last part step as from the entry, so the same state to the bit.
+BallState finish_fall(Fall& fall, long done, double dt) {
   const auto steps = static_cast<long>(std::floor(dt / kFallStep));
-  for (long i = 0; i < steps && !fall.settled(); ++i) fall.step(kFallStep);
+  for (long i = done; i < steps && !fall.settled(); ++i) fall.step(kFallStep);
   const double rest = dt - fall.time();
   if (rest > 0 && !fall.settled()) fall.step(std::min(rest, kFallStep));
   return fall.state();
+}
+}  // namespace
+
+BallState fall_state(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt) {
+  Fall fall(entry, pocket, params);
+  return finish_fall(fall, 0, dt);
+}
+
+FallPath::FallPath(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt_max)
+    : entry_(entry), centre_(pocket.center), radius_(pocket.radius), params_(params) {
+  Fall fall(entry, pocket, params);
+  const auto steps = static_cast<long>(std::floor(std::max(0.0, dt_max) / kFallStep));
+  saved_.push_back(fall.saved());
+  for (long i = 1; i <= steps && !fall.settled(); ++i) {
+    fall.step(kFallStep);
+    if (i % kSaveEvery == 0 || fall.settled()) saved_.push_back(fall.saved());
+  }
+}
+
+BallState FallPath::state(double dt) const {
+  Fall fall(entry_, Pocket{centre_, radius_, {}}, params_);
+  const auto steps = static_cast<long>(std::floor(dt / kFallStep));
+  // The last save at or before `steps` whole steps (a settled fall stays as it is).
+  const auto k = std::min(static_cast<std::size_t>(std::max(0L, steps) / kSaveEvery), saved_.size() - 1);
+  fall.resume(saved_[k]);
+  return finish_fall(fall, static_cast<long>(k) * kSaveEvery, dt);
 }
 
 }  // namespace bsim

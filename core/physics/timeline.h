@@ -1,6 +1,7 @@
 #pragma once
 // The simulated shot: every ball's exact state at any time, and the numbered events.
 // Everything downstream (camera, stick, sound, frames, preview) reads only this.
+#include <memory>
 #include <vector>
 
 #include "event.h"
@@ -30,16 +31,30 @@ class Timeline {
   const std::vector<Event>& events() const { return events_; }
   const std::vector<PocketDrop>& pocket_drops() const { return drops_; }
   int ball_count() const { return static_cast<int>(segments_.size()); }
-  /// The exact state of `ball` (file-order index) at time t (clamped to [0, duration]).
+  /// The exact state of `ball` (file-order index) at time t (clamped to [0, duration]). Cheap at any
+  /// t: the integrated parts (a turning spin axis, a pocket fall) resume from steps saved once.
   BallState state(int ball, double t) const;
+  /// state() without the orientation (left as at the start of the segment), for callers that need
+  /// only where the ball is and how it moves.
+  BallState motion_state(int ball, double t) const;
   std::vector<BallState> states(double t) const;
   /// The closed-form pieces of one ball's motion, in time order (for drawing paths).
   const std::vector<MotionSegment>& segments(int ball) const { return segments_[static_cast<std::size_t>(ball)]; }
   const PhysicsParams& physics() const { return physics_; }
+  /// This timeline answering every query by integrating from the segment's start, with nothing
+  /// saved: the same values to the bit, only slower (the reference for checks and benchmarks).
+  Timeline direct() const {
+    Timeline copy = *this;
+    copy.steps_.reset();
+    return copy;
+  }
 
  private:
-  /// The state `seg` gives at time t (t at or after its start).
-  BallState segment_state(const MotionSegment& seg, double t) const;
+  struct SegmentSteps;
+  /// The state `seg` gives at time t (t at or after its start), resumed from its saved steps if given.
+  BallState segment_state(const MotionSegment& seg, const SegmentSteps* steps, double t, bool orientation) const;
+  /// The segment of `ball` that holds t (clamped), with its index.
+  std::size_t segment_at(int ball, double& t) const;
 
   PhysicsParams physics_;
   std::vector<Vec3> pocket_centres_;
@@ -47,6 +62,9 @@ class Timeline {
   std::vector<std::vector<MotionSegment>> segments_;
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
+  /// Per ball and segment, the integration steps saved at construction (shared by copies: it never
+  /// changes once built).
+  std::shared_ptr<const std::vector<std::vector<SegmentSteps>>> steps_;
 };
 
 /// s from the start event to the cue strike: room for the stick's approach and two practice strokes.

@@ -5,9 +5,6 @@
 #include <limits>
 #include <numbers>
 
-#include "motion.h"
-#include "pocket_fall.h"
-
 namespace bsim {
 
 namespace {
@@ -25,17 +22,24 @@ bool out_of_sight(const BallState& state, double radius) {
 }
 }  // namespace
 
-BallTrack::BallTrack(const Scene& scene, const Timeline& timeline, int ball, std::optional<double> initial_heading_rad)
-    : scene_(&scene), timeline_(&timeline), ball_(ball) {
+BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad)
+    : timeline_(&timeline), ball_(ball) {
   const double duration = timeline.duration();
   const double radius = timeline.physics().ball_radius;
   const int samples = static_cast<int>(std::ceil(duration / kSampleStep)) + 1;
   auto sample_time = [&](int i) { return std::min(i * kSampleStep, duration); };
 
-  // Where the ball leaves the picture: the first sample out of sight, refined by bisection.
+  // Where the ball leaves the picture: the first sample out of sight, refined by bisection. The
+  // samples in sight are kept: position() gives the same at those times.
+  std::vector<Vec3> in_sight;
+  in_sight.reserve(static_cast<std::size_t>(samples));
   hidden_time_ = std::numeric_limits<double>::infinity();
   for (int i = 0; i < samples; ++i) {
-    if (!out_of_sight(motion_state(sample_time(i)), radius)) continue;
+    const BallState state = motion_state(sample_time(i));
+    if (!out_of_sight(state, radius)) {
+      in_sight.push_back(state.position);
+      continue;
+    }
     if (i == 0) {
       hidden_time_ = 0;
       break;
@@ -56,9 +60,14 @@ BallTrack::BallTrack(const Scene& scene, const Timeline& timeline, int ball, std
   bool have_angle = initial_heading_rad.has_value();
   initial_angle_ = initial_heading_rad.value_or(0.0);
   double last_angle = initial_angle_, integral = 0;
-  Vec3 previous = position(0);
+  // Every sample after those in sight is later than hidden_time_, where position() stays.
+  const Vec3 last_seen = in_sight.size() < static_cast<std::size_t>(samples) ? position(hidden_time_) : Vec3(0, 0, 0);
+  auto sample_position = [&](int i) {
+    return static_cast<std::size_t>(i) < in_sight.size() ? in_sight[static_cast<std::size_t>(i)] : last_seen;
+  };
+  Vec3 previous = sample_position(0);
   for (int i = 1; i < samples; ++i) {
-    const Vec3 here = position(sample_time(i));
+    const Vec3 here = sample_position(i);
     const double dx = here.x() - previous.x(), dy = here.y() - previous.y();
     previous = here;
     const double chord = std::hypot(dx, dy);
@@ -82,18 +91,6 @@ BallTrack::BallTrack(const Scene& scene, const Timeline& timeline, int ball, std
   }
   knot_arc_.push_back(arc_.back());
   knot_integral_.push_back(integral);
-}
-
-BallState BallTrack::motion_state(double t) const {
-  const std::vector<MotionSegment>& list = timeline_->segments(ball_);
-  const PhysicsParams& physics = timeline_->physics();
-  t = std::clamp(t, 0.0, timeline_->duration());
-  auto it = std::upper_bound(list.begin(), list.end(), t, [](double v, const MotionSegment& s) { return v < s.t0; });
-  if (it != list.begin()) --it;
-  const double dt = std::max(0.0, t - it->t0);
-  if (it->start.motion == Motion::falling && it->pocket >= 0 && it->pocket < static_cast<int>(scene_->pockets.size()))
-    return fall_state(it->start, scene_->pockets[static_cast<std::size_t>(it->pocket)], physics, dt);
-  return evolve(it->start, physics, std::min(dt, transition_time(it->start, physics)));
 }
 
 Vec3 BallTrack::position(double t) const { return motion_state(std::min(t, hidden_time_)).position; }

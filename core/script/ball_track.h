@@ -4,7 +4,6 @@
 #include <optional>
 #include <vector>
 
-#include "scene.h"
 #include "timeline.h"
 
 namespace bsim {
@@ -13,8 +12,8 @@ class BallTrack {
  public:
   /// `initial_heading_rad` is the heading before the ball first moves (the cue's heading for the
   /// struck ball); without one, the direction of its first motion, or +x if it never moves.
-  /// `scene` and `timeline` must outlive the track.
-  BallTrack(const Scene& scene, const Timeline& timeline, int ball, std::optional<double> initial_heading_rad);
+  /// `timeline` must outlive the track.
+  BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad);
 
   /// m, the ball's centre; once it has dropped below the bed it stays at its last visible place.
   Vec3 position(double t) const;
@@ -27,12 +26,10 @@ class BallTrack {
   double hidden_time() const { return hidden_time_; }
 
  private:
-  /// Timeline::state without the orientation, whose integration would dominate the sampling.
-  BallState motion_state(double t) const;
+  BallState motion_state(double t) const { return timeline_->motion_state(ball_, t); }
   double arc_length(double t) const;
   double angle_integral(double s) const;
 
-  const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
   int ball_ = 0;
   double hidden_time_ = 0;

@@ -160,7 +160,7 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeli
     if (track) continue;
     std::optional<double> heading;
     if (shot.ball == scene.cue.target) heading = scene.cue.heading_deg * kDegToRad;
-    track.emplace(scene, timeline, shot.ball, heading);
+    track.emplace(timeline, shot.ball, heading);
   }
   return script;
 }
