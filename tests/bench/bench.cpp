@@ -46,9 +46,9 @@ void figures(const char* name, const bsim::Scene& scene, int runs) {
   const double full = median_us(runs, [&] { sink = sink + bsim::simulate(scene).events().size(); });
   std::printf(
       "%-12s %4zu balls %6ld events %6ld segments %7ld tests  %10.1f us/shot  %10.1f us with orientation  %9.0f "
-      "events/s\n",
+      "events/s  %ld groups, %ld group steps\n",
       name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
-      static_cast<double>(events) / (physics * 1e-6));
+      static_cast<double>(events) / (physics * 1e-6), probe.groups, probe.group_steps);
 }
 
 int soak(long count) {
