@@ -74,6 +74,15 @@ inline Scene standard_break(double speed = 8.0, double vy = 0.0) {
   return scene;
 }
 
+/// A tight break: cue ball on the head spot at `speed`, rack of touching balls on the foot spot.
+inline Scene tight_break(double speed = 10.7) {
+  Scene scene = standard_table();
+  scene.name = "tight_break";
+  scene.balls.push_back(ball_at(0, -0.635, 0.03, scene.physics, Vec3(speed, -0.0235 * speed, 0).normalized() * speed));
+  add_rack(scene, 0.635, 0, 0, nullptr);
+  return scene;
+}
+
 /// A cut shot: the cue ball sends the object ball toward a corner pocket.
 inline Scene two_ball_shot() {
   Scene scene = standard_table();
