@@ -22,7 +22,18 @@ std::string event_json(const Event& e) {
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
   out += ", \"balls\": " + list(e.balls);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
-  return out + ", \"speed\": " + format_number(e.speed) + "}";
+  out += ", \"speed\": " + format_number(e.speed);
+  if (!e.contacts.empty()) {
+    // A group collision: every contact of the group, in the order they began.
+    out += ", \"contacts\": [";
+    for (std::size_t k = 0; k < e.contacts.size(); ++k) {
+      const Contact& c = e.contacts[k];
+      out += std::string(k ? ", " : "") + "{\"balls\": " + list({c.a, c.b}) + ", \"time\": " + format_number(c.time) +
+             ", \"speed\": " + format_number(c.speed) + "}";
+    }
+    out += "]";
+  }
+  return out + "}";
 }
 
 }  // namespace

@@ -24,7 +24,13 @@ std::string event_label(const Event& event) {
     case EventType::start: return "start";
     case EventType::end: return "end";
     case EventType::cue: return "cue \xE2\x86\x92 ball " + ball(0);
-    case EventType::ball_ball: return "ball " + ball(0) + " \xE2\x80\x93 ball " + ball(1);
+    case EventType::ball_ball: {
+      if (event.balls.size() <= 2) return "ball " + ball(0) + " \xE2\x80\x93 ball " + ball(1);
+      // A group collision: "balls 0, 1, 2 (group)".
+      std::string out = "balls " + ball(0);
+      for (std::size_t k = 1; k < event.balls.size(); ++k) out += ", " + ball(k);
+      return out + " (group)";
+    }
     case EventType::ball_rail: return "ball " + ball(0) + " \xE2\x80\x93 rail " + std::to_string(event.rail);
   }
   return "?";

@@ -2,6 +2,7 @@
 // doubles, and the same bytes from the binary as from the library.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <memory>
 #include <set>
@@ -104,6 +105,36 @@ TEST_SUITE("events.json") {
     CHECK(json.find("{\"ball\": 1, \"number\": 5, \"position\": [") != std::string::npos);
     CHECK(json.find("\"pocketed\": true}") != std::string::npos);
     CHECK(json.find("\"duration\": " + format_number(shot.timeline.duration()) + ",") != std::string::npos);
+  }
+
+  TEST_CASE("a group collision lists every ball and each contact with its time and speed") {
+    // The cue ball strikes the first of three balls in a touching row: one group event.
+    Scene scene = scenes::standard_table();
+    const double d = 2 * scene.physics.ball_radius;
+    scene.balls.push_back(scenes::ball_at(0, -0.4, 0, scene.physics, Vec3(2.0, 0, 0)));
+    scene.balls.push_back(scenes::ball_at(1, 0.0, 0, scene.physics));
+    scene.balls.push_back(scenes::ball_at(2, d, 0, scene.physics));
+    scene.balls.push_back(scenes::ball_at(3, 2 * d, 0, scene.physics));
+    const std::unique_ptr<Shot> owner = shot_of(scene);
+    const Event& hit = owner->timeline.events()[2];
+    REQUIRE(hit.type == EventType::ball_ball);
+    CHECK(hit.balls == std::vector<int>{0, 1, 2, 3});
+    REQUIRE(hit.contacts.size() >= 3);
+    std::string contacts;
+    double fastest = 0;
+    for (const Contact& c : hit.contacts) {
+      contacts += std::string(contacts.empty() ? "" : ", ") + "{\"balls\": [" + std::to_string(c.a) + ", " +
+                  std::to_string(c.b) + "], \"time\": " + format_number(c.time) +
+                  ", \"speed\": " + format_number(c.speed) + "}";
+      CHECK(c.time >= hit.time);
+      CHECK(c.time < hit.time + 0.01);
+      fastest = std::max(fastest, c.speed);
+    }
+    CHECK(hit.speed == fastest);
+    CHECK(events_json(*owner).find(
+              "{\"index\": 2, \"time\": " + format_number(hit.time) +
+              ", \"type\": \"ball-ball\", \"balls\": [0, 1, 2, 3], \"speed\": " + format_number(hit.speed) +
+              ", \"contacts\": [" + contacts + "]}") != std::string::npos);
   }
 
   TEST_CASE("trajectory.csv: one row per ball per frame from 0 to the duration, exact states, named motions") {

@@ -1,8 +1,12 @@
 // The scenes that ship: the built-in break and the gallery load cleanly and do what README says.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "builtin_scene.h"
 #include "files.h"
+#include "motion.h"
 #include "shot.h"
 #include "shots.h"
 #include "support.h"
@@ -30,15 +34,61 @@ bool pocketed(const Shot& shot, int ball, int pocket) {
 }  // namespace
 
 TEST_SUITE("movie scenes") {
-  TEST_CASE("the built-in break is scenes/break.scn: a full rack that scatters, with a follow camera") {
+  TEST_CASE(
+      "the built-in break is scenes/break.scn: a tight rack broken at 10.7 m/s that opens, with a follow camera") {
     CHECK(std::string(builtin_scene_text()) == scene_file("break.scn"));
     const auto shot = load_clean(std::string(builtin_scene_text()), "break");
-    CHECK(shot->scene.balls.size() == 16);
-    int hits = 0;
-    for (const Event& e : shot->timeline.events()) hits += e.type == EventType::ball_ball;
-    CHECK(hits >= 15);
+    const Scene& scene = shot->scene;
+    const Timeline& timeline = shot->timeline;
+    REQUIRE(scene.balls.size() == 16);
+    // A tight rack: every object ball touches a neighbour.
+    const double R = scene.physics.ball_radius;
+    for (std::size_t i = 1; i < 16; ++i) {
+      double nearest = 1e9;
+      for (std::size_t j = 1; j < 16; ++j)
+        if (j != i) nearest = std::min(nearest, (scene.balls[i].position - scene.balls[j].position).norm());
+      CHECK(nearest == doctest::Approx(2 * R).epsilon(1e-6));
+    }
+    // A real break speed (pros average 10.7 m/s).
+    const double speed = scene.balls[0].velocity.norm();
+    CHECK(speed >= 8.0);
+    CHECK(speed <= 11.0);
+    // The cue ball meets the rack in one group collision, and no ball takes half the rack's energy.
+    const Event* hit = nullptr;
+    for (const Event& e : timeline.events())
+      if (!hit && e.type == EventType::ball_ball) hit = &e;
+    REQUIRE(hit);
+    CHECK(hit->balls.size() == 16);
+    CHECK(hit->contacts.size() >= 15);
+    double rack = 0, largest = 0;
+    for (std::size_t k = 0; k < hit->balls.size(); ++k) {
+      if (hit->balls[k] == 0) continue;
+      const double energy = kinetic_energy(hit->after[k], scene.physics);
+      rack += energy;
+      largest = std::max(largest, energy);
+    }
+    MESSAGE("largest share of the rack's energy: " << largest / rack);
+    CHECK(largest < 0.5 * rack);
+    // At least 12 of the 15 object balls travel more than 0.3 m.
+    int travelled = 0;
+    for (int i = 1; i < 16; ++i) {
+      double distance = 0;
+      Vec3 last = timeline.state(i, timeline.cue_time()).position;
+      for (double t = timeline.cue_time(); t <= timeline.duration(); t += 0.002) {
+        const Vec3 p = timeline.state(i, t).position;
+        distance += std::hypot(p.x() - last.x(), p.y() - last.y());
+        last = p;
+      }
+      travelled += distance > 0.3;
+    }
+    MESSAGE(travelled << " of 15 object balls travel more than 0.3 m");
+    CHECK(travelled >= 12);
+    // Balls drop, and the cue ball stays on the table.
+    CHECK(!timeline.pocket_drops().empty());
+    for (const PocketDrop& d : timeline.pocket_drops()) CHECK(d.ball != 0);
+    CHECK(pocketed(*shot, ball_numbered(*shot, 8), 1));
     bool follows = false;
-    for (const CameraShot& c : shot->scene.camera) follows = follows || c.mode == CameraMode::follow;
+    for (const CameraShot& c : scene.camera) follows = follows || c.mode == CameraMode::follow;
     CHECK(follows);
   }
 

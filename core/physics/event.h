@@ -12,15 +12,26 @@ enum class EventType { start, cue, ball_ball, ball_rail, end };
 /// The name used in events.json: "start", "cue", "ball-ball", "ball-rail", "end".
 std::string_view to_string(EventType type);
 
+/// One contact of a group collision (several balls in contact resolved together, group.h).
+struct Contact {
+  int a = 0, b = 0;     ///< file-order indices, a < b
+  double time = 0;      ///< s, when the contact began (the group's instant plus its place in the phase)
+  double speed = 0;     ///< m/s, the largest closing speed the contact reached
+  Vec3 where{0, 0, 0};  ///< m, the contact point
+};
+
 struct Event {
   int index = 0;    ///< position in Timeline::events(), 0 = start
   double time = 0;  ///< s
   EventType type = EventType::start;
-  std::vector<int> balls;                ///< file-order indices: cue [target], ball-ball [i, j] (i < j), ball-rail [i]
-  int rail = -1;                         ///< ball-rail: index into Scene::rails
-  double speed = 0;                      ///< m/s, closing speed along the contact normal (cue: the ball's speed)
-  Vec3 where{0, 0, 0};                   ///< m, the contact point (cue: the struck ball's centre)
+  std::vector<int> balls;  ///< file-order indices: cue [target], ball-ball [i, j, ...] ascending, ball-rail [i]
+  int rail = -1;           ///< ball-rail: index into Scene::rails
+  double speed = 0;        ///< m/s, closing speed along the contact normal (cue: the ball's speed)
+  Vec3 where{0, 0, 0};     ///< m, the contact point (cue: the struck ball's centre)
   std::vector<BallState> before, after;  ///< states of `balls` just before and after
+  /// ball-ball: a group collision's contacts in the order they began (empty for a pair resolved alone);
+  /// `balls` then lists every ball of the group and `speed` is the largest contact speed.
+  std::vector<Contact> contacts;
 };
 
 /// A ball dropping into a pocket: recorded, but not a numbered event (as in the seed).

@@ -37,6 +37,20 @@ double closing_speed(const BallState& a, const BallState& b) {
   return (a.velocity - b.velocity).dot(n);
 }
 
+Vec3 ball_ball_friction(const BallState& a, const BallState& b, const Vec3& n, double normal_impulse,
+                        const PhysicsParams& params) {
+  // Coulomb friction against the contact points' relative slip, capped where the slip would stop:
+  // each ball's contact point moves 7/(2m) per unit tangential impulse, so 7/m for the pair.
+  const double m = params.ball_mass;
+  const Vec3 arm_a = params.ball_radius * n, arm_b = -params.ball_radius * n;
+  const Vec3 slip = (a.velocity + a.spin.cross(arm_a)) - (b.velocity + b.spin.cross(arm_b));
+  const Vec3 slip_t = slip - slip.dot(n) * n;
+  const double slip_speed = slip_t.norm();
+  if (!(slip_speed > 0)) return Vec3(0, 0, 0);
+  const double jt = std::min(params.mu_ball * normal_impulse, m * slip_speed / 7.0);
+  return (jt / slip_speed) * slip_t;
+}
+
 std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const BallState& b, const PhysicsParams& params) {
   const double vn = closing_speed(a, b);
   if (!(vn > 0)) return {a, b};
@@ -49,17 +63,7 @@ std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const Ball
   const double jn = 0.5 * m * (1 + params.e_ball) * vn;
   Vec3 impulse_b = jn * n;
 
-  if (params.mu_ball > 0) {
-    // Coulomb friction against the contact points' relative slip, capped where the slip would stop:
-    // each ball's contact point moves 7/(2m) per unit tangential impulse, so 7/m for the pair.
-    const Vec3 slip = (a.velocity + a.spin.cross(arm_a)) - (b.velocity + b.spin.cross(arm_b));
-    const Vec3 slip_t = slip - slip.dot(n) * n;
-    const double slip_speed = slip_t.norm();
-    if (slip_speed > 0) {
-      const double jt = std::min(params.mu_ball * jn, m * slip_speed / 7.0);
-      impulse_b += (jt / slip_speed) * slip_t;
-    }
-  }
+  if (params.mu_ball > 0) impulse_b += ball_ball_friction(a, b, n, jn, params);
   apply_impulse(ra, arm_a, -impulse_b, params);
   apply_impulse(rb, arm_b, impulse_b, params);
   return {classify(ra, params), classify(rb, params)};

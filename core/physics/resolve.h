@@ -27,6 +27,12 @@ double closing_speed(const BallState& a, const BallState& b);
 /// Touching balls a and b -> after the impact. Unchanged when they are not closing.
 std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const BallState& b, const PhysicsParams& params);
 
+/// N s, the friction impulse on b (on a: its opposite) of a contact with unit normal n from a to b that
+/// carries `normal_impulse`: Coulomb friction mu_ball against the contact points' relative slip, capped
+/// where that slip would stop. Shared by the pairwise model and the group contact (group.h).
+Vec3 ball_ball_friction(const BallState& a, const BallState& b, const Vec3& n, double normal_impulse,
+                        const PhysicsParams& params);
+
 /// A push: a gentle contact after which the two would at once press together again (one ball driving
 /// another, as in a follow shot at close range or two balls rolling on side by side). Instead of a
 /// bounce the closing speed is removed, without friction, and a ball rolling (or at rest) stays rolling:

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "detect.h"
+#include "group.h"
 #include "motion.h"
 #include "pocket_fall.h"
 #include "resolve.h"
@@ -86,6 +87,8 @@ class Simulator {
     result.events = std::move(events_);
     result.drops = std::move(drops_);
     result.candidates_tested = tests_;
+    result.groups = groups_;
+    result.group_steps = group_steps_;
     result.cut_off = cut_off_;
     return result;
   }
@@ -119,6 +122,7 @@ class Simulator {
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
   long tests_ = 0;
+  long groups_ = 0, group_steps_ = 0;
   bool cut_off_ = false;
 
   unsigned version(int i) const { return version_[static_cast<std::size_t>(i)]; }
@@ -288,6 +292,78 @@ class Simulator {
     return resolve_ball_ball(a, b, params_);
   }
 
+  /// The balls a contact of a and b closing at `speed` resolves together: a and b, and every ball on the
+  /// bed within group_gap(speed) of one already in, in ascending order. Just a and b when they are alone.
+  std::vector<int> gather_group(int a, int b, double t, double speed) const {
+    const double reach = 2 * params_.ball_radius + group_gap(speed, params_);
+    std::vector<int> group = {a, b};
+    std::vector<Vec3> where(static_cast<std::size_t>(n_));
+    std::vector<char> in(static_cast<std::size_t>(n_), 0), live(static_cast<std::size_t>(n_), 0);
+    for (int i = 0; i < n_; ++i) {
+      live[static_cast<std::size_t>(i)] = tracks_[static_cast<std::size_t>(i)].live;
+      if (live[static_cast<std::size_t>(i)]) where[static_cast<std::size_t>(i)] = path_from(i, t).p;
+    }
+    in[static_cast<std::size_t>(a)] = in[static_cast<std::size_t>(b)] = 1;
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      const Vec3& p = where[static_cast<std::size_t>(group[k])];
+      for (int j = 0; j < n_; ++j) {
+        if (in[static_cast<std::size_t>(j)] || !live[static_cast<std::size_t>(j)]) continue;
+        const Vec3& q = where[static_cast<std::size_t>(j)];
+        if (std::hypot(q.x() - p.x(), q.y() - p.y()) < reach) {
+          in[static_cast<std::size_t>(j)] = 1;
+          group.push_back(j);
+        }
+      }
+    }
+    std::sort(group.begin(), group.end());
+    return group;
+  }
+
+  /// Several balls in contact at once (group.h): resolved together as one numbered event listing every
+  /// ball that took part and each contact.
+  void resolve_group_event(const std::vector<int>& group, int trigger_a, int trigger_b, double t) {
+    std::vector<BallState> before;
+    for (int i : group) before.push_back(state_at(i, t));
+    // Back to touching where a push left two balls pressed together (by a micrometre at most).
+    for (std::size_t p = 0; p < before.size(); ++p)
+      for (std::size_t q = p + 1; q < before.size(); ++q) separate(before[p], before[q]);
+    const GroupResult result = resolve_group(before, params_);
+    ++groups_;
+    group_steps_ += result.steps;
+
+    std::vector<int> balls, changed;
+    std::vector<BallState> was, now;
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      const int i = group[k];
+      if (result.touched[k]) {
+        balls.push_back(i);
+        was.push_back(before[k]);
+        now.push_back(result.after[k]);
+      }
+      // A ball only moved back to touching starts a segment too (its velocity unchanged).
+      if (result.touched[k] || before[k].position != state_at(i, t).position) {
+        begin_segment(i, t, result.after[k]);
+        changed.push_back(i);
+      }
+    }
+    Event e;
+    double speed = 0;
+    Vec3 where(0, 0, 0);
+    for (const GroupContact& contact : result.contacts) {
+      const int i = group[static_cast<std::size_t>(contact.a)], j = group[static_cast<std::size_t>(contact.b)];
+      const BallState &a = before[static_cast<std::size_t>(contact.a)],
+                      &b = before[static_cast<std::size_t>(contact.b)];
+      const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
+      const Vec3 point = a.position + params_.ball_radius * n;
+      if ((i == trigger_a && j == trigger_b) || speed == 0) where = point;
+      speed = std::max(speed, contact.speed);
+      e.contacts.push_back({i, j, t + contact.time, contact.speed, point});
+    }
+    add_event(EventType::ball_ball, t, balls, -1, speed, where, std::move(was), std::move(now));
+    events_.back().contacts = std::move(e.contacts);
+    reschedule(changed, t);
+  }
+
   BallState resolve_cushion(const BallState& s, const Vec3& toward, double h) const {
     if (cushion_closing_speed(s, toward, h, params_) < kPushSpeed) {
       PhysicsParams plastic = params_;
@@ -314,11 +390,19 @@ class Simulator {
           schedule_pair(c.a, c.b, t);
           break;
         }
+        if (speed >= kMinEventSpeed) {
+          std::vector<int> group = gather_group(c.a, c.b, t, speed);
+          if (group.size() > 2) {
+            resolve_group_event(group, c.a, c.b, t);
+            break;
+          }
+        }
         separate(a, b);
         const auto [na, nb] = resolve_pair(a, b, speed);
         const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
-        add_event(EventType::ball_ball, t, {c.a, c.b}, -1, speed, a.position + params_.ball_radius * n, {a, b},
-                  {na, nb});
+        if (speed >= kMinEventSpeed)
+          add_event(EventType::ball_ball, t, {c.a, c.b}, -1, speed, a.position + params_.ball_radius * n, {a, b},
+                    {na, nb});
         begin_segment(c.a, t, na);
         begin_segment(c.b, t, nb);
         reschedule({c.a, c.b}, t);
@@ -349,7 +433,8 @@ class Simulator {
         }
         if (overlap > 0) s.position -= overlap * toward;  // back to touching (see separate())
         const BallState ns = resolve_cushion(s, toward, h);
-        add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
+        if (speed >= kMinEventSpeed)
+          add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
         begin_segment(c.a, t, ns);
         reschedule({c.a}, t);
         break;

@@ -23,11 +23,18 @@ inline constexpr long kMaxSteps = 2'000'000;
 /// m/s, closing speed below which a contact that would at once press again (a push) does not bounce.
 inline constexpr double kPushSpeed = 0.01;
 
+/// m/s, least closing speed of a numbered ball-ball or ball-rail event. Gentler contacts (balls resting
+/// against each other being pushed, a ball pressed against a cushion) are resolved but not numbered:
+/// nothing worth a sound or a camera cut happens below a centimetre a second.
+inline constexpr double kMinEventSpeed = 0.01;
+
 struct SimulationResult {
   std::vector<std::vector<MotionSegment>> segments;  ///< per ball, in time order; orientations not yet set
   std::vector<Event> events;                         ///< numbered, start to end
   std::vector<PocketDrop> drops;
   long candidates_tested = 0;  ///< contact tests run (for the bench)
+  long groups = 0;             ///< group collisions resolved (group.h)
+  long group_steps = 0;        ///< their integration steps in all (for the bench)
   bool cut_off = false;        ///< the shot reached kMaxShotTime (or kMaxSteps) still moving
 };
 

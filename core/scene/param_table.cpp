@@ -21,6 +21,7 @@ const std::vector<ParamSpec> kSpecs = {
     {"mu_ball", "", "ball-ball friction coefficient (spin transfer and throw)", 0, false, kNoLimit},
     {"e_rail", "", "ball-cushion coefficient of restitution", 0, false, 1},
     {"mu_rail", "", "ball-cushion friction coefficient", 0, false, kNoLimit},
+    {"k_hertz", "N/m^1.5", "Hertz contact stiffness of two balls, F = k_hertz*overlap^1.5", 0, true, kNoLimit},
     {"table_speed", "", "the seed's table speed: sets mu_roll to 1/table_speed", 0, true, kNoLimit},
 };
 
@@ -75,6 +76,8 @@ void apply_param(PhysicsParams& p, std::string_view name, double value) {
     p.e_rail = value;
   else if (name == "mu_rail")
     p.mu_rail = value;
+  else if (name == "k_hertz")
+    p.k_hertz = value;
   else if (name == "table_speed")
     p.mu_roll = 1.0 / value;
 }

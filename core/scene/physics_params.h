@@ -18,6 +18,9 @@ struct PhysicsParams {
   double mu_ball = 0.05;          ///< ball-ball friction: spin transfer and throw (pooltool)
   double e_rail = 0.85;           ///< ball-cushion restitution (pooltool)
   double mu_rail = 0.2;           ///< ball-cushion friction (pooltool)
+  /// N/m^1.5, Hertz stiffness of two balls in contact, F = k_hertz * overlap^1.5 (Hertz 1882):
+  /// (4/3) E* sqrt(R*) for phenolic resin (E = 5.84 GPa, nu = 0.34) and 57.15 mm balls.
+  double k_hertz = 5.26e8;
 
   /// Deceleration of a rolling ball, m/s^2.
   double roll_decel() const { return mu_roll * g; }

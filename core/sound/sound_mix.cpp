@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "camera_interpolation.h"
+#include "simulate.h"
 
 namespace bsim {
 
@@ -55,6 +56,15 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
       default: continue;
     }
     const int ball = e.balls.empty() ? 0 : e.balls.front();
+    if (!e.contacts.empty()) {
+      // A group collision clicks once for each of its contacts, at its own time and speed (those gentler
+      // than a numbered event are not heard).
+      for (const Contact& c : e.contacts)
+        if (c.speed >= kMinEventSpeed)
+          cues.push_back(
+              {kind, c.time, c.speed, pan_of(shot, c.time, c.where), cue_seed(kind, e.index, c.a * 16 + c.b)});
+      continue;
+    }
     cues.push_back({kind, e.time, e.speed, pan_of(shot, e.time, e.where), cue_seed(kind, e.index, ball)});
   }
   const auto& drops = shot.timeline.pocket_drops();

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "group.h"
+#include "motion.h"
 #include "random_scenes.h"
 #include "shot_checks.h"
 #include "simulate.h"
@@ -46,9 +48,33 @@ void figures(const char* name, const bsim::Scene& scene, int runs) {
   const double full = median_us(runs, [&] { sink = sink + bsim::simulate(scene).events().size(); });
   std::printf(
       "%-12s %4zu balls %6ld events %6ld segments %7ld tests  %10.1f us/shot  %10.1f us with orientation  %9.0f "
-      "events/s\n",
+      "events/s  %ld groups, %ld group steps\n",
       name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
-      static_cast<double>(events) / (physics * 1e-6));
+      static_cast<double>(events) / (physics * 1e-6), probe.groups, probe.group_steps);
+}
+
+/// The group phase alone: the cue ball at 10 m/s touching the apex of the first `count` - 1 balls of a
+/// tight rack (whole rows first), all in one group.
+void group_cost(int runs) {
+  std::printf("group phase (cue ball at 10 m/s on a tight rack of the first N-1 balls):\n");
+  for (int count : {2, 3, 4, 7, 11, 16}) {
+    const bsim::Scene rack = bsim::scenes::tight_break(10.0);
+    const bsim::PhysicsParams params;
+    std::vector<bsim::BallState> balls;
+    for (int i = 0; i < count; ++i) {
+      bsim::BallState s;
+      s.position = rack.balls[static_cast<std::size_t>(i)].position;
+      balls.push_back(s);
+    }
+    balls[0].position = balls[1].position - bsim::Vec3(2 * params.ball_radius, 0, 0);
+    balls[0].velocity = bsim::Vec3(10, 0, 0);
+    balls[0] = bsim::classify(balls[0], params);
+    const bsim::GroupResult probe = bsim::resolve_group(balls, params);
+    volatile long sink = 0;
+    const double us = median_us(runs, [&] { sink = sink + bsim::resolve_group(balls, params).steps; });
+    std::printf("  N = %2d balls: %5ld steps, %3zu contacts, %8.1f us, %6.3f us a step\n", count, probe.steps,
+                probe.contacts.size(), us, us / static_cast<double>(probe.steps));
+  }
 }
 
 int soak(long count) {
@@ -111,8 +137,10 @@ int main(int argc, char** argv) {
   }
   if (!soak_only) {
     figures("break", bsim::scenes::standard_break(), runs);
+    figures("tight-break", bsim::scenes::tight_break(), runs);
     figures("two-ball", bsim::scenes::two_ball_shot(), runs);
     figures("stress-100", bsim::scenes::stress_table(100, 7), std::max(5, runs / 50));
+    group_cost(std::max(5, runs / 4));
   }
   return soak(soak_count);
 }

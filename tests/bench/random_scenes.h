@@ -74,6 +74,15 @@ inline Scene standard_break(double speed = 8.0, double vy = 0.0) {
   return scene;
 }
 
+/// A tight break: cue ball on the head spot at `speed`, rack of touching balls on the foot spot.
+inline Scene tight_break(double speed = 10.7) {
+  Scene scene = standard_table();
+  scene.name = "tight_break";
+  scene.balls.push_back(ball_at(0, -0.635, 0.03, scene.physics, Vec3(speed, -0.0235 * speed, 0).normalized() * speed));
+  add_rack(scene, 0.635, 0, 0, nullptr);
+  return scene;
+}
+
 /// A cut shot: the cue ball sends the object ball toward a corner pocket.
 inline Scene two_ball_shot() {
   Scene scene = standard_table();
@@ -84,7 +93,8 @@ inline Scene two_ball_shot() {
 }
 
 /// A random break on the standard table: cue ball anywhere behind the head string, aimed near the
-/// apex at 2-10 m/s with random follow/draw and side spin; the rack's gaps and placement jittered.
+/// apex at 2-10 m/s with random follow/draw and side spin; the rack tight (touching but for a few
+/// micrometres) or with gaps, its placement jittered.
 inline Scene random_break(std::uint64_t seed) {
   Rng rng(seed);
   Scene scene = standard_table();
@@ -100,8 +110,11 @@ inline Scene random_break(std::uint64_t seed) {
   const double side = rng.uniform(-60, 60);
   b.spin = Vec3(-std::sin(aim), std::cos(aim), 0) * follow + Vec3(0, 0, side);
   scene.balls.push_back(b);
-  const double jitter = rng.uniform(0, 5e-5);
-  const double gap = 3 * jitter + rng.uniform(0, 3e-4);
+  // Half the racks are tight: the balls touch but for a jitter of a few micrometres (a real rack);
+  // the others have gaps of up to 0.3 mm. 3 x the jitter keeps neighbours from overlapping.
+  const bool tight = rng.uniform(0, 1) < 0.5;
+  const double jitter = tight ? rng.uniform(0, 4e-6) : rng.uniform(0, 5e-5);
+  const double gap = 3 * jitter + (tight ? 0.0 : rng.uniform(0, 3e-4));
   add_rack(scene, apex, gap, jitter, &rng);
   scene.cue.heading_deg = aim * 180 / M_PI;
   return scene;
