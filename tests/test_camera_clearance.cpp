@@ -72,7 +72,8 @@ void check_one(const Loaded& loaded, int line, const std::string& start, double 
   CHECK(d.loc.line == line);
   CHECK(d.loc.column == 1);
   CHECK_MESSAGE(d.message.rfind(start, 0) == 0, d.message);
-  const auto [from, to] = span(d);
+  const std::pair<double, double> named = span(d);  // no structured binding: the checks below capture
+  const double from = named.first, to = named.second;
   CHECK_MESSAGE(near(from, begin), d.message << " (from " << begin << ")");
   CHECK_MESSAGE(near(to, end), d.message << " (to " << end << ")");
 }
