@@ -1,5 +1,7 @@
 #include "shot.h"
 
+#include "camera_clearance.h"
+
 namespace bsim {
 
 ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options) {
@@ -17,6 +19,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
     result.unscripted = std::move(shot);
     return result;
   }
+  check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
   shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
   result.shot = std::move(shot);
   return result;

@@ -1,7 +1,8 @@
 // The fixed POV-Ray models of the shared include. They read the numbers write_pov_include puts
 // before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/PocketOut/PocketStretch,
 // NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW, CushionUndercut,
-// CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX) and the balls'
+// CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX), from the room
+// description (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls'
 // colours (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident
 // faces make POV-Ray pick either surface per ray, which shows as speckled seams.
 #include "pov_table.h"
@@ -254,20 +255,18 @@ plane { z, FloorZ
   normal { granite 0.2 scale 0.01 }
   finish { diffuse 0.7 }
 }
-box { <OuterMin.u - 3.5, OuterMin.v - 3.5, FloorZ - 0.1>, <OuterMax.u + 3.5, OuterMax.v + 3.5, 2.6> inverse
+box { <OuterMin.u - RoomMargin, OuterMin.v - RoomMargin, FloorZ - 0.1>, <OuterMax.u + RoomMargin, OuterMax.v + RoomMargin, CeilingZ> inverse
   pigment { gradient z color_map { [0 srgb <0.17, 0.11, 0.07>] [0.35 srgb <0.17, 0.11, 0.07>]
                                    [0.35 srgb <0.22, 0.17, 0.11>] [1 srgb <0.22, 0.17, 0.11>] }
             scale 3.4 translate z * FloorZ }
   finish { diffuse 0.6 }
 }
-#declare LampZ = 1.05;
-#declare LampHalf = <max(0.3, 0.3 * (NoseMax.u - NoseMin.u)), 0.22>;
 union {
   difference {
-    box { <-LampHalf.u, -LampHalf.v, LampZ>, <LampHalf.u, LampHalf.v, LampZ + 0.14> }
-    box { <-LampHalf.u + 0.02, -LampHalf.v + 0.02, LampZ - 0.01>, <LampHalf.u - 0.02, LampHalf.v - 0.02, LampZ + 0.12> }
+    box { <-LampHalf.u, -LampHalf.v, LampZ>, <LampHalf.u, LampHalf.v, LampTopZ> }
+    box { <-LampHalf.u + LampWall, -LampHalf.v + LampWall, LampZ - 0.01>, <LampHalf.u - LampWall, LampHalf.v - LampWall, LampTopZ - LampWall> }
   }
-  cylinder { <0, 0, LampZ + 0.14>, <0, 0, 2.6>, 0.006 }
+  cylinder { <0, 0, LampTopZ>, <0, 0, CeilingZ>, LampCordR }
   pigment { srgb <0.07, 0.28, 0.14> } finish { diffuse 0.6 specular 0.5 roughness 0.01 }
   no_shadow
   translate <Middle.u, Middle.v, 0>
@@ -280,7 +279,7 @@ difference {
   no_shadow
   translate <Middle.u, Middle.v, 0>
 }
-box { <-LampHalf.u + 0.02, -LampHalf.v + 0.02, LampZ + 0.005>, <LampHalf.u - 0.02, LampHalf.v - 0.02, LampZ + 0.01>
+box { <-LampHalf.u + LampWall, -LampHalf.v + LampWall, LampZ + 0.005>, <LampHalf.u - LampWall, LampHalf.v - LampWall, LampZ + 0.01>
   pigment { srgb 1 } finish { emission 1 diffuse 0 } no_shadow
   translate <Middle.u, Middle.v, 0>
 }

@@ -94,6 +94,16 @@ void write_table_description(const TableLayout& layout, std::ostream& out) {
   out << "#declare RailW = " << pov_number(spec.rail.width) << ";  // width of the wooden rail's top\n";
   out << "#declare RailTopZ = " << pov_number(layout.rail_top) << ";  // the wood's top, a little above the noses\n";
   out << "#declare FloorZ = " << pov_number(-spec.bed_height) << ";\n";
+  const LampSpec& lamp = kRoom.lamp;
+  out << "#declare CeilingZ = " << pov_number(kRoom.ceiling) << ";\n";
+  out << "#declare RoomMargin = " << pov_number(kRoom.margin) << ";  // from the table's outer edge to the walls\n";
+  out << "#declare LampZ = " << pov_number(layout.lamp_bottom) << ";  // the lamp shade's rim\n";
+  out << "#declare LampTopZ = " << pov_number(layout.lamp_top) << ";  // and its top\n";
+  out << "#declare LampHalf = "
+      << pov_vector2(0.5 * (layout.lamp.x1 - layout.lamp.x0), 0.5 * (layout.lamp.y1 - layout.lamp.y0))
+      << ";  // half the shade seen from above, over Middle\n";
+  out << "#declare LampWall = " << pov_number(lamp.wall) << ";\n";
+  out << "#declare LampCordR = " << pov_number(lamp.cord_radius) << ";\n";
   out << "#declare SightLength = " << pov_number(spec.sights.length) << ";  // the diamond's diagonal along the rail\n";
   out << "#declare SightWidth = " << pov_number(spec.sights.width) << ";  // and across it\n";
   out << "#declare SightCount = " << layout.sights.size() << ";\n";

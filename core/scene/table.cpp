@@ -27,6 +27,16 @@ TableLayout table_layout(const Scene& scene) {
   layout.wood_outer = layout.wood_inner.grown(spec.rail.width);
   layout.cushion_top = layout.nose_height + spec.cushion.top_rise;
   layout.rail_top = layout.nose_height + spec.rail.top_rise;
+  layout.floor = -spec.bed_height;
+
+  const LampSpec& lamp = kRoom.lamp;
+  const double middle_x = 0.5 * (layout.noses.x0 + layout.noses.x1);
+  const double middle_y = 0.5 * (layout.noses.y0 + layout.noses.y1);
+  const double half_length = std::max(lamp.min_half_length, lamp.length_share * (layout.noses.x1 - layout.noses.x0));
+  layout.lamp = {middle_x - half_length, middle_y - lamp.half_width, middle_x + half_length,
+                 middle_y + lamp.half_width};
+  layout.lamp_bottom = lamp.bottom;
+  layout.lamp_top = lamp.bottom + lamp.height;
 
   const TableRect& n = layout.noses;
   const double d = spec.sights.from_nose, z = layout.rail_top;

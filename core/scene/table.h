@@ -103,6 +103,42 @@ inline constexpr TableSpec kStandardTable{
         },
 };
 
+/// The lamp over the table: a long open-bottomed shade hung over the middle of the noses, as long as
+/// a share of the noses' length (never shorter than a minimum) and as wide everywhere.
+struct LampSpec {
+  double bottom = 0;           ///< m above the bed, the shade's rim
+  double height = 0;           ///< m, from the rim to the shade's top
+  double half_width = 0;       ///< m, half the shade across y
+  double length_share = 0;     ///< the shade's half length along x over the noses' length
+  double min_half_length = 0;  ///< m, the shade's half length on a short table
+  double wall = 0;             ///< m, the shade's sheet, seen from below
+  double cord_radius = 0;      ///< m, the cord from the shade's top to the ceiling
+};
+
+/// The room the table stands in: the floor is the table's bed_height below the bed.
+struct RoomSpec {
+  double ceiling = 0;  ///< m above the bed
+  double margin = 0;   ///< m from the table's outer edge to the walls
+  LampSpec lamp;
+};
+
+inline constexpr RoomSpec kRoom{
+    .ceiling = 2.6,
+    .margin = 3.5,
+    .lamp =
+        {
+            // Its rim 1.05 m above the bed (about 1.8 m above the floor): low enough to light the
+            // cloth evenly, high enough to see under from a player's eye.
+            .bottom = 1.05,
+            .height = 0.14,
+            .half_width = 0.22,
+            .length_share = 0.3,
+            .min_half_length = 0.3,
+            .wall = 0.02,
+            .cord_radius = 0.006,
+        },
+};
+
 /// m, the standard nose height above the bed (what a `rail` line usually gives as z).
 inline constexpr double kStandardNoseHeight = kStandardTable.nose_height;
 
@@ -118,7 +154,7 @@ struct SightPlace {
   bool along_x = true;   ///< on a long side (the diamond's length along x), else on a short side
 };
 
-/// Where the standard cushion, wood and sights stand around one scene's nose lines: what both front
+/// Where the standard cushion, wood, sights and lamp stand around one scene's nose lines: what both front
 /// ends build their table from.
 struct TableLayout {
   TableRect noses;         ///< the nose lines' bounding box (the standard bed's when there are none)
@@ -127,6 +163,10 @@ struct TableLayout {
   double nose_height = 0;  ///< m, the highest nose (the standard one when there are none)
   double cushion_top = 0;  ///< m above the bed, the cushions' top where it meets the wood
   double rail_top = 0;     ///< m above the bed, the wood's top
+  double floor = 0;        ///< m, the floor's z (below the bed)
+  TableRect lamp;          ///< the lamp's shade seen from above, over the middle of the noses
+  double lamp_bottom = 0;  ///< m above the bed, the shade's rim
+  double lamp_top = 0;     ///< m above the bed, the shade's top
   std::vector<SightPlace> sights;
 };
 
