@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "camera_key.h"
 #include "labels.h"
 #include "shot.h"
 
@@ -13,12 +14,13 @@ bool same_place(const SourceLoc& a, const SourceLoc& b) {
   return a.known() && a.line == b.line && a.column == b.column;
 }
 
-// The errors the validation located on this description's keyword, event number or ball index.
+// The errors the validation located on this description's keyword, event number or key, or ball index.
 std::string problems_of(const CameraShot& shot, const std::vector<Diagnostic>& diagnostics) {
   std::string text;
   for (const Diagnostic& d : diagnostics) {
     if (d.severity != Severity::error) continue;
-    if (!same_place(d.loc, shot.loc) && !same_place(d.loc, shot.event_loc) && !same_place(d.loc, shot.ball_loc))
+    if (!same_place(d.loc, shot.loc) && !same_place(d.loc, shot.event_loc) && !same_place(d.loc, shot.ball_loc) &&
+        !same_place(d.loc, shot.key.a_loc) && !same_place(d.loc, shot.key.b_loc))
       continue;
     if (!text.empty()) text += "; ";
     text += d.message;
@@ -30,21 +32,25 @@ std::string problems_of(const CameraShot& shot, const std::vector<Diagnostic>& d
 
 std::vector<TimelineCameraSpan> written_camera_spans(const Scene& scene, const Timeline& timeline,
                                                      const std::vector<Diagnostic>& diagnostics) {
-  const auto& events = timeline.events();
-  const int count = static_cast<int>(events.size());
+  const int count = static_cast<int>(timeline.events().size());
   std::vector<TimelineCameraSpan> spans;
   for (const CameraShot& shot : scene.camera) {
     TimelineCameraSpan span;
     span.event = shot.event;
+    span.key = shot.key.text;
     span.mode = shot.mode;
     span.label = camera_shot_label(shot);
-    const int index = shot.event == CameraShot::kLastEvent ? count - 1 : shot.event;
-    span.placed = index >= 0 && index < count;
+    const KeyResolution at = resolve_camera_key(shot, scene, timeline);
+    span.placed = at.instant.has_value();
     // Unplaced, it sits beside the others with nothing to compare: say what the shot has instead.
-    span.problem = span.placed ? problems_of(shot, diagnostics)
-                               : "no such event \xE2\x80\x94 the shot has " + std::to_string(count) +
-                                     (count > 0 ? " (0 to " + std::to_string(count - 1) + ")" : "");
-    span.begin = span.end = span.placed ? events[static_cast<std::size_t>(index)].time : timeline.duration();
+    if (span.placed)
+      span.problem = problems_of(shot, diagnostics);
+    else if (shot.key.kind == CameraKeyKind::event)
+      span.problem = "no such event \xE2\x80\x94 the shot has " + std::to_string(count) +
+                     (count > 0 ? " (0 to " + std::to_string(count - 1) + ")" : "");
+    else
+      span.problem = at.problem;
+    span.begin = span.end = span.placed ? at.instant->time : timeline.duration();
     spans.push_back(span);
   }
   // Each placed description holds until the next later one, whatever order the file lists them in:

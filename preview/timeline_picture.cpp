@@ -172,8 +172,10 @@ void labelled_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, fl
 }
 
 std::string camera_span_label(const TimelineCameraSpan& c, bool compact) {
+  if (compact) return c.label;
+  if (!c.key.empty()) return c.key + ": " + c.label;
   const std::string event = c.event == CameraShot::kLastEvent ? "last" : std::to_string(c.event);
-  return compact ? c.label : "event " + event + ": " + c.label;
+  return "event " + event + ": " + c.label;
 }
 
 // A description of a camera script that does not fit the shot: its label above, its error (if any)
@@ -554,7 +556,7 @@ TimelineData timeline_data(const Shot& shot) {
     for (const CameraSegment& s : shot.camera->segments()) {
       if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
       const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
-      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c), {}, true});
+      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c), {}, true, c.key.text});
     }
     for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
   }

@@ -1,6 +1,6 @@
 #pragma once
 // The timeline of a shot as a picture: events (coloured by type, numbered), pocket drops, the camera
-// descriptions as labelled spans starting at the event they name, the interpolation windows, the cue
+// descriptions as labelled spans starting at the event or key they name, the interpolation windows, the cue
 // phases, and a list of every event. Used for --timeline and, compact, as the window's scrub bar.
 #include <string>
 #include <vector>
@@ -36,6 +36,7 @@ struct TimelineCameraSpan {
   std::string label;    ///< "follow ball 0"
   std::string problem;  ///< why the description does not fit the shot (drawn in red); empty when it does
   bool placed = true;   ///< false: the event it names does not exist (drawn after the time axis)
+  std::string key;      ///< the camera key as written ("hit 0 5"), empty when it names an event number
 };
 
 struct TimelineWindow {

@@ -77,9 +77,9 @@ TimelineData made_up_timeline() {
   int index = 0;
   for (const auto& [time, type] : events) data.events.push_back({index++, time, type, "made-up event"});
   data.drops.push_back({4.9, 3, 2});
-  data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover", "", true},
-                 {2.5, 3.1, 1, CameraMode::follow, "follow ball 0", "", true},
-                 {3.1, 6.0, 4, CameraMode::look, "look ball 3", "", true}};
+  data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover", "", true, ""},
+                 {2.5, 3.1, 1, CameraMode::follow, "follow ball 0", "", true, "cue"},
+                 {3.1, 6.0, 4, CameraMode::look, "look ball 3", "", true, "hit 0 3"}};
   data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}};
   data.cue = {{CuePhase::approach, 0.0, 0.9},
               {CuePhase::preflight, 0.9, 2.25},
@@ -94,12 +94,12 @@ TimelineData made_up_failed_script() {
   TimelineData data = made_up_timeline();
   data.windows.clear();
   data.cue.clear();
-  data.camera = {
-      {0.0, 2.9, 0, CameraMode::hover, "hover", "", true},
-      {4.4, 6.0, 6, CameraMode::follow, "follow ball 0", "", true},
-      {2.9, 4.4, 2, CameraMode::look, "look ball 3",
-       "event 2 is listed after event 6: list the camera's events in increasing order", true},
-      {6.0, 6.0, 9, CameraMode::follow, "follow ball 1", "no such event \xE2\x80\x94 the shot has 8 (0 to 7)", false}};
+  data.camera = {{0.0, 2.9, 0, CameraMode::hover, "hover", "", true, ""},
+                 {4.4, 6.0, 6, CameraMode::follow, "follow ball 0", "", true, ""},
+                 {2.9, 4.4, 2, CameraMode::look, "look ball 3",
+                  "event 2 is listed after event 6: list the camera's events in increasing order", true, ""},
+                 {6.0, 6.0, 9, CameraMode::follow, "follow ball 1",
+                  "no such event \xE2\x80\x94 the shot has 8 (0 to 7)", false, ""}};
   data.script_errors = {
       "golden.scn:9:7: error: event 2 is listed after event 6: list the camera's events in increasing order",
       "golden.scn:10:7: error: event 9 does not exist: the shot has 8 events (0 to 7)"};

@@ -43,10 +43,25 @@ struct Cue {
 
 enum class CameraMode { hover, look, follow };
 
+/// What a camera description starts at: the seed's event number, or a key naming a moment of the
+/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, pocket I, at T.
+enum class CameraKeyKind { event, start, cue, end, hit, cushion, pocket, at };
+
+struct CameraKey {
+  static constexpr int kLast = -1;  ///< ordinal of `last`
+  CameraKeyKind kind = CameraKeyKind::event;
+  int ordinal = 1;     ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
+  int a = -1, b = -1;  ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
+  double seconds = 0;  ///< at: s after the start of the shot
+  std::string text;    ///< the key as written, its tokens joined by one space ("second cushion 0"); empty for a number
+  SourceLoc a_loc, b_loc;  ///< the ball index tokens
+};
+
 /// One `event N pre post <mode> ...` line of the camera script.
 struct CameraShot {
   static constexpr int kLastEvent = 65535;  ///< the seed's magic number for "the last event"
-  int event = 0;                            ///< event number, or kLastEvent
+  int event = 0;                            ///< event number, or kLastEvent (key.kind == event)
+  CameraKey key;                            ///< what the description starts at when it is not a number
   double pre = 0;                           ///< fraction of the span from the previous listed event, [0, 1]
   double post = 0;                          ///< fraction of the span to the next listed event, [0, 1]
   CameraMode mode = CameraMode::hover;
@@ -54,7 +69,7 @@ struct CameraShot {
   Vec3 target{0, 0, 0};    ///< hover: the point looked at
   int ball = -1;           ///< look/follow: file-order index of the ball
   SourceLoc loc;           ///< the `event` keyword
-  SourceLoc event_loc;     ///< the event number token
+  SourceLoc event_loc;     ///< the event number token (a key's first token)
   SourceLoc ball_loc;      ///< the ball index token (look/follow)
 };
 

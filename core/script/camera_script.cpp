@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "camera_interpolation.h"
+#include "camera_key.h"
 #include "table.h"
 
 namespace bsim {
@@ -34,30 +36,46 @@ std::string describe_event(int written, int resolved) {
   return "event " + std::to_string(written);
 }
 
-/// Resolves every listed event to an index of the shot's events, or reports why it cannot.
-/// Returns the indices (-1 where invalid).
-std::vector<int> resolve_events(const Scene& scene, int event_count, std::vector<Diagnostic>& diagnostics) {
-  std::vector<int> resolved;
-  int previous = -1, previous_written = 0;
+/// "hit 0 5 on line 12 (at 3.42 s)".
+std::string describe_placed(const CameraShot& shot, double time) {
+  char at[48];
+  std::snprintf(at, sizeof at, " (at %.3f s)", time);
+  return describe_camera_key(shot) + " on line " + std::to_string(shot.loc.line) + at;
+}
+
+/// Resolves every listed event number or key to its instant in the shot, or reports why it cannot
+/// (an event the shot does not have, a key it never reaches, descriptions out of order).
+std::vector<std::optional<KeyInstant>> resolve_events(const Scene& scene, const Timeline& timeline,
+                                                      std::vector<Diagnostic>& diagnostics) {
+  std::vector<std::optional<KeyInstant>> resolved;
+  std::optional<KeyInstant> latest;
+  const CameraShot* latest_shot = nullptr;
   for (const CameraShot& shot : scene.camera) {
-    int index = shot.event;
-    if (shot.event == CameraShot::kLastEvent && event_count > 0) index = event_count - 1;
-    if (shot.event == CameraShot::kLastEvent ? event_count == 0 : (index < 0 || index >= event_count)) {
-      diagnostics.push_back(
-          {Severity::error, where(shot.event_loc, shot.loc),
-           "event " + std::to_string(shot.event) + " does not exist: the shot has " + counted(event_count, "event")});
-      resolved.push_back(-1);
+    const KeyResolution r = resolve_camera_key(shot, scene, timeline);
+    if (!r.instant) {
+      diagnostics.push_back({Severity::error, r.where, r.problem});
+      resolved.push_back(std::nullopt);
       continue;
     }
-    if (previous >= 0 && index <= previous) {
+    const KeyInstant now = *r.instant;
+    // A later instant, or the same one at a later numbered event (simultaneous events keep their order).
+    const bool after = !latest || now.time > latest->time ||
+                       (now.time == latest->time && now.event >= 0 && latest->event >= 0 && now.event > latest->event);
+    if (!after) {
+      const bool numbers = shot.key.kind == CameraKeyKind::event && latest_shot->key.kind == CameraKeyKind::event;
       diagnostics.push_back({Severity::error, where(shot.event_loc, shot.loc),
-                             describe_event(shot.event, index) + " is listed after " +
-                                 describe_event(previous_written, previous) +
-                                 ": list the camera's events in increasing order"});
+                             numbers ? describe_event(shot.event, now.event) + " is listed after " +
+                                           describe_event(latest_shot->event, latest->event) +
+                                           ": list the camera's events in increasing order"
+                                     : describe_placed(shot, now.time) + " is listed after " +
+                                           describe_placed(*latest_shot, latest->time) +
+                                           ": list the camera's descriptions in the order they happen"});
+      if (now.time == latest->time && now.event == latest->event) latest_shot = &shot;  // the later one names it
+    } else {
+      latest = now;
+      latest_shot = &shot;
     }
-    previous = std::max(previous, index);
-    if (index == previous) previous_written = shot.event;
-    resolved.push_back(index);
+    resolved.push_back(now);
   }
   return resolved;
 }
@@ -112,12 +130,10 @@ CameraShot CameraScript::default_shot(const Scene& scene) {
 
 std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeline& timeline,
                                                 std::vector<Diagnostic>& diagnostics) {
-  const int event_count = static_cast<int>(timeline.events().size());
-  const std::vector<int> resolved = resolve_events(scene, event_count, diagnostics);
+  const std::size_t errors_before = diagnostics.size();
+  const std::vector<std::optional<KeyInstant>> resolved = resolve_events(scene, timeline, diagnostics);
+  const bool events_ok = diagnostics.size() == errors_before;
   const bool balls_ok = check_balls(scene, diagnostics);
-  const bool events_ok =
-      std::find(resolved.begin(), resolved.end(), -1) == resolved.end() &&
-      std::adjacent_find(resolved.begin(), resolved.end(), [](int a, int b) { return b <= a; }) == resolved.end();
   if (!balls_ok || !events_ok) return std::nullopt;
 
   CameraScript script;
@@ -125,7 +141,7 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeli
   script.timeline_ = &timeline;
   script.shots_ = scene.camera;
   std::vector<double> times;
-  for (int index : resolved) times.push_back(timeline.events()[static_cast<std::size_t>(index)].time);
+  for (const std::optional<KeyInstant>& instant : resolved) times.push_back(instant->time);
   if (script.shots_.empty()) {
     script.shots_.push_back(default_shot(scene));
     times.push_back(0.0);

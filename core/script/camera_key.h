@@ -1,0 +1,33 @@
+#pragma once
+// Where a camera description's event number or key falls in the simulated shot: the instant it
+// names, or why the shot never reaches it.
+#include <optional>
+#include <string>
+
+#include "scene.h"
+#include "source_loc.h"
+#include "timeline.h"
+
+namespace bsim {
+
+/// The moment a description starts at.
+struct KeyInstant {
+  double time = 0;  ///< s
+  /// The numbered event it is or falls within (a hit inside a group: the group's event), -1 for a
+  /// pocket drop or an `at` time. Orders descriptions at the same instant.
+  int event = -1;
+};
+
+struct KeyResolution {
+  std::optional<KeyInstant> instant;  ///< none when the shot never reaches it
+  std::string problem;                ///< why not, as a message ("pocket 3 never happens: ...")
+  SourceLoc where;                    ///< the token the problem is about
+};
+
+/// Resolves the event number or key `shot` starts at against the simulated shot.
+KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, const Timeline& timeline);
+
+/// How a message names what the description starts at: "event 5" or the key as written ("hit 0 5").
+std::string describe_camera_key(const CameraShot& shot);
+
+}  // namespace bsim

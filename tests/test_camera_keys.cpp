@@ -1,0 +1,354 @@
+// Camera keys: descriptions that start at a moment named by what happens (start, cue, end, hit,
+// cushion, pocket, at, with ordinals) instead of a global event number.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "camera_key.h"
+#include "files.h"
+#include "fixtures.h"
+#include "scene_parse.h"
+#include "script_as_written.h"
+#include "shot.h"
+#include "shots.h"
+#include "support.h"
+#include "timeline_picture.h"
+
+using namespace bsim;
+namespace fx = bsim::test::fixtures;
+
+namespace {
+
+/// kTwoBalls with a camera of `descriptions` (lines 4 on; the first description on line 5).
+std::string two_balls(std::initializer_list<std::string_view> descriptions) {
+  return std::string(fx::kTwoBalls) + fx::camera(descriptions);
+}
+
+/// The instant `key` (e.g. "second cushion 0") names in the shot of `balls`, or nullopt.
+std::optional<double> instant(const std::string& balls, const std::string& key) {
+  const std::string text = balls + fx::camera({"event " + key + " 0 0 hover 0 -3 2 0 0 0"});
+  const ParseResult parsed = parse_scene(text, "key");
+  REQUIRE_MESSAGE(parsed.scene, text);
+  const Timeline timeline = simulate(*parsed.scene);
+  const KeyResolution r = resolve_camera_key(parsed.scene->camera.at(0), *parsed.scene, timeline);
+  if (!r.instant) return std::nullopt;
+  return r.instant->time;
+}
+
+/// The times of every cushion contact of `ball`, in order.
+std::vector<double> cushion_times(const Timeline& timeline, int ball) {
+  std::vector<double> out;
+  for (const Event& e : timeline.events())
+    if (e.type == EventType::ball_rail && e.balls.at(0) == ball) out.push_back(e.time);
+  return out;
+}
+
+/// The only error loading `text` reports.
+Diagnostic only_error(const std::string& text, const ParseOptions& options = {}) {
+  const ShotResult result = load_shot(text, "bad", options);
+  CHECK_FALSE(result.shot);
+  REQUIRE(result.diagnostics.size() == 1);
+  CHECK(result.diagnostics[0].severity == Severity::error);
+  return result.diagnostics[0];
+}
+
+std::string read_scene(const std::string& name) {
+  const std::optional<std::string> text = test::read_file(test::source_path("scenes/" + name));
+  REQUIRE(text);
+  return *text;
+}
+
+/// The break's balls and cue without its camera script.
+std::string break_balls() {
+  const std::string text = read_scene("break.scn");
+  return text.substr(0, text.find("\ncamera\n") + 1);
+}
+
+}  // namespace
+
+TEST_SUITE("camera_keys") {
+  TEST_CASE("the parser reads every key kind and keeps it as written") {
+    const ParseResult parsed = parse_scene(
+        two_balls({"event start 0 0 hover 0 -3 2 0 0 0", "event cue 0 0 follow 0 -0.6 0 0.3",
+                   "event hit 1 0 0.2 0.2 look 0 -2 1 1", "event second  cushion 0 0.2 0.2 follow 0 -0.6 0 0.3",
+                   "event last cushion 1 0 0 look 0 -2 1 1", "event pocket 1 0 0 look 0 -2 1 1",
+                   "event at 4.25 0 0 hover 0 -3 2 0 0 0", "event end 0 0 hover 0 -3 2 0 0 0",
+                   "event 3 0 0 hover 0 -3 2 0 0 0"}),
+        "keys");
+    REQUIRE(parsed.scene);
+    const auto& c = parsed.scene->camera;
+    REQUIRE(c.size() == 9);
+    CHECK(c[0].key.kind == CameraKeyKind::start);
+    CHECK(c[1].key.kind == CameraKeyKind::cue);
+    CHECK(c[2].key.kind == CameraKeyKind::hit);
+    CHECK(c[2].key.a == 1);
+    CHECK(c[2].key.b == 0);
+    CHECK(c[2].key.text == "hit 1 0");
+    CHECK(c[2].pre == 0.2);
+    CHECK(c[2].mode == CameraMode::look);
+    CHECK(c[3].key.kind == CameraKeyKind::cushion);
+    CHECK(c[3].key.ordinal == 2);
+    CHECK(c[3].key.text == "second cushion 0");
+    CHECK(c[3].event_loc.line == 8);
+    CHECK(c[3].event_loc.column == 7);
+    CHECK(c[3].key.a_loc.column == 23);
+    CHECK(c[4].key.ordinal == CameraKey::kLast);
+    CHECK(c[5].key.kind == CameraKeyKind::pocket);
+    CHECK(c[6].key.kind == CameraKeyKind::at);
+    CHECK(c[6].key.seconds == 4.25);
+    CHECK(c[6].key.text == "at 4.25");
+    CHECK(c[7].key.kind == CameraKeyKind::end);
+    CHECK(c[8].key.kind == CameraKeyKind::event);
+    CHECK(c[8].event == 3);
+    CHECK(c[8].key.text.empty());
+  }
+
+  TEST_CASE("start, cue, end and at resolve to the shot's start, cue strike, end and a time") {
+    const std::string balls = fx::kTwoBalls;
+    const Timeline timeline = simulate(*parse_scene(balls, "t").scene);
+    CHECK(instant(balls, "start") == 0.0);
+    CHECK(instant(balls, "cue") == timeline.cue_time());
+    CHECK(instant(balls, "end") == timeline.duration());
+    CHECK(instant(balls, "at 3.75") == 3.75);
+    CHECK(instant(balls, "at 0") == 0.0);
+  }
+
+  TEST_CASE("hit names the first contact of the two balls, in either order") {
+    const std::string balls = fx::kTwoBalls;
+    const Timeline timeline = simulate(*parse_scene(balls, "t").scene);
+    const Event& hit = timeline.events().at(2);
+    REQUIRE(hit.type == EventType::ball_ball);
+    CHECK(instant(balls, "hit 0 1") == hit.time);
+    CHECK(instant(balls, "hit 1 0") == hit.time);
+  }
+
+  TEST_CASE("cushion and its ordinals: the first, second, ... and last cushion contact of a ball") {
+    const std::string balls = break_balls();
+    const Timeline timeline = simulate(*parse_scene(balls, "break").scene);
+    // The ball with the most cushion contacts.
+    int ball = 0;
+    for (int b = 1; b < timeline.ball_count(); ++b)
+      if (cushion_times(timeline, b).size() > cushion_times(timeline, ball).size()) ball = b;
+    const std::vector<double> times = cushion_times(timeline, ball);
+    REQUIRE(times.size() >= 2);
+    const std::string which = " cushion " + std::to_string(ball);
+    CHECK(instant(balls, which.substr(1)) == times[0]);
+    CHECK(instant(balls, "second" + which) == times[1]);
+    CHECK(instant(balls, "last" + which) == times.back());
+    const char* ordinals[] = {"second", "third", "fourth", "fifth"};
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::optional<double> t = instant(balls, ordinals[k] + which);
+      if (k + 1 < times.size())
+        CHECK(t == times[k + 1]);
+      else
+        CHECK_FALSE(t);
+    }
+  }
+
+  TEST_CASE("in the break, hit finds a contact inside the group collision, pocket the drop") {
+    const std::string balls = break_balls();
+    const Timeline timeline = simulate(*parse_scene(balls, "break").scene);
+    const Event& group = timeline.events().at(2);
+    REQUIRE_FALSE(group.contacts.empty());
+    // Ball 2 (the 9) behind the apex: its contact with the apex ball begins inside the group.
+    std::optional<double> apex, second_row;
+    for (const Contact& c : group.contacts) {
+      if (c.a == 0 && c.b == 1 && !apex) apex = c.time;
+      if (c.a == 1 && c.b == 2 && !second_row) second_row = c.time;
+    }
+    REQUIRE(apex);
+    REQUIRE(second_row);
+    CHECK(instant(balls, "hit 0 1") == *apex);
+    CHECK(instant(balls, "hit 2 1") == *second_row);
+    CHECK(*second_row > group.time);
+
+    REQUIRE_FALSE(timeline.pocket_drops().empty());
+    const PocketDrop& drop = timeline.pocket_drops().front();
+    CHECK(instant(balls, "pocket " + std::to_string(drop.ball)) == drop.time);
+    CHECK(instant(balls, "cushion 11") == cushion_times(timeline, 11).at(0));
+  }
+
+  TEST_CASE("the camera script blends on the keys' instants exactly as on event times") {
+    const std::string keyed = two_balls({"event start 0 0 hover 0 -3 2 0 0 0", "event cue 0.5 0.5 follow 0 -0.6 0 0.3",
+                                         "event hit 0 1 0.3 0.2 look 0 -2 1 1", "event end 0.4 0 hover 1 1 2 0 0 0"});
+    const std::string numbered = two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event 1 0.5 0.5 follow 0 -0.6 0 0.3",
+                                            "event 2 0.3 0.2 look 0 -2 1 1", "event 65535 0.4 0 hover 1 1 2 0 0 0"});
+    const auto a = test::load_clean(keyed), b = test::load_clean(numbered);
+    REQUIRE(a->camera);
+    REQUIRE(b->camera);
+    REQUIRE(a->camera->windows().size() == b->camera->windows().size());
+    for (std::size_t k = 0; k < a->camera->windows().size(); ++k) {
+      CHECK(a->camera->windows()[k].begin == b->camera->windows()[k].begin);
+      CHECK(a->camera->windows()[k].event_time == b->camera->windows()[k].event_time);
+      CHECK(a->camera->windows()[k].end == b->camera->windows()[k].end);
+    }
+    for (double t = 0; t < a->timeline.duration(); t += 0.05) {
+      const CameraPose p = a->camera->pose(t), q = b->camera->pose(t);
+      CHECK(p.location == q.location);
+      CHECK(p.look_at == q.look_at);
+    }
+  }
+
+  TEST_CASE("an unrelated contact added before a keyed one: the key keeps its moment, a number shifts") {
+    const std::string camera = fx::camera(
+        {"event 0 0 0 hover 0 -3 2 0 0 0", "event hit 0 1 0 0 look 0 -2 1 1", "event 4 0 0 hover 1 1 2 0 0 0"});
+    // Ball 2 far to the left, given a push into the near cushion at the strike: a cushion contact
+    // before the cue ball reaches ball 1, and nothing to do with either.
+    const std::string before = std::string(fx::kTwoBalls) + camera;
+    const std::string after = std::string(fx::kTwoBalls) + "ball 2  -1.0 -0.5 0.028575   0 -0.6 0   1 0 0 0\n" + camera;
+    const auto a = test::load_clean(before), b = test::load_clean(after);
+    const auto time_of = [](const Shot& shot, int k) { return shot.timeline.events().at(std::size_t(k)).time; };
+    REQUIRE(b->timeline.events().at(2).type == EventType::ball_rail);
+    REQUIRE(b->timeline.events().at(2).balls.at(0) == 2);
+    REQUIRE(time_of(*a, 3) > time_of(*a, 2));
+    // The keyed description (window 0) stays on the hit; the numbered one (event 4) moves one event
+    // earlier in the shot, to what was event 3.
+    CHECK(a->camera->windows().at(0).event_time == time_of(*a, 2));
+    CHECK(b->camera->windows().at(0).event_time == a->camera->windows().at(0).event_time);
+    CHECK(b->camera->windows().at(0).event_time == time_of(*b, 3));
+    CHECK(a->camera->windows().at(1).event_time == time_of(*a, 4));
+    CHECK(b->camera->windows().at(1).event_time == time_of(*a, 3));
+  }
+
+  TEST_CASE("--strict rejects keys at the key") {
+    ParseOptions strict;
+    strict.strict = true;
+    const ParseResult r = parse_scene(
+        two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "  event hit 0 1 0 0 look 0 -2 1 1"}), "strict", strict);
+    CHECK_FALSE(r.scene);
+    bool found = false;
+    for (const Diagnostic& d : r.diagnostics)
+      if (d.message ==
+          "the camera key 'hit' is an extension that --strict rejects (the seed names an event by its "
+          "number)") {
+        found = true;
+        CHECK(d.loc.line == 6);
+        CHECK(d.loc.column == 9);
+      }
+    CHECK(found);
+    // Without --strict the same text loads.
+    CHECK(parse_scene(two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "  event hit 0 1 0 0 look 0 -2 1 1"}), "t").scene);
+  }
+
+  TEST_CASE("a misspelled key: did you mean, at the word") {
+    const ParseResult r = parse_scene(two_balls({"event cushon 0 0 0 hover 0 -3 2 0 0 0"}), "t");
+    REQUIRE(r.diagnostics.size() == 1);
+    CHECK(r.diagnostics[0].loc.line == 5);
+    CHECK(r.diagnostics[0].loc.column == 7);
+    CHECK(r.diagnostics[0].message.find("found 'cushon'; did you mean 'cushion'?") != std::string::npos);
+    const ParseResult ordinal = parse_scene(two_balls({"event second hti 0 1 0 0 hover 0 -3 2 0 0 0"}), "t");
+    REQUIRE(ordinal.diagnostics.size() == 1);
+    CHECK(ordinal.diagnostics[0].message ==
+          "expected 'hit' or 'cushion' after 'second', found 'hti'; did you mean 'hit'?");
+    CHECK(ordinal.diagnostics[0].loc.column == 14);
+    // Numbers stay numbers: a fraction is still "an integer for the event number".
+    const ParseResult fraction = parse_scene(two_balls({"event 1.5 0 0 hover 0 -3 2 0 0 0"}), "t");
+    REQUIRE(fraction.diagnostics.size() == 1);
+    CHECK(fraction.diagnostics[0].message == "expected an integer for the event number, found '1.5'");
+    const ParseResult same = parse_scene(two_balls({"event hit 1 1 0 0 hover 0 -3 2 0 0 0"}), "t");
+    REQUIRE(same.diagnostics.size() == 1);
+    CHECK(same.diagnostics[0].message == "expected two different balls for 'hit', found ball 1 twice");
+    CHECK(same.diagnostics[0].loc.column == 13);
+  }
+
+  TEST_CASE("a key the shot never reaches: an error after simulating, at the key") {
+    const auto line = [](const std::string& key) {
+      return two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event " + key + " 0 0 hover 1 -3 2 0 0 0"});
+    };
+    Diagnostic d = only_error(line("fifth hit 0 1"));
+    CHECK(d.message == "fifth hit 0 1 never happens: balls 0 and 1 touch once");
+    CHECK(d.loc.line == 6);
+    CHECK(d.loc.column == 7);
+    CHECK(format_diagnostic(d, "bad.scn") ==
+          "bad.scn:6:7: error: fifth hit 0 1 never happens: balls 0 and 1 touch once");
+    d = only_error(line("at 1000"));
+    CHECK(d.message.rfind("at 1000 never happens: the shot ends at ", 0) == 0);
+    d = only_error(std::string(fx::kTwoBalls) + "ball 2 -1.0 0.5 0.028575 0 0 0 1 0 0 0\n" +
+                   fx::camera({"event 0 0 0 hover 0 -3 2 0 0 0", "event cushion 2 0 0 hover 1 -3 2 0 0 0"}));
+    CHECK(d.message == "cushion 2 never happens: ball 2 meets no cushion");
+    CHECK(d.loc.line == 7);
+    d = only_error(line("pocket 7"));
+    CHECK(d.message == "ball 7 does not exist: the scene has 2 balls (0 to 1)");
+    CHECK(d.loc.column == 14);
+  }
+
+  TEST_CASE("keys whose instants come out of order: one error naming both lines") {
+    const Diagnostic d =
+        only_error(two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event cushion 0 0 0 hover 1 -3 2 0 0 0",
+                              "event hit 0 1 0 0 hover 1 -3 2 0 0 0"}));
+    CHECK(d.loc.line == 7);
+    CHECK(d.loc.column == 7);
+    CHECK(d.message.rfind("hit 0 1 on line 7 (at ", 0) == 0);
+    CHECK(d.message.find("is listed after cushion 0 on line 6 (at ") != std::string::npos);
+    CHECK(d.message.find("list the camera's descriptions in the order they happen") != std::string::npos);
+    // A key and a number at the same event: the key is not after it.
+    const Diagnostic same =
+        only_error(two_balls({"event 1 0 0 hover 0 -3 2 0 0 0", "event cue 0 0 hover 1 -3 2 0 0 0"}));
+    CHECK(same.message.find("cue on line 6") == 0);
+    CHECK(same.message.find("event 1 on line 5") != std::string::npos);
+  }
+
+  TEST_CASE("billiards-export --events-only: camera.csv of a keyed script equals the numbered one's") {
+    test::TempDir dir;
+    const std::string keyed =
+        dir.file("keyed.scn", two_balls({"event start 0 0 hover 0 -3 2 0 0 0", "event cue 0.5 0.5 follow 0 -0.6 0 0.3",
+                                         "event hit 0 1 0.3 0.2 look 0 -2 1 1", "event end 0.4 0 hover 1 1 2 0 0 0"}));
+    const std::string numbered =
+        dir.file("numbered.scn", two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event 1 0.5 0.5 follow 0 -0.6 0 0.3",
+                                            "event 2 0.3 0.2 look 0 -2 1 1", "event 65535 0.4 0 hover 1 1 2 0 0 0"}));
+    std::string csv[2];
+    const std::string scenes[2] = {keyed, numbered};
+    for (int k = 0; k < 2; ++k) {
+      const auto out = dir.path / ("out" + std::to_string(k));
+      const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scenes[k] +
+                                                      "' --events-only --fps 30 -o '" + out.string() + "'");
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      csv[k] = test::require_file(out / "camera.csv");
+    }
+    CHECK(csv[0].size() > 100);
+    CHECK(csv[0] == csv[1]);
+    // --strict refuses the keyed scene with the key's location.
+    const test::CommandResult strict =
+        test::run_command(test::bin("billiards-export") + " '" + keyed + "' --strict --events-only -o '" +
+                          (dir.path / "strict").string() + "'");
+    CHECK(strict.exit_code != 0);
+    CHECK(strict.err.find("keyed.scn:5:7: error: the camera key 'start' is an extension") != std::string::npos);
+  }
+
+  TEST_CASE("the timeline picture labels each description by its key as written, with its mode") {
+    const auto shot =
+        test::load_clean(two_balls({"event start 0 0 hover 0 -3 2 0 0 0", "event hit 0 1 0.3 0.2 look 0 -2 1 1",
+                                    "event 3 0 0 follow 1 -0.6 0 0.3", "event at 5.5 0 0 hover 0 -3 2 0 0 0"}));
+    const TimelineData data = timeline_data(*shot);
+    REQUIRE(data.camera.size() == 4);
+    CHECK(data.camera[0].key == "start");
+    CHECK(data.camera[1].key == "hit 0 1");
+    CHECK(data.camera[1].label == "look ball 1");
+    CHECK(data.camera[1].begin == shot->timeline.events().at(2).time);
+    CHECK(data.camera[2].key.empty());
+    CHECK(data.camera[2].event == 3);
+    CHECK(data.camera[3].key == "at 5.5");
+    CHECK(data.camera[3].begin == 5.5);
+
+    // A script that does not fit: the unreached key is unplaced and says why.
+    const ShotResult failed =
+        load_shot(two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event pocket 1 0 0 look 0 -2 1 1"}), "failed");
+    REQUIRE(failed.unscripted);
+    const std::vector<TimelineCameraSpan> spans =
+        written_camera_spans(failed.unscripted->scene, failed.unscripted->timeline, failed.diagnostics);
+    REQUIRE(spans.size() == 2);
+    CHECK_FALSE(spans[1].placed);
+    CHECK(spans[1].key == "pocket 1");
+    CHECK(spans[1].problem == "pocket 1 never happens: ball 1 drops into no pocket");
+
+    test::TempDir dir;
+    const std::string scene = dir.file("keys.scn", read_scene("break.scn"));
+    const std::string png = (dir.path / "t.png").string();
+    const test::CommandResult r =
+        test::run_command(test::bin("billiards-preview") + " '" + scene + "' --timeline -o '" + png + "'");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    CHECK(std::filesystem::file_size(png) > 1000);
+  }
+}
