@@ -111,7 +111,8 @@ TEST_SUITE("simulate") {
     CHECK(one.velocity.y() == doctest::Approx(-two.velocity.y()).epsilon(2e-3));
     Scene frictionless = table_with({ball(0, -0.3, 0, 1.5, 0), ball(1, x, kR), ball(2, x, -kR)});
     frictionless.physics.mu_ball = 0;
-    const Event& hit = *of_type(simulate(frictionless), EventType::ball_ball)[0];
+    const Timeline mirrored = simulate(frictionless);  // kept: the event lives in it
+    const Event& hit = *of_type(mirrored, EventType::ball_ball)[0];
     CHECK(hit.after[1].velocity.x() == doctest::Approx(hit.after[2].velocity.x()).epsilon(1e-12));
     CHECK(hit.after[1].velocity.y() == doctest::Approx(-hit.after[2].velocity.y()).epsilon(1e-12));
   }
