@@ -5,12 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "child_process.h"
 #include "frames.h"
 #include "progress_reporter.h"
+#include "scene_file.h"
 
 namespace bsim {
 
@@ -28,13 +27,6 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output,
@@ -48,11 +40,6 @@ std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const s
           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "medium", "-crf", "18", "-pix_fmt",
           "yuv420p", "-c:a", "aac", "-b:a", "192k", "-movflags", "+faststart", "-progress", progress, "-f", "mp4",
           output};
-}
-
-int movie_frame_count(const MovieSettings& settings) {
-  const int cut = static_cast<int>(std::ceil(settings.duration * settings.fps - 1e-9));
-  return std::clamp(cut, 1, frame_count(settings.duration, settings.fps));
 }
 
 int encoded_frames(const std::string& progress_text) {
@@ -73,14 +60,14 @@ RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings,
   cleanup();  // a progress file left by a killed run must not be read as this one's
   const pid_t pid = start_process(ffmpeg_arguments(settings, kTempMovie, kProgress), dir, log, error);
   if (pid < 0) return RunOutcome::failed;
-  const int total = movie_frame_count(settings);
+  const int total = frame_count(settings.duration, settings.fps);  // the frames the movie holds
   ProgressReporter progress("billiards-export", "encoding", total, 0, progress_style(settings.quiet));
   bool success = false;
   pid_t done = -1;
   while (done != pid) {
     done = wait_any(success, kProgressPoll);
     if (done == 0) {
-      progress.set_done(encoded_frames(read_text(progress_file)));
+      progress.set_done(encoded_frames(read_text_file(progress_file)));
       continue;
     }
     if (done < 0) {
@@ -90,7 +77,7 @@ RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings,
     }
   }
   if (!success) {
-    error = "ffmpeg could not make movie.mp4: " + error_from_log(read_text(log));
+    error = "ffmpeg could not make movie.mp4: " + error_from_log(read_text_file(log));
     cleanup();
     return RunOutcome::failed;
   }

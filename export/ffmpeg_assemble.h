@@ -20,9 +20,6 @@ struct MovieSettings {
 std::vector<std::string> ffmpeg_arguments(const MovieSettings& settings, const std::string& output,
                                           const std::string& progress);
 
-/// The frames the movie holds: those that start before the end of the shot.
-int movie_frame_count(const MovieSettings& settings);
-
 /// The frames ffmpeg has encoded so far, from what it wrote with `-progress` (its last `frame=N`).
 int encoded_frames(const std::string& progress_text);
 

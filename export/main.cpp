@@ -33,10 +33,6 @@ bool write_staged(const bsim::OutputStage& stage, const std::string& name, Write
   return true;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 /// Every name a run may write into its output directory: a run removes those it did not write this
 /// time, so the directory never holds one run's data beside another's movie.
 const std::vector<std::string> kRunOutputs = {"events.json",    "trajectory.csv", "camera.csv",         "frames",
@@ -58,7 +54,7 @@ bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& opti
     return RunOutcome::failed;
   if (options.events_only) return RunOutcome::done;
   if (!bsim::write_frames_and_sound(shot, options, stage, error)) return RunOutcome::failed;
-  summary.writing = seconds_since(start);
+  summary.writing = bsim::seconds_since(start);
   if (bsim::InterruptGuard::interrupted()) return RunOutcome::interrupted;
   summary.frames_total = bsim::frame_count(shot.timeline.duration(), options.fps);
   if (!options.no_render) {
@@ -97,7 +93,7 @@ int run(const bsim::ExportOptions& options) {
   bsim::RunSummary summary;
   summary.scene = shown_path;
   summary.output = options.out_dir ? *options.out_dir : "out/" + name;
-  summary.simulating = seconds_since(start);
+  summary.simulating = bsim::seconds_since(start);
 
   // Every program the run needs is found before any work, so a missing one costs nothing.
   std::string error;

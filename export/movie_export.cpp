@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <thread>
 
 #include "child_process.h"
@@ -21,6 +20,7 @@
 #include "pov_table.h"
 #include "render_jobs.h"
 #include "run_summary.h"
+#include "scene_file.h"
 #include "shot.h"
 #include "soundtrack.h"
 
@@ -35,13 +35,6 @@ constexpr const char* kSetUpCommand = "bash .ci/make-movie";
 /// idle wall time), so by default more processes than cores run at once.
 constexpr long kSmallFramePixels = 320L * 180L;
 constexpr int kSmallFrameProcessesPerCore = 3;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 template <class Writer>
 bool write_file(const std::string& path, Writer&& writer, std::string& error) {
@@ -94,7 +87,7 @@ FramePlan plan_frames(const std::string& frames_dir, int frames, std::uint64_t c
   std::map<std::uint64_t, int> first;
   for (int k = 0; k < frames; ++k) {
     const std::uint64_t key =
-        fnv1a(without_comment_lines(read_text(frames_dir + "/" + frame_name(k) + ".pov")), common);
+        fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common);
     const auto [it, fresh] = first.emplace(key, k);
     if (!fresh)
       plan.duplicates.emplace_back(k, it->second);
@@ -118,10 +111,6 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
     }
   }
   return true;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -177,10 +166,9 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   // What every picture depends on besides its own .pov text; "v2" names the store's key format.
   const std::string settings = "v2 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
                                quality_name(options.quality);
-  const std::uint64_t common = fnv1a(settings, fnv1a(read_text(frames_dir + "/" + std::string(kPovIncludeName))));
+  const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
   FrameCache cache(default_frame_cache_dir(), frames_dir);
   const FramePlan plan = plan_frames(frames_dir, frames, common, cache);
-  summary.frames_total = frames;
   summary.frames_rendered = static_cast<int>(plan.jobs.size());
   summary.frames_reused = frames - summary.frames_rendered;
 

@@ -5,7 +5,6 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "child_process.h"
 #include "pov_frame.h"
 #include "progress_reporter.h"
+#include "scene_file.h"
 
 namespace bsim {
 
@@ -20,13 +20,6 @@ namespace {
 
 std::string temp_png(int frame) { return "." + frame_name(frame) + ".tmp.png"; }
 std::string log_name(int frame) { return "." + frame_name(frame) + ".log"; }
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 void remove_quietly(const std::string& path) {
   std::error_code ignored;
@@ -198,7 +191,7 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
       outcome = RunOutcome::interrupted;
       break;
     }
-    const std::string log_text = read_text(dir + log_name(frame));
+    const std::string log_text = read_text_file(dir + log_name(frame));
     if (const std::optional<PovParseError> parse = find_parse_error(log_text)) {
       // The scene itself is wrong: another attempt would fail the same way.
       if (outcome == RunOutcome::done) {

@@ -2,6 +2,7 @@
 // run.json: what one run of billiards-export did, for a person or a CI job reading its output
 // directory later: the scene and options, how many frames were rendered and how many reused, where
 // the time went, which POV-Ray and ffmpeg made the pictures and the movie, and every file written.
+#include <chrono>
 #include <string>
 
 #include "export_options.h"
@@ -24,6 +25,11 @@ struct RunSummary {
   std::string povray_version;  ///< first line of `povray --version`; empty when not rendering
   std::string ffmpeg_version;  ///< first line of `ffmpeg -version`
 };
+
+/// Seconds of wall time since `start`: how run.json's times are taken.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// The first line `program flag` prints that starts with `prefix` ("POV-Ray", "ffmpeg version"),
 /// without a copyright notice; empty if it prints none.

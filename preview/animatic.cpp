@@ -4,7 +4,6 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <string>
@@ -18,6 +17,7 @@
 #include "headless_canvas.h"
 #include "overlays.h"
 #include "progress_reporter.h"
+#include "scene_file.h"
 #include "scene_renderer.h"
 #include "soundtrack.h"
 
@@ -56,7 +56,7 @@ class FfmpegPipe {
     if (pid_ < 0) return false;
     const bool ok = wait_for(pid_);
     pid_ = -1;
-    if (!ok && error.empty()) error = "ffmpeg: " + error_from_log(read_text(log_));
+    if (!ok && error.empty()) error = "ffmpeg: " + error_from_log(read_text_file(log_));
     return ok;
   }
 
@@ -68,11 +68,6 @@ class FfmpegPipe {
   }
 
  private:
-  static std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-
   FILE* out_ = nullptr;
   pid_t pid_ = -1;
   std::filesystem::path log_;

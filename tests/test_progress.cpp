@@ -12,6 +12,7 @@
 
 #include "child_process.h"
 #include "ffmpeg_assemble.h"
+#include "frames.h"
 #include "progress_reporter.h"
 
 using namespace bsim;
@@ -198,9 +199,9 @@ TEST_SUITE("progress") {
     CHECK(encoded_frames("frame=12\ndup_frames=0\ndrop_frames=3\nprogress=continue\nframe=24\nfps=0.00\n") == 24);
     CHECK(encoded_frames("frame=7\nkeyframe=9\n") == 7);
     // frame k shows t = k / fps; the movie is cut at the end of the shot
-    CHECK(movie_frame_count({.ffmpeg = "", .fps = 30, .duration = 10.0, .quiet = false}) == 300);
-    CHECK(movie_frame_count({.ffmpeg = "", .fps = 10, .duration = 2.41, .quiet = false}) == 25);
-    CHECK(movie_frame_count({.ffmpeg = "", .fps = 4, .duration = 0.1, .quiet = false}) == 1);
+    CHECK(frame_count(10.0, 30) == 300);
+    CHECK(frame_count(2.41, 10) == 25);
+    CHECK(frame_count(0.1, 4) == 1);
     const std::vector<std::string> args =
         ffmpeg_arguments({.ffmpeg = "ffmpeg", .fps = 30, .duration = 1, .quiet = false}, "o.mp4", "p");
     const auto at = std::find(args.begin(), args.end(), "-progress");

@@ -6,6 +6,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 namespace bsim {
 
@@ -47,6 +49,11 @@ std::optional<std::string> read_scene_file(const std::string& path, std::string&
     text.append(buffer, static_cast<std::size_t>(n));
   }
   return text;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace bsim
