@@ -26,12 +26,6 @@ struct Pair {
   int contact = -1;       ///< index into the contacts while in contact, else -1
 };
 
-void apply_impulse(BallState& s, const Vec3& r, const Vec3& j, const PhysicsParams& params) {
-  const double m = params.ball_mass, inertia = 0.4 * m * params.ball_radius * params.ball_radius;
-  s.velocity += j / m;
-  s.spin += r.cross(j) / inertia;
-}
-
 }  // namespace
 
 double hertz_compression(double speed, const PhysicsParams& params) {

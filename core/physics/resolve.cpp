@@ -15,13 +15,6 @@ Vec3 horizontal_unit(const Vec3& v) {
   return n > 0 ? Vec3(h / n) : Vec3(1, 0, 0);
 }
 
-/// Applies impulse j at offset r from the centre of a solid ball.
-void apply_impulse(BallState& s, const Vec3& r, const Vec3& j, const PhysicsParams& params) {
-  const double m = params.ball_mass, inertia = 0.4 * m * params.ball_radius * params.ball_radius;
-  s.velocity += j / m;
-  s.spin += r.cross(j) / inertia;
-}
-
 /// Unit vector from the centre to the cushion contact (the nose is above the equator when h > R).
 Vec3 cushion_normal(const Vec3& toward, double nose_height, const PhysicsParams& params) {
   const double R = params.ball_radius;
@@ -31,6 +24,12 @@ Vec3 cushion_normal(const Vec3& toward, double nose_height, const PhysicsParams&
 }
 
 }  // namespace
+
+void apply_impulse(BallState& s, const Vec3& r, const Vec3& j, const PhysicsParams& params) {
+  const double m = params.ball_mass, inertia = 0.4 * m * params.ball_radius * params.ball_radius;
+  s.velocity += j / m;
+  s.spin += r.cross(j) / inertia;
+}
 
 double closing_speed(const BallState& a, const BallState& b) {
   const Vec3 n = horizontal_unit(b.position - a.position);

@@ -27,6 +27,9 @@ double closing_speed(const BallState& a, const BallState& b);
 /// Touching balls a and b -> after the impact. Unchanged when they are not closing.
 std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const BallState& b, const PhysicsParams& params);
 
+/// Applies impulse j at offset r from the centre of a solid ball (moment of inertia 2/5 m R^2).
+void apply_impulse(BallState& s, const Vec3& r, const Vec3& j, const PhysicsParams& params);
+
 /// N s, the friction impulse on b (on a: its opposite) of a contact with unit normal n from a to b that
 /// carries `normal_impulse`: Coulomb friction mu_ball against the contact points' relative slip, capped
 /// where that slip would stop. Shared by the pairwise model and the group contact (group.h).

@@ -346,7 +346,7 @@ class Simulator {
         changed.push_back(i);
       }
     }
-    Event e;
+    std::vector<Contact> contacts;
     double speed = 0;
     Vec3 where(0, 0, 0);
     for (const GroupContact& contact : result.contacts) {
@@ -357,10 +357,10 @@ class Simulator {
       const Vec3 point = a.position + params_.ball_radius * n;
       if ((i == trigger_a && j == trigger_b) || speed == 0) where = point;
       speed = std::max(speed, contact.speed);
-      e.contacts.push_back({i, j, t + contact.time, contact.speed, point});
+      contacts.push_back({i, j, t + contact.time, contact.speed, point});
     }
     add_event(EventType::ball_ball, t, balls, -1, speed, where, std::move(was), std::move(now));
-    events_.back().contacts = std::move(e.contacts);
+    events_.back().contacts = std::move(contacts);
     reschedule(changed, t);
   }
 
