@@ -40,13 +40,6 @@ std::string shown_frame(int frame) {
   return "frame " + std::to_string(frame) + " (frames/" + frame_name(frame) + ".pov)";
 }
 
-/// Prints a line on standard error, first clearing the progress line if one is drawn.
-void print_line(const std::string& line) {
-  const std::string clear = progress_style(false) == ProgressStyle::terminal ? "\r\033[K" : "";
-  std::fputs((clear + line + "\n").c_str(), stderr);
-  std::fflush(stderr);
-}
-
 /// Why a failed attempt that is not a parse error failed, in a few words.
 std::string failure_reason(bool exited_zero, int signal, bool picture_there, const std::string& log_text) {
   if (signal != 0) return "killed by signal " + std::to_string(signal) + ": " + strsignal(signal);
@@ -200,7 +193,7 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
           file = (settings.shown_frames_dir.empty() ? frames_dir : settings.shown_frames_dir) + "/" + file;
         const std::string line = parse->line > 0 ? ":" + std::to_string(parse->line) : "";
         progress.finish();
-        print_line(file + line + ": error: povray: " + parse->message);
+        progress.message(file + line + ": error: povray: " + parse->message);
       }
       fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
       continue;
@@ -208,9 +201,9 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     const std::string reason = failure_reason(success, signal, picture_there, log_text);
     if (outcome == RunOutcome::done && attempt.number < kRenderAttempts) {
       cleanup(frame);
-      print_line("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
-                 "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
-                 std::to_string(kRenderAttempts) + ")");
+      progress.message("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
+                       "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
+                       std::to_string(kRenderAttempts) + ")");
       waiting.push_front({attempt.job, attempt.number + 1});
       continue;
     }

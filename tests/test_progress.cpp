@@ -165,6 +165,21 @@ TEST_SUITE("progress") {
     CHECK(text.back() == '\n');
   }
 
+  TEST_CASE("a warning clears the terminal line, stands on its own line, and the line comes back below it") {
+    FakeClock clock;
+    std::ostringstream out;
+    ProgressReporter progress("billiards-export", "rendering", 10, 0, ProgressStyle::terminal, out, clock.clock());
+    progress.message("warning: frame 1 retried");
+    clock.pass(seconds(1));
+    progress.advance();
+    const std::string text = out.str();
+    CHECK(text.find("\rrendering frame 0/10\033[K\r\033[Kwarning: frame 1 retried\n\rrendering frame 1/10") == 0);
+    std::ostringstream plain;
+    ProgressReporter off("billiards-export", "rendering", 10, 0, ProgressStyle::plain, plain, clock.clock());
+    off.message("warning: frame 1 retried");
+    CHECK(plain.str() == "warning: frame 1 retried\n");
+  }
+
   TEST_CASE("on a terminal, at most ten redraws a second, and the last frame always shown") {
     FakeClock clock;
     std::ostringstream out;

@@ -124,6 +124,14 @@ void ProgressReporter::draw_terminal(std::chrono::steady_clock::time_point now) 
   last_draw_ = now;
 }
 
+void ProgressReporter::message(const std::string& line) {
+  if (drawn_) out_ << "\r\033[K";
+  out_ << line << '\n';
+  out_.flush();
+  drawn_ = false;
+  drawn_done_ = -1;
+}
+
 void ProgressReporter::finish() {
   if (style_ == ProgressStyle::plain && printed_done_ != done_) print_plain(clock_());
   if (drawn_ && drawn_done_ != done_) draw_terminal(clock_());

@@ -48,6 +48,9 @@ class ProgressReporter {
   /// The run is over: the last plain line (unless the one before said the same), or the end of the
   /// terminal line. Reports nothing more afterwards.
   void finish();
+  /// A warning or error while the step runs: printed on a line of its own, in place of a terminal
+  /// line (which the next update draws again below it).
+  void message(const std::string& line);
 
   int done() const { return done_; }
 
