@@ -8,16 +8,6 @@ namespace bsim {
 
 namespace {
 
-SourceLoc where(const SourceLoc& token, const SourceLoc& line) { return token.known() ? token : line; }
-
-/// "7 events (0 to 6)", "1 ball (index 0)".
-std::string counted(int count, const std::string& noun) {
-  std::string text = std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
-  if (count == 1) return text + " (index 0)";
-  if (count > 1) text += " (0 to " + std::to_string(count - 1) + ")";
-  return text;
-}
-
 std::string times(std::size_t count) {
   if (count == 1) return "once";
   if (count == 2) return "twice";
@@ -65,6 +55,15 @@ std::optional<KeyInstant> first_of(const Timeline& timeline, EventType type) {
 
 }  // namespace
 
+SourceLoc message_loc(const SourceLoc& token, const SourceLoc& line) { return token.known() ? token : line; }
+
+std::string counted(int count, const std::string& noun) {
+  std::string text = std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+  if (count == 1) return text + " (index 0)";
+  if (count > 1) text += " (0 to " + std::to_string(count - 1) + ")";
+  return text;
+}
+
 std::string describe_camera_key(const CameraShot& shot) {
   if (shot.key.kind == CameraKeyKind::event) return "event " + std::to_string(shot.event);
   return shot.key.text;
@@ -76,14 +75,14 @@ KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, con
   const int event_count = static_cast<int>(events.size());
   const int ball_count = static_cast<int>(scene.balls.size());
   KeyResolution r;
-  r.where = where(shot.event_loc, shot.loc);
+  r.where = message_loc(shot.event_loc, shot.loc);
   const std::string name = describe_camera_key(shot);
   const auto never = [&](const std::string& why) { r.problem = name + " never happens: " + why; };
 
   // Ball indices first: a key about a ball the scene does not have cannot be looked for.
   for (const auto& [ball, loc] : {std::pair{key.a, key.a_loc}, std::pair{key.b, key.b_loc}}) {
     if (ball < 0 || ball < ball_count) continue;
-    r.where = where(loc, r.where);
+    r.where = message_loc(loc, r.where);
     r.problem = "ball " + std::to_string(ball) + " does not exist: the scene has " + counted(ball_count, "ball");
     return r;
   }

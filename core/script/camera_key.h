@@ -30,4 +30,10 @@ KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, con
 /// How a message names what the description starts at: "event 5" or the key as written ("hit 0 5").
 std::string describe_camera_key(const CameraShot& shot);
 
+/// Where a message about a camera description points: its token when it has one, else its line.
+SourceLoc message_loc(const SourceLoc& token, const SourceLoc& line);
+
+/// "7 events (0 to 6)", "1 ball (index 0)": how many there are and their indices, for messages.
+std::string counted(int count, const std::string& noun);
+
 }  // namespace bsim

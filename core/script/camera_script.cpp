@@ -21,16 +21,6 @@ constexpr double kDefaultElevationDeg = 55.0;
 /// degrees, where a z-up picture frame degenerates (and POV-Ray's look_at would too).
 constexpr double kVerticalView = 1e-3;
 
-/// "7 events (0 to 6)", "1 ball (index 0)".
-std::string counted(int count, const std::string& noun) {
-  std::string text = std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
-  if (count == 1) return text + " (index 0)";
-  if (count > 1) text += " (0 to " + std::to_string(count - 1) + ")";
-  return text;
-}
-
-SourceLoc where(const SourceLoc& token, const SourceLoc& line) { return token.known() ? token : line; }
-
 std::string describe_event(int written, int resolved) {
   if (written == CameraShot::kLastEvent) return "event 65535 (the last event, " + std::to_string(resolved) + ")";
   return "event " + std::to_string(written);
@@ -63,7 +53,7 @@ std::vector<std::optional<KeyInstant>> resolve_events(const Scene& scene, const 
                        (now.time == latest->time && now.event >= 0 && latest->event >= 0 && now.event > latest->event);
     if (!after) {
       const bool numbers = shot.key.kind == CameraKeyKind::event && latest_shot->key.kind == CameraKeyKind::event;
-      diagnostics.push_back({Severity::error, where(shot.event_loc, shot.loc),
+      diagnostics.push_back({Severity::error, message_loc(shot.event_loc, shot.loc),
                              numbers ? describe_event(shot.event, now.event) + " is listed after " +
                                            describe_event(latest_shot->event, latest->event) +
                                            ": list the camera's events in increasing order"
@@ -86,7 +76,7 @@ bool check_balls(const Scene& scene, std::vector<Diagnostic>& diagnostics) {
   for (const CameraShot& shot : scene.camera) {
     if (shot.mode == CameraMode::hover || (shot.ball >= 0 && shot.ball < count)) continue;
     diagnostics.push_back(
-        {Severity::error, where(shot.ball_loc, shot.loc),
+        {Severity::error, message_loc(shot.ball_loc, shot.loc),
          "ball " + std::to_string(shot.ball) + " does not exist: the scene has " + counted(count, "ball")});
     ok = false;
   }
