@@ -104,6 +104,11 @@ TEST_SUITE("spelling") {
     CHECK(message == "unknown option '--fsp'; did you mean '--fps'? (see --help)");
     CHECK(parse_preview_options({"--fsp", "24"}, p, message) == PreviewCommandLineOutcome::exit_usage);
     CHECK(message == "unknown option '--fsp'; did you mean '--fps'? (see --help)");
+    // Every shared option is suggested by both programs.
+    CHECK(parse_export_options({"--quite"}, e, message) == CommandLineOutcome::exit_usage);
+    CHECK(message == "unknown option '--quite'; did you mean '--quiet'? (see --help)");
+    CHECK(parse_preview_options({"--quite"}, p, message) == PreviewCommandLineOutcome::exit_usage);
+    CHECK(message == "unknown option '--quite'; did you mean '--quiet'? (see --help)");
     CHECK(parse_export_options({"--event-only"}, e, message) == CommandLineOutcome::exit_usage);
     CHECK(message == "unknown option '--event-only'; did you mean '--events-only'? (see --help)");
     CHECK(parse_export_options({"--qualty=draft"}, e, message) == CommandLineOutcome::exit_usage);

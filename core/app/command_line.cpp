@@ -76,7 +76,7 @@ std::string bad_value_message(std::string_view name, std::string_view text, std:
 }
 
 std::string unknown_option_message(std::string_view name, const std::vector<std::string_view>& own) {
-  std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--help", "--version"};
+  std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--quiet", "--help", "--version"};
   known.insert(known.end(), own.begin(), own.end());
   return "unknown option '" + std::string(name) + "'" + did_you_mean(name, known) + " (see --help)";
 }
