@@ -22,7 +22,7 @@ options:
   --audio-lead SECONDS   sounds start this long before their event, 0 to 1 (default: 0.005)
   --music FILE           a music file mixed under the sound track (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
-  --quiet                print no progress lines (errors and warnings still print)
+  --quiet                print no progress or closing lines (errors and warnings still print)
   -h, --help             show this help and exit
   --version              show the version and exit
 

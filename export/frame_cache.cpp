@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -70,6 +71,18 @@ void FrameCache::set(const std::string& png_name, std::uint64_t key) const {
   if (ec) fs::remove(temp, ec);
 }
 
+namespace {
+
+// A `.tmp` copy is renamed into place within moments of being written; one an hour old was left by a
+// process that was killed between the two, and nothing will ever rename it.
+void remove_if_stale(const fs::path& temp) {
+  std::error_code ec;
+  const fs::file_time_type written = fs::last_write_time(temp, ec);
+  if (!ec && fs::file_time_type::clock::now() - written > std::chrono::hours(1)) fs::remove(temp, ec);
+}
+
+}  // namespace
+
 void FrameCache::trim(std::uintmax_t limit) const {
   if (store_.empty()) return;
   struct Entry {
@@ -81,6 +94,10 @@ void FrameCache::trim(std::uintmax_t limit) const {
   std::uintmax_t total = 0;
   std::error_code ec;
   for (auto it = fs::directory_iterator(store_, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() == ".tmp") {
+      remove_if_stale(it->path());
+      continue;
+    }
     if (it->path().extension() != ".png") continue;
     std::error_code entry_ec;
     const std::uintmax_t size = it->file_size(entry_ec);

@@ -34,7 +34,8 @@ class FrameCache {
   /// Keeps frames_dir/png_name under `key` (best effort: a store that cannot be written only costs
   /// the next run time).
   void set(const std::string& png_name, std::uint64_t key) const;
-  /// Removes the least recently used pictures until the store holds at most `limit` bytes.
+  /// Removes the least recently used pictures until the store holds at most `limit` bytes, and any
+  /// `.tmp` copy over an hour old (left by a process killed while storing).
   void trim(std::uintmax_t limit = kFrameCacheLimit) const;
 
   const std::string& store_dir() const { return store_; }

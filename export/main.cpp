@@ -118,6 +118,7 @@ int run(const bsim::ExportOptions& options) {
               << "\n";
     return 1;
   }
+  if (options.quiet) return 0;  // --quiet: success is the exit status alone
   if (!options.events_only && !options.no_render)
     std::cerr << "wrote " << dir << "/movie.mp4 (" << summary.frames_rendered << " frames rendered, "
               << summary.frames_reused << " reused)\n";

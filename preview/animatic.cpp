@@ -146,7 +146,7 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
     std::cerr << "billiards-preview: error: " << (error.empty() ? "ffmpeg could not write " + target : error) << "\n";
     return 1;
   }
-  std::cerr << "wrote " << target << " (" << frames << " frames at " << fps << " fps)\n";
+  if (!options.quiet) std::cerr << "wrote " << target << " (" << frames << " frames at " << fps << " fps)\n";
   return 0;
 }
 

@@ -32,7 +32,7 @@ options:
   --overlay LIST         draw extras, comma-separated: paths, events, camera, table
                          (the rails', pockets' and balls' numbers) (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
-  --quiet                print no progress lines (errors and warnings still print)
+  --quiet                print no progress or closing lines (errors and warnings still print)
   --quit-after SECONDS   interactive: close the window after this long (default: stay open)
   --screenshot FILE.png  interactive: save the last frame shown when the window closes
   -h, --help             show this help and exit

@@ -80,7 +80,7 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
       std::cerr << "billiards-preview: error: " << error << "\n";
       return 1;
     }
-    if (named_here) std::cerr << "wrote " << options.pictures[i] << "\n";
+    if (named_here && !options.quiet) std::cerr << "wrote " << options.pictures[i] << "\n";
   }
   return 0;
 }

@@ -103,6 +103,7 @@ TEST_SUITE("progress runs") {
     CHECK_MESSAGE(!mentions_progress(r.err), r.err);
     CHECK(r.err.find("rendering") == std::string::npos);
     CHECK(r.err.find("encoding") == std::string::npos);
+    CHECK_MESSAGE(r.err.find("wrote") == std::string::npos, r.err);  // success is the exit status alone
     CHECK(fs::exists(dir.path / "quiet" / "movie.mp4"));
   }
 
@@ -133,6 +134,7 @@ TEST_SUITE("progress runs") {
     CHECK_MESSAGE(std::regex_search(r.err, std::regex("warned\\.scn:[0-9]+:[0-9]+: warning: ")), r.err);
     CHECK_MESSAGE(!mentions_progress(r.err), r.err);
     CHECK(r.err.find("animatic:") == std::string::npos);
+    CHECK_MESSAGE(r.err.find("wrote") == std::string::npos, r.err);
     CHECK(fs::exists(movie));
   }
 }
