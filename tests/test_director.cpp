@@ -112,8 +112,15 @@ void check_shot(const std::string& name, const Scene& scene) {
   // leaves the old description and where it arrives at the new one are on one side of the new
   // description's line (or on the line).
   REQUIRE(script.lines.size() == script.shots.size());
+  REQUIRE(script.subjects.size() == script.shots.size());
   for (const CameraWindow& w : camera.windows()) {
     const LineOfAction& line = script.lines[static_cast<std::size_t>(w.shot)];
+    // The line runs through the description's subject at its key, level.
+    const int subject = script.subjects[static_cast<std::size_t>(w.shot)];
+    REQUIRE(subject >= 0);
+    CHECK((line.point - timeline.motion_state(subject, w.event_time).position).norm() < 1e-3);
+    CHECK(std::abs(line.direction.norm() - 1) < 1e-9);
+    CHECK(line.direction.z() == 0);
     const double a = line.side(camera.pose(w.begin).location), b = line.side(camera.pose(w.end).location);
     CHECK_MESSAGE(!((a > 0.05 && b < -0.05) || (a < -0.05 && b > 0.05)), "crosses the line into description ", w.shot);
   }
@@ -211,6 +218,20 @@ TEST_SUITE("director") {
     CHECK(script.shots[1].mode != CameraMode::hover);
     CHECK(script.shots[2].key.text == "pocket 5");
     CHECK(script.shots[2].mode == CameraMode::hover);
+  }
+
+  TEST_CASE("README shows the script the director writes for the break") {
+    const std::string readme = test::require_file(test::source_path("README.md"));
+    const std::string lead = "The first prints the break's script:\n\n```\n";
+    const auto begin = readme.find(lead);
+    REQUIRE(begin != std::string::npos);
+    const auto end = readme.find("```", begin + lead.size());
+    REQUIRE(end != std::string::npos);
+    const std::string shown = readme.substr(begin + lead.size(), end - begin - lead.size());
+    const ParseResult parsed = parse_scene(test::require_file(test::source_path("scenes/break.scn")), "break");
+    REQUIRE(parsed.scene);
+    const Timeline timeline = simulate(*parsed.scene);
+    CHECK(shown == camera_script_text(direct_camera(*parsed.scene, timeline), "break"));
   }
 
   TEST_CASE("the script's text parses back to the same descriptions") {
