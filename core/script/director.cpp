@@ -238,22 +238,30 @@ class Director {
     return v;
   }
 
-  /// The first candidate (in order) that is good, else the usable one that misses the targets least,
-  /// with the window fraction (`post` of description `slot`) that keeps it within the speed bound.
-  /// Candidates are complete descriptions but for their key and windows, copied from `slot`'s.
-  std::optional<CameraShot> choose(std::vector<CameraShot> shots, const std::vector<LineOfAction>& lines, int slot,
-                                   const std::vector<CameraShot>& candidates, double limit) const {
+  struct Timing {
+    double pre = 0, post = 0;
+  };
+  struct Choice {
+    CameraShot shot;
+    double shortfall = 0;  ///< 0: it meets every target
+  };
+
+  /// The first candidate (in order) that is good with one of the timings (tried in order), else the
+  /// usable one that misses the targets least. Candidates are complete descriptions but for their key
+  /// and windows: the key is `slot`'s, the windows the timing's.
+  std::optional<Choice> choose(std::vector<CameraShot> shots, const std::vector<LineOfAction>& lines, int slot,
+                               const std::vector<CameraShot>& candidates, const std::vector<Timing>& timings,
+                               double limit) const {
     const auto s = static_cast<std::size_t>(slot);
-    std::optional<CameraShot> best;
-    double best_shortfall = std::numeric_limits<double>::infinity();
+    std::optional<Choice> best;
     int tries = 0;
     for (const CameraShot& candidate : candidates) {
       if (++tries > kMaxTries) break;
-      for (double post : {0.35, 0.5, 0.65, 0.8, 0.95}) {
+      for (const Timing& timing : timings) {
         CameraShot shot = candidate;
         shot.key = shots[s].key;
-        shot.pre = shots[s].pre;
-        shot.post = post;
+        shot.pre = timing.pre;
+        shot.post = timing.post;
         shots[s] = shot;
         // The descriptions after it hold the same camera until they are placed.
         for (std::size_t k = s + 1; k < shots.size(); ++k) {
@@ -264,15 +272,26 @@ class Director {
           shots[k].post = 0;
         }
         const Verdict v = evaluate(shots, lines, limit);
-        if (!v.ok) break;  // a later window will not make it clear
-        if (v.good()) return shot;
-        if (v.usable() && v.shortfall < best_shortfall) {
-          best_shortfall = v.shortfall;
-          best = shot;
-        }
+        if (!v.ok) break;  // another window will hardly make it clear
+        if (v.good()) return Choice{shot, 0.0};
+        if (v.usable() && (!best || v.shortfall < best->shortfall)) best = Choice{shot, v.shortfall};
       }
     }
     return best;
+  }
+
+  /// choose() with the usual timings first, then, if nothing meets every target, with `early` ones
+  /// (blends that start sooner); the better of the two.
+  std::optional<CameraShot> choose_timed(const std::vector<CameraShot>& shots, const std::vector<LineOfAction>& lines,
+                                         int slot, const std::vector<CameraShot>& candidates,
+                                         const std::vector<Timing>& usual, const std::vector<Timing>& early,
+                                         double limit) const {
+    std::optional<Choice> first = choose(shots, lines, slot, candidates, usual, limit);
+    if (first && first->shortfall <= 0) return first->shot;
+    std::optional<Choice> second = early.empty() ? std::nullopt : choose(shots, lines, slot, candidates, early, limit);
+    if (second && (!first || second->shortfall < first->shortfall)) return second->shot;
+    if (first) return first->shot;
+    return std::nullopt;
   }
 
   const Scene& scene_;
@@ -497,7 +516,15 @@ DirectedCamera Director::run() {
     std::stable_sort(options.begin(), options.end(), [](const Option& x, const Option& y) { return x.cost < y.cost; });
     std::vector<CameraShot> candidates;
     for (const Option& o : options) candidates.push_back(o.shot);
-    if (const std::optional<CameraShot> chosen = choose(shots, lines, 1, candidates, t1)) {
+    // Usually the blend starts as the stick strikes; when the camera would have to hurry after a fast
+    // ball, it starts a little earlier, while the ball still rests, and arrives soon after the key...
+    std::vector<Timing> usual, early;
+    for (double post : {0.35, 0.5, 0.65, 0.8, 0.95}) usual.push_back({shots[1].pre, post});
+    // ... but never before the stick's forward stroke, so that the strike is always seen from behind.
+    const double early_pre = hundredths(std::min(0.9, (t0 - (cue_time - 0.1)) / t0));
+    if (early_pre > shots[1].pre)
+      for (double post : {0.1, 0.2, 0.35}) early.push_back({early_pre, post});
+    if (const std::optional<CameraShot> chosen = choose_timed(shots, lines, 1, candidates, usual, early, t1)) {
       shots[1] = *chosen;
       for (std::size_t k = 2; k < shots.size(); ++k) {
         const CameraKey key = shots[k].key;
@@ -507,16 +534,24 @@ DirectedCamera Director::run() {
         shots[k].post = 0;
       }
     } else {
-      // Nothing fits: the shooter's view holds to the end.
-      shots.resize(1);
-      lines.resize(1);
-      subjects.resize(1);
+      // Nothing fits: the shooter's view holds until the wide shot (or to the end).
+      shots.erase(shots.begin() + 1);
+      lines.erase(lines.begin() + 1);
+      subjects.erase(subjects.begin() + 1);
+      for (std::size_t k = 1; k < shots.size(); ++k) {
+        const CameraKey key = shots[k].key;
+        shots[k] = shots[0];
+        shots[k].key = key;
+      }
     }
   }
 
   // 3. Wide: the whole table from where the camera is, as the balls settle.
-  if (shots.size() > 2) {
+  const int last = static_cast<int>(shots.size()) - 1;
+  const auto w = static_cast<std::size_t>(last);
+  if (wide_key && last >= 1 && shots[w].key.text == wide_key->key.text) {
     const double t0 = *wide_time;
+    const double since = t0 - (last >= 2 ? *subject_time : 0.0);
     const TableRect n = layout_.noses;
     const Vec3 centre(mm(0.5 * (n.x0 + n.x1)), mm(0.5 * (n.y0 + n.y1)), 0);
     // The cloth to its cushions' noses, whole.
@@ -526,8 +561,8 @@ DirectedCamera Director::run() {
     copy.camera = shots;
     std::vector<Diagnostic> ignored;
     const std::optional<CameraScript> so_far = CameraScript::build(copy, timeline_, ignored);
-    const Vec3 previous = so_far ? so_far->pose(t0).location : shots[1].location;
-    const LineOfAction& line = lines[2];
+    const Vec3 previous = so_far ? so_far->pose(t0).location : shots[w - 1].location;
+    const LineOfAction& line = lines[w];
     const double side = line.side(previous);
     const double wanted = std::abs(side) > kOnLine ? (side > 0 ? 1.0 : -1.0) : 0.0;
     struct Option {
@@ -556,12 +591,16 @@ DirectedCamera Director::run() {
     std::stable_sort(options.begin(), options.end(), [](const Option& x, const Option& y) { return x.cost < y.cost; });
     std::vector<CameraShot> candidates;
     for (const Option& o : options) candidates.push_back(o.shot);
-    if (const std::optional<CameraShot> chosen = choose(shots, lines, 2, candidates, duration)) {
-      shots[2] = *chosen;
+    std::vector<Timing> usual, early;
+    for (double post : {0.35, 0.5, 0.65, 0.8, 0.95}) usual.push_back({0.0, post});
+    for (double lead : {0.4, 0.8})
+      for (double post : {0.35, 0.65, 0.95}) early.push_back({hundredths(std::min(0.5, lead / since)), post});
+    if (const std::optional<CameraShot> chosen = choose_timed(shots, lines, last, candidates, usual, early, duration)) {
+      shots[w] = *chosen;
     } else {
-      shots.resize(2);
-      lines.resize(2);
-      subjects.resize(2);
+      shots.resize(w);
+      lines.resize(w);
+      subjects.resize(w);
     }
   }
 
@@ -575,7 +614,7 @@ DirectedCamera Director::run() {
     if (k == 0) {
       comment = "the approach and the stroke from behind and above " + ball_name(scene_, c);
       if (first_object >= 0) comment += ", into " + ball_name(scene_, first_object);
-    } else if (k == 1) {
+    } else if (s.mode != CameraMode::hover) {
       const bool drops = std::isfinite(drop_time_[static_cast<std::size_t>(subject)]);
       const std::string what = drops ? "" : (subject == c ? "" : ", the fastest ball,");
       comment = (s.mode == CameraMode::follow ? "walk behind " : "watch ") + ball_name(scene_, subject) + what +
