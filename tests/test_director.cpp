@@ -220,6 +220,26 @@ TEST_SUITE("director") {
     CHECK(script.shots[2].mode == CameraMode::hover);
   }
 
+  TEST_CASE("the director writes a script that fits any shot: a crowded odd table, a lone ball, a ball at rest") {
+    Scene lone = scenes::standard_table();
+    lone.balls.push_back(scenes::ball_at(0, 0, 0, lone.physics, Vec3(1, 0.5, 0)));
+    Scene still = scenes::standard_table();
+    still.balls.push_back(scenes::ball_at(0, -0.5, 0.2, still.physics));
+    still.balls.push_back(scenes::ball_at(1, 0.5, 0.2, still.physics));
+    for (const Scene& scene :
+         {scenes::stress_table(40, 3), lone, still, scenes::tight_break(), scenes::two_ball_shot()}) {
+      Scene copy = scene;
+      const Timeline timeline = simulate(copy);
+      const DirectedCamera script = direct_camera(copy, timeline);
+      REQUIRE(!script.shots.empty());
+      CHECK(script.shots.front().key.text == "start");
+      copy.camera = script.shots;
+      std::vector<Diagnostic> diagnostics;
+      CHECK(CameraScript::build(copy, timeline, diagnostics));
+      CHECK(diagnostics.empty());
+    }
+  }
+
   TEST_CASE("README shows the script the director writes for the break") {
     const std::string readme = test::require_file(test::source_path("README.md"));
     const std::string lead = "The first prints the break's script:\n\n```\n";
@@ -307,6 +327,13 @@ TEST_SUITE("director") {
     CHECK(written.err == "wrote " + file + "\n");
     CHECK(test::require_file(file) == out.out);
     CHECK(test::leftovers(tmp.path).empty());
+    // With a picture: the script first, then the timeline of the director's camera.
+    const std::string both = (tmp.path / "both.txt").string(), picture = (tmp.path / "timeline.png").string();
+    const test::CommandResult timeline =
+        test::run_command(preview + " --write-camera " + quoted(both) + " --timeline -o " + quoted(picture));
+    CHECK_MESSAGE(timeline.exit_code == 0, timeline.err);
+    CHECK(test::require_file(both) == out.out);
+    CHECK(fs::file_size(picture) > 1000);
     const test::CommandResult clash = test::run_command(preview + " --camera scene --write-camera -");
     CHECK(clash.exit_code == 2);
     const test::CommandResult nowhere =
