@@ -1,10 +1,11 @@
 #include "shot.h"
 
 #include "camera_clearance.h"
+#include "director.h"
 
 namespace bsim {
 
-ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options) {
+ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options, CameraChoice camera) {
   ShotResult result;
   ParseResult parsed = parse_scene(text, name, options);
   result.diagnostics = std::move(parsed.diagnostics);
@@ -13,6 +14,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
   shot->timeline = simulate(shot->scene);
+  if (camera == CameraChoice::automatic) shot->scene.camera = direct_camera(shot->scene, shot->timeline).shots;
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
   if (!shot->camera || has_errors(result.diagnostics)) {
     shot->camera.reset();

@@ -39,7 +39,14 @@ struct ShotResult {
   std::vector<Diagnostic> diagnostics;  ///< parse and post-simulation errors and warnings
 };
 
-/// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics.
-ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options = {});
+/// Whose camera script a shot is filmed with: the scene's own (`--camera scene`, the default) or the
+/// automatic director's, written from the simulated shot in place of the scene's (`--camera auto`).
+enum class CameraChoice { scene, automatic };
+
+/// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics. With
+/// CameraChoice::automatic the scene's camera script is replaced by direct_camera()'s (its own is
+/// parsed but never checked against the shot).
+ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options = {},
+                     CameraChoice camera = CameraChoice::scene);
 
 }  // namespace bsim

@@ -23,6 +23,8 @@ options:
   --music FILE           a music file mixed under the sound track (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
   --quiet                print no progress or closing lines (errors and warnings still print)
+  --camera auto|scene    auto: film with the automatic director's camera script instead of the
+                         scene's own (default: scene)
   -h, --help             show this help and exit
   --version              show the version and exit
 

@@ -86,7 +86,9 @@ int run(const bsim::ExportOptions& options) {
     shown_path = "<built-in break.scn>";
   }
 
-  bsim::ShotResult loaded = bsim::load_shot(text, name, {.strict = options.strict});
+  bsim::ShotResult loaded =
+      bsim::load_shot(text, name, {.strict = options.strict},
+                      options.auto_camera ? bsim::CameraChoice::automatic : bsim::CameraChoice::scene);
   for (const bsim::Diagnostic& d : loaded.diagnostics) std::cerr << bsim::format_diagnostic(d, shown_path) << "\n";
   if (!loaded.shot) return 1;
   const bsim::Shot& shot = *loaded.shot;

@@ -112,8 +112,8 @@ bool write_run_summary(const RunSummary& s, const ExportOptions& o, const std::s
       << "  \"options\": {\"fps\": " << o.fps << ", \"size\": \"" << o.width << "x" << o.height << "\", \"quality\": \""
       << (o.quality == Quality::final ? "final" : "draft") << "\", \"jobs\": " << o.jobs
       << ", \"audio_lead\": " << o.audio_lead << ", \"music\": " << json_string(o.music_path)
-      << ", \"strict\": " << (o.strict ? "true" : "false") << ", \"no_render\": " << (o.no_render ? "true" : "false")
-      << "},\n"
+      << ", \"strict\": " << (o.strict ? "true" : "false") << ", \"camera\": \"" << (o.auto_camera ? "auto" : "scene")
+      << "\", \"no_render\": " << (o.no_render ? "true" : "false") << "},\n"
       << "  \"frames\": {\"total\": " << s.frames_total << ", \"rendered\": " << s.frames_rendered
       << ", \"reused\": " << s.frames_reused << "},\n"
       << "  \"seconds\": {\"simulating\": " << seconds(s.simulating) << ", \"writing\": " << seconds(s.writing)

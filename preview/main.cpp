@@ -7,6 +7,7 @@
 #include "preview_options.h"
 #include "script_as_written.h"
 #include "shot_source.h"
+#include "write_camera.h"
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -17,8 +18,10 @@ int main(int argc, char** argv) {
     case bsim::PreviewCommandLineOutcome::exit_usage: std::cerr << "billiards-preview: " << message << "\n"; return 2;
     case bsim::PreviewCommandLineOutcome::run: break;
   }
-  const bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
-  if (options.at.empty() && !options.timeline && !options.movie) return bsim::run_window(options, source);
+  bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
+  source.auto_camera = options.auto_camera;
+  const bool pictures = !options.at.empty() || options.timeline || options.movie;
+  if (!pictures && !options.write_camera) return bsim::run_window(options, source);
 
   const bsim::LoadedShot loaded = bsim::load_source(source);
   for (const std::string& line : loaded.messages) std::cerr << line << "\n";
@@ -29,7 +32,15 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!loaded.shot) return 1;
+  if (options.write_camera) {
+    const int status = bsim::run_write_camera(*options.write_camera, *loaded.shot);
+    if (status != 0 || !pictures) return status;
+  }
   if (!options.at.empty()) return bsim::run_snapshot(options, *loaded.shot);
-  if (options.timeline) return bsim::run_timeline_picture(options, bsim::timeline_data(*loaded.shot));
+  if (options.timeline) {
+    bsim::TimelineData data = bsim::timeline_data(*loaded.shot);
+    if (options.auto_camera) data.title += "  \xE2\x80\x94  camera: the automatic director";
+    return bsim::run_timeline_picture(options, data);
+  }
   return bsim::run_animatic(options, *loaded.shot);
 }

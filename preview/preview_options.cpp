@@ -33,6 +33,10 @@ options:
                          (the rails', pockets' and balls' numbers) (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
   --quiet                print no progress or closing lines (errors and warnings still print)
+  --camera auto|scene    auto: film with the automatic director's camera script instead of the
+                         scene's own (default: scene)
+  --write-camera FILE    write the automatic director's camera script as scene text (camera ...
+                         endcamera) to FILE, or to standard output for -; implies --camera auto
   --quit-after SECONDS   interactive: close the window after this long (default: stay open)
   --screenshot FILE.png  interactive: save the last frame shown when the window closes
   -h, --help             show this help and exit
@@ -82,8 +86,8 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     return false;
   };
   if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  static const std::vector<std::string_view> kWithValue = {"--at",      "-o",           "--output",    "--movie",
-                                                           "--overlay", "--quit-after", "--screenshot"};
+  static const std::vector<std::string_view> kWithValue = {
+      "--at", "-o", "--output", "--movie", "--overlay", "--quit-after", "--screenshot", "--write-camera"};
   if (std::find(kWithValue.begin(), kWithValue.end(), name) == kWithValue.end()) {
     std::vector<std::string_view> own = kWithValue;
     own.push_back("--timeline");
@@ -108,6 +112,9 @@ bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
     const auto seconds = parse_real_option(*v);
     if (!seconds || *seconds <= 0) return bad(*v, "seconds greater than 0");
     o.quit_after = *seconds;
+  } else if (name == "--write-camera") {
+    if (v->empty()) return bad(*v, "a file, or - for standard output");
+    o.write_camera = *v;
   } else {  // --screenshot
     if (v->empty()) return bad(*v, "a file");
     o.screenshot = *v;
@@ -170,6 +177,7 @@ bool name_pictures(PreviewOptions& o, std::string& message) {
 
 /// Options that only make sense together (or apart), and the extensions of the files they write.
 bool check_combination(PreviewOptions& o, std::string& message) {
+  if (o.write_camera && !o.camera_given) o.auto_camera = true;  // the script written is the one filmed
   const bool at = !o.at.empty();
   if (at && o.timeline)
     message = "--at and --timeline each write one picture; give only one";
@@ -179,7 +187,9 @@ bool check_combination(PreviewOptions& o, std::string& message) {
     message = std::string(at ? "--at" : "--timeline") + " needs -o FILE.png";
   else if (o.output && !at && !o.timeline)
     message = "-o names the picture of --at or --timeline; give one of them";
-  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie))
+  else if (o.write_camera && o.camera_given && !o.auto_camera)
+    message = "--write-camera writes the automatic director's script, which --camera scene turns off";
+  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
   else if (o.movie && !has_extension(*o.movie, ".mp4"))
     message = bad_value_message("--movie", *o.movie, "a file name ending in .mp4");

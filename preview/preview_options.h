@@ -35,8 +35,9 @@ struct PreviewOptions : SharedOptions {
   bool timeline = false;                   ///< --timeline
   std::optional<std::string> movie;        ///< --movie FILE.mp4 (the animatic)
   PreviewOverlays overlays;
-  double quit_after = 0;                  ///< s; > 0 closes the interactive window by itself (smoke tests)
-  std::optional<std::string> screenshot;  ///< interactive: write the last frame here on quit
+  double quit_after = 0;                    ///< s; > 0 closes the interactive window by itself (smoke tests)
+  std::optional<std::string> screenshot;    ///< interactive: write the last frame here on quit
+  std::optional<std::string> write_camera;  ///< --write-camera FILE: the director's script as text ("-": stdout)
 };
 
 enum class PreviewCommandLineOutcome { run, exit_success, exit_usage };

@@ -34,7 +34,8 @@ LoadedShot load_source(const SceneSource& source) {
   } else {
     text = std::string(builtin_scene_text());
   }
-  ShotResult result = load_shot(text, source.name, {.strict = source.strict});
+  ShotResult result = load_shot(text, source.name, {.strict = source.strict},
+                                source.auto_camera ? CameraChoice::automatic : CameraChoice::scene);
   loaded.shot = std::move(result.shot);
   loaded.unscripted = std::move(result.unscripted);
   loaded.diagnostics = std::move(result.diagnostics);

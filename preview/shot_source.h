@@ -15,6 +15,7 @@ struct SceneSource {
   std::string shown_path;           ///< how diagnostics name it
   std::string name;                 ///< Scene::name
   bool strict = false;
+  bool auto_camera = false;  ///< --camera auto: film with the automatic director's script
 };
 
 SceneSource scene_source(const std::optional<std::string>& path, bool strict);

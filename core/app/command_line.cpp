@@ -76,7 +76,7 @@ std::string bad_value_message(std::string_view name, std::string_view text, std:
 }
 
 std::string unknown_option_message(std::string_view name, const std::vector<std::string_view>& own) {
-  std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--quiet", "--help", "--version"};
+  std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--quiet", "--camera", "--help", "--version"};
   known.insert(known.end(), own.begin(), own.end());
   return "unknown option '" + std::string(name) + "'" + did_you_mean(name, known) + " (see --help)";
 }
@@ -88,9 +88,18 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::strin
     (name == "--strict" ? o.strict : o.quiet) = true;
     return SharedOption::applied;
   }
-  if (name != "--fps" && name != "--size") return SharedOption::not_shared;
+  if (name != "--fps" && name != "--size" && name != "--camera") return SharedOption::not_shared;
   const auto v = reader.value(message);
   if (!v) return SharedOption::bad;
+  if (name == "--camera") {
+    if (*v != "scene" && *v != "auto") {
+      message = bad_value_message(name, *v, "auto (the automatic director's script) or scene (the scene's own)");
+      return SharedOption::bad;
+    }
+    o.auto_camera = *v == "auto";
+    o.camera_given = true;
+    return SharedOption::applied;
+  }
   if (name == "--fps") {
     const auto fps = parse_int_option(*v, 1, kMaxFps);
     if (!fps) {

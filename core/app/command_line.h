@@ -53,14 +53,17 @@ struct SharedOptions {
   int fps = 30;      ///< --fps N: frames per second of the movie or the animatic
   int width = 1280;  ///< --size WxH: pixels
   int height = 720;
-  bool size_given = false;  ///< --size was given
-  bool strict = false;      ///< --strict: accept only the original scene language
-  bool quiet = false;       ///< --quiet: no progress lines (errors and warnings still print)
+  bool size_given = false;    ///< --size was given
+  bool strict = false;        ///< --strict: accept only the original scene language
+  bool quiet = false;         ///< --quiet: no progress lines (errors and warnings still print)
+  bool auto_camera = false;   ///< --camera auto: the automatic director's script replaces the scene's
+  bool camera_given = false;  ///< --camera was given (scene or auto)
 };
 
 enum class SharedOption { not_shared, applied, bad };
 
-/// Applies the reader's current option when it is one of the shared ones (--fps, --size, --strict, --quiet):
+/// Applies the reader's current option when it is one of the shared ones (--fps, --size, --strict, --quiet,
+/// --camera):
 /// `applied`, or `bad` with `message` set; `not_shared` leaves it to the program.
 SharedOption apply_shared_option(ArgReader& reader, SharedOptions& options, std::string& message);
 

@@ -1,0 +1,55 @@
+#pragma once
+// The automatic director: a camera script written from the simulated shot, the way broadcast pool
+// is shot, as the same descriptions the parser makes (so it runs through CameraScript, the
+// clearance checks, camera.csv and every picture unchanged) and as scene text to paste and edit.
+#include <string>
+#include <vector>
+
+#include "camera_script.h"
+#include "scene.h"
+#include "timeline.h"
+
+namespace bsim {
+
+/// m/s the camera's location may move at most: one operator carrying it round the table. The
+/// fastest walk of adults in their twenties is about 2.5 m/s (Bohannon, "Comfortable and maximum
+/// walking speed of adults aged 20-79 years", Age and Ageing 26, 1997: 2.53 m/s for men, 2.47 m/s
+/// for women); a Steadicam operator walks, so that is the bound. The director plans below 85 % of it.
+inline constexpr double kCameraCarrySpeed = 2.5;
+/// m the director keeps its camera from every ball's surface (so from the centre: radius + this),
+/// more than the clearance warnings' room for the lens (kCameraBallClearance).
+inline constexpr double kDirectorBallRoom = 0.15;
+/// s, the shortest span of a description (its key to the next one's, or to the end).
+inline constexpr double kMinDescriptionSeconds = 1.0;
+/// The picture's width over its height the director frames for: 16:9, as the movie and the preview.
+inline constexpr double kPictureAspect = 16.0 / 9.0;
+
+/// The line the action runs along at a description's key (horizontal): the 180-degree rule keeps
+/// the camera on one side of it across the change to that description.
+struct LineOfAction {
+  Vec3 point{0, 0, 0};      ///< m
+  Vec3 direction{1, 0, 0};  ///< unit, horizontal
+  /// m, the signed distance of `p` from the line seen from above: > 0 on its left.
+  double side(const Vec3& p) const;
+};
+
+struct DirectedCamera {
+  std::vector<CameraShot> shots;      ///< as the parser would make them from text() (no source locations)
+  std::vector<std::string> comments;  ///< one line per description: what it shows
+  std::vector<LineOfAction> lines;    ///< per description: the line of action at its key
+  std::vector<int> subjects;          ///< per description: the ball it is about
+};
+
+/// Writes the camera script for the simulated shot. Deterministic: the same scene and timeline give
+/// the same script, to the bit.
+DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline);
+
+/// The script as scene text: "camera", one `event KEY PRE POST MODE ...  # comment` line per
+/// description, "endcamera"; it parses back to `camera.shots` exactly.
+std::string camera_script_text(const DirectedCamera& camera, const std::string& scene_name);
+
+/// Whether `point` is inside the picture (16:9, kCameraFovDeg across) of a camera in `pose`, at least
+/// `margin` of the picture's width and height inside its edges, and in front of the camera.
+bool in_picture(const CameraPose& pose, const Vec3& point, double margin);
+
+}  // namespace bsim

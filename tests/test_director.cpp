@@ -1,0 +1,353 @@
+// The automatic director: its script, filmed with the real camera (CameraScript::pose) and judged
+// with the preview's own projection, over every shipped scene and 50 seeded random breaks. Physics
+// and camera only: nothing is rendered.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench/random_scenes.h"
+#include "builtin_scene.h"
+#include "camera_clearance.h"
+#include "director.h"
+#include "files.h"
+#include "scene_parse.h"
+#include "shot.h"
+#include "support.h"
+#include "table.h"
+#include "view.h"
+
+using namespace bsim;
+using bsim::test::quoted;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The share of a picture's width and height a watched ball's centre keeps inside its edges.
+constexpr double kMargin = 0.02;
+/// Hz at which the camera's speed is measured (and every blend's ends besides).
+constexpr double kSpeedHz = 240.0;
+/// Hz at which the picture is judged.
+constexpr double kPictureHz = 60.0;
+
+struct Named {
+  std::string name;
+  Scene scene;
+};
+
+/// Every scene in scenes/ (parsed; their own cameras are replaced) and 50 seeded random breaks.
+std::vector<Named> all_scenes() {
+  std::vector<Named> out;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(test::source_path("scenes")))
+    if (entry.path().extension() == ".scn") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files) {
+    ParseResult parsed = parse_scene(test::require_file(file), file.stem().string());
+    REQUIRE(parsed.scene);
+    out.push_back({file.filename().string(), *parsed.scene});
+  }
+  for (std::uint64_t seed = 1; seed <= 50; ++seed)
+    out.push_back({"random break " + std::to_string(seed), scenes::random_break(seed)});
+  return out;
+}
+
+/// The shot filmed by the director, built as load_shot builds it.
+std::unique_ptr<Shot> directed(const Scene& scene, DirectedCamera* script = nullptr) {
+  auto shot = std::make_unique<Shot>();
+  shot->scene = scene;
+  shot->timeline = simulate(shot->scene);
+  const DirectedCamera camera = direct_camera(shot->scene, shot->timeline);
+  shot->scene.camera = camera.shots;
+  if (script) *script = camera;
+  std::vector<Diagnostic> diagnostics;
+  shot->camera = CameraScript::build(shot->scene, shot->timeline, diagnostics);
+  REQUIRE(shot->camera);
+  check_camera_clearance(shot->scene, shot->timeline, *shot->camera, diagnostics);
+  for (const Diagnostic& d : diagnostics) CHECK_MESSAGE(false, format_diagnostic(d, shot->scene.name));
+  return shot;
+}
+
+/// Whether the ball is travelling: moving on the table, not yet dropping into a pocket.
+bool moving(const Timeline& timeline, int ball, double t, double drop) {
+  const BallState s = timeline.motion_state(ball, t);
+  const double speed = std::hypot(s.velocity.x(), s.velocity.y());
+  return speed > 1e-3 && s.motion != Motion::falling && s.motion != Motion::pocketed && t < drop;
+}
+
+/// Whether `point` is in the picture the preview and POV-Ray draw at t (16:9, kCameraFovDeg).
+bool in_frame(const Shot& shot, double t, const Vec3& point) {
+  const ViewCamera view = scripted_view(shot, t);
+  const Eigen::Matrix4f vp = projection_matrix(view, 16.0 / 9.0) * view_matrix(view);
+  double x = 0, y = 0;
+  const double w = 1280, h = 720;
+  if (!project_to_pixels(vp, point, w, h, x, y)) return false;
+  return x >= kMargin * w && x <= (1 - kMargin) * w && y >= kMargin * h && y <= (1 - kMargin) * h;
+}
+
+/// Every check of the director's script for one shot.
+void check_shot(const std::string& name, const Scene& scene) {
+  CAPTURE(name);
+  DirectedCamera script;
+  const std::unique_ptr<Shot> shot = directed(scene, &script);
+  const Timeline& timeline = shot->timeline;
+  const CameraScript& camera = *shot->camera;
+  const double duration = timeline.duration();
+  const double radius = shot->scene.physics.ball_radius;
+  const TableLayout layout = table_layout(shot->scene);
+
+  // No description shorter than about a second; every change a blend, none a cut.
+  REQUIRE(!camera.segments().empty());
+  for (const CameraSegment& s : camera.segments()) {
+    const double begin = s.shot == 0 ? 0.0 : s.begin;
+    CHECK(s.end - begin >= kMinDescriptionSeconds - 1e-9);
+  }
+  for (const CameraWindow& w : camera.windows()) CHECK(w.end - w.begin >= 0.3);
+
+  // Never across the line of action from one description to the next: the camera where the blend
+  // leaves the old description and where it arrives at the new one are on one side of the new
+  // description's line (or on the line).
+  REQUIRE(script.lines.size() == script.shots.size());
+  REQUIRE(script.subjects.size() == script.shots.size());
+  for (const CameraWindow& w : camera.windows()) {
+    const LineOfAction& line = script.lines[static_cast<std::size_t>(w.shot)];
+    // The line runs through the description's subject at its key, level.
+    const int subject = script.subjects[static_cast<std::size_t>(w.shot)];
+    REQUIRE(subject >= 0);
+    CHECK((line.point - timeline.motion_state(subject, w.event_time).position).norm() < 1e-3);
+    CHECK(std::abs(line.direction.norm() - 1) < 1e-9);
+    CHECK(line.direction.z() == 0);
+    const double a = line.side(camera.pose(w.begin).location), b = line.side(camera.pose(w.end).location);
+    CHECK_MESSAGE(!((a > 0.05 && b < -0.05) || (a < -0.05 && b > 0.05)), "crosses the line into description ", w.shot);
+  }
+
+  // Speed, clearance and the room, sampled finely, with every blend's ends.
+  std::vector<double> times;
+  for (int k = 0; k / kSpeedHz <= duration; ++k) times.push_back(k / kSpeedHz);
+  for (const CameraWindow& w : camera.windows()) {
+    times.push_back(w.begin);
+    times.push_back(w.end);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  double fastest = 0, nearest = std::numeric_limits<double>::infinity(), lowest_over_table = 10, lowest = 10;
+  Vec3 previous = camera.pose(0).location;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double t = times[i];
+    const Vec3 p = camera.pose(t).location;
+    if (i > 0 && t > times[i - 1] + 1e-6) fastest = std::max(fastest, (p - previous).norm() / (t - times[i - 1]));
+    previous = p;
+    for (int b = 0; b < timeline.ball_count(); ++b) {
+      const Vec3 centre = timeline.motion_state(b, t).position;
+      if (centre.z() >= -radius) nearest = std::min(nearest, (p - centre).norm());
+    }
+    const TableRect& r = layout.wood_outer;
+    if (p.x() >= r.x0 && p.x() <= r.x1 && p.y() >= r.y0 && p.y() <= r.y1)
+      lowest_over_table = std::min(lowest_over_table, p.z());
+    lowest = std::min(lowest, p.z());
+  }
+  CHECK(fastest <= kCameraCarrySpeed);
+  CHECK(nearest >= radius + kDirectorBallRoom);
+  CHECK(lowest_over_table > layout.rail_top);
+  CHECK(lowest > layout.rail_top);  // nowhere below the rails' top, over the table or beside it
+
+  // The balls that matter in the picture while they move.
+  std::vector<double> drop(static_cast<std::size_t>(timeline.ball_count()), std::numeric_limits<double>::infinity());
+  for (const PocketDrop& d : timeline.pocket_drops())
+    drop[static_cast<std::size_t>(d.ball)] = std::min(drop[static_cast<std::size_t>(d.ball)], d.time);
+  for (int b = 0; b < timeline.ball_count(); ++b) {
+    const double dropped = drop[static_cast<std::size_t>(b)];
+    const bool pocketed = std::isfinite(dropped);
+    if (!pocketed && b != shot->scene.cue.target) continue;
+    int travelling = 0, seen = 0;
+    for (int k = 0; k / kPictureHz <= duration; ++k) {
+      const double t = k / kPictureHz;
+      if (!moving(timeline, b, t, dropped)) continue;
+      ++travelling;
+      if (in_frame(*shot, t, timeline.motion_state(b, t).position)) ++seen;
+    }
+    if (travelling == 0) continue;
+    const double share = double(seen) / travelling;
+    CAPTURE(b);
+    CAPTURE(share);
+    CHECK(share >= (pocketed ? 0.8 : 0.6));
+  }
+}
+
+/// The scene's text with its camera block replaced by `camera` (or appended when it has none).
+std::string with_camera(const std::string& text, const std::string& camera) {
+  const auto begin = text.find("\ncamera\n");
+  const auto end = text.find("endcamera\n");
+  if (begin == std::string::npos || end == std::string::npos) return text + camera;
+  return text.substr(0, begin + 1) + camera + text.substr(end + std::string("endcamera\n").size());
+}
+
+bool same_shot(const CameraShot& a, const CameraShot& b) {
+  return a.event == b.event && a.key.kind == b.key.kind && a.key.ordinal == b.key.ordinal && a.key.a == b.key.a &&
+         a.key.b == b.key.b && a.key.seconds == b.key.seconds && a.key.text == b.key.text && a.pre == b.pre &&
+         a.post == b.post && a.mode == b.mode && a.location == b.location && a.target == b.target && a.ball == b.ball;
+}
+
+}  // namespace
+
+TEST_SUITE("director") {
+  TEST_CASE("the director films every shipped scene and 50 random breaks within its rules") {
+    for (const Named& named : all_scenes()) check_shot(named.name, named.scene);
+  }
+
+  TEST_CASE("the director shoots in beats: the stroke from behind, the ball that matters, then wide") {
+    const ParseResult parsed = parse_scene(test::require_file(test::source_path("scenes/break.scn")), "break");
+    REQUIRE(parsed.scene);
+    DirectedCamera script;
+    const std::unique_ptr<Shot> shot = directed(*parsed.scene, &script);
+    REQUIRE(script.shots.size() == 3);
+    // The stroke: behind the cue ball (against its aim) and above it, looking the way it goes.
+    const CameraShot& stroke = script.shots[0];
+    CHECK(stroke.key.text == "start");
+    const Vec3 cue = shot->scene.balls[0].position;
+    const Vec3 aim = shot->scene.balls[0].velocity.normalized();
+    CHECK((stroke.location - cue).dot(aim) < -0.5);
+    CHECK(stroke.location.z() > cue.z() + 0.3);
+    CHECK((stroke.target - stroke.location).dot(aim) > 0);
+    // The 8 (ball 5), the last ball down, watched from the contact that sets it going; then wide as it drops.
+    CHECK(script.shots[1].ball == 5);
+    CHECK(script.shots[1].mode != CameraMode::hover);
+    CHECK(script.shots[2].key.text == "pocket 5");
+    CHECK(script.shots[2].mode == CameraMode::hover);
+  }
+
+  TEST_CASE("the director writes a script that fits any shot: a crowded odd table, a lone ball, a ball at rest") {
+    Scene lone = scenes::standard_table();
+    lone.balls.push_back(scenes::ball_at(0, 0, 0, lone.physics, Vec3(1, 0.5, 0)));
+    Scene still = scenes::standard_table();
+    still.balls.push_back(scenes::ball_at(0, -0.5, 0.2, still.physics));
+    still.balls.push_back(scenes::ball_at(1, 0.5, 0.2, still.physics));
+    for (const Scene& scene :
+         {scenes::stress_table(40, 3), lone, still, scenes::tight_break(), scenes::two_ball_shot()}) {
+      Scene copy = scene;
+      const Timeline timeline = simulate(copy);
+      const DirectedCamera script = direct_camera(copy, timeline);
+      REQUIRE(!script.shots.empty());
+      CHECK(script.shots.front().key.text == "start");
+      copy.camera = script.shots;
+      std::vector<Diagnostic> diagnostics;
+      CHECK(CameraScript::build(copy, timeline, diagnostics));
+      CHECK(diagnostics.empty());
+    }
+  }
+
+  TEST_CASE("README shows the script the director writes for the break") {
+    const std::string readme = test::require_file(test::source_path("README.md"));
+    const std::string lead = "The first prints the break's script:\n\n```\n";
+    const auto begin = readme.find(lead);
+    REQUIRE(begin != std::string::npos);
+    const auto end = readme.find("```", begin + lead.size());
+    REQUIRE(end != std::string::npos);
+    const std::string shown = readme.substr(begin + lead.size(), end - begin - lead.size());
+    const ParseResult parsed = parse_scene(test::require_file(test::source_path("scenes/break.scn")), "break");
+    REQUIRE(parsed.scene);
+    const Timeline timeline = simulate(*parsed.scene);
+    CHECK(shown == camera_script_text(direct_camera(*parsed.scene, timeline), "break"));
+  }
+
+  TEST_CASE("the script's text parses back to the same descriptions") {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(test::source_path("scenes")))
+      if (entry.path().extension() == ".scn") files.push_back(entry.path());
+    for (const fs::path& file : files) {
+      const std::string name = file.filename().string();
+      CAPTURE(name);
+      const std::string text = test::require_file(file);
+      const ParseResult parsed = parse_scene(text, "scene");
+      REQUIRE(parsed.scene);
+      const Timeline timeline = simulate(*parsed.scene);
+      const DirectedCamera script = direct_camera(*parsed.scene, timeline);
+      const std::string camera = camera_script_text(script, "scene");
+      CHECK(camera.starts_with("camera\n"));
+      CHECK(camera.ends_with("endcamera\n"));
+      // Deterministic: the same again, to the byte.
+      CHECK(camera_script_text(direct_camera(*parsed.scene, timeline), "scene") == camera);
+      const ParseResult again = parse_scene(with_camera(text, camera), "scene");
+      REQUIRE(again.scene);
+      CHECK(again.diagnostics.empty());
+      REQUIRE(again.scene->camera.size() == script.shots.size());
+      for (std::size_t k = 0; k < script.shots.size(); ++k) CHECK(same_shot(again.scene->camera[k], script.shots[k]));
+      // Loaded with --camera auto, the shot is filmed with exactly these descriptions.
+      const ShotResult automatic = load_shot(text, "scene", {}, CameraChoice::automatic);
+      REQUIRE(automatic.shot);
+      CHECK(automatic.diagnostics.empty());
+      REQUIRE(automatic.shot->scene.camera.size() == script.shots.size());
+      for (std::size_t k = 0; k < script.shots.size(); ++k)
+        CHECK(same_shot(automatic.shot->scene.camera[k], script.shots[k]));
+    }
+  }
+
+  TEST_CASE("--camera auto replaces a scene's camera script, even one that does not fit the shot") {
+    const std::string text = std::string(builtin_scene_text());
+    const std::string broken = with_camera(text, "camera\nevent fifth hit 0 1 0 0 hover 0 -3 2 0 0 0\nendcamera\n");
+    CHECK(!load_shot(broken, "break").shot);
+    const ShotResult automatic = load_shot(broken, "break", {}, CameraChoice::automatic);
+    REQUIRE(automatic.shot);
+    CHECK(automatic.diagnostics.empty());
+    CHECK(automatic.shot->scene.camera.front().key.text == "start");
+  }
+
+  TEST_CASE("--camera and --write-camera on the command lines") {
+    test::TempDir tmp;
+    const std::string scene = test::source_path("scenes/bank.scn").string();
+    const std::string preview = quoted(test::bin("billiards-preview")) + " " + quoted(scene);
+    const std::string exporter = quoted(test::bin("billiards-export")) + " " + quoted(scene);
+
+    for (const std::string& program : {preview, exporter}) {
+      const test::CommandResult bad = test::run_command(program + " --camera director");
+      CHECK(bad.exit_code == 2);
+      CHECK_MESSAGE(bad.err.find("bad value 'director' for --camera: expected auto (the automatic director's script) "
+                                 "or scene (the scene's own)") != std::string::npos,
+                    bad.err);
+      const test::CommandResult typo = test::run_command(program + " --camer auto");
+      CHECK(typo.exit_code == 2);
+      CHECK_MESSAGE(typo.err.find("did you mean '--camera'?") != std::string::npos, typo.err);
+      const test::CommandResult help = test::run_command(program + " --help");
+      CHECK(help.out.find("--camera auto|scene") != std::string::npos);
+    }
+
+    // To standard output, and to a file (only that: no window, no picture).
+    const test::CommandResult out = test::run_command(preview + " --write-camera -");
+    CHECK(out.exit_code == 0);
+    CHECK(out.out.starts_with("camera\n"));
+    CHECK(out.out.find("\nevent start ") != std::string::npos);
+    CHECK(out.out.ends_with("endcamera\n"));
+    const std::string file = (tmp.path / "camera.txt").string();
+    const test::CommandResult written = test::run_command(preview + " --write-camera " + quoted(file));
+    CHECK(written.exit_code == 0);
+    CHECK(written.err == "wrote " + file + "\n");
+    CHECK(test::require_file(file) == out.out);
+    CHECK(test::leftovers(tmp.path).empty());
+    // With a picture: the script first, then the timeline of the director's camera.
+    const std::string both = (tmp.path / "both.txt").string(), picture = (tmp.path / "timeline.png").string();
+    const test::CommandResult timeline =
+        test::run_command(preview + " --write-camera " + quoted(both) + " --timeline -o " + quoted(picture));
+    CHECK_MESSAGE(timeline.exit_code == 0, timeline.err);
+    CHECK(test::require_file(both) == out.out);
+    CHECK(fs::file_size(picture) > 1000);
+    const test::CommandResult clash = test::run_command(preview + " --camera scene --write-camera -");
+    CHECK(clash.exit_code == 2);
+    const test::CommandResult nowhere =
+        test::run_command(preview + " --write-camera " + quoted((tmp.path / "no/such/dir/c.txt").string()));
+    CHECK(nowhere.exit_code == 1);
+    CHECK(test::leftovers(tmp.path).empty());
+
+    // billiards-export films with it: camera.csv follows the director's script, and run.json says so.
+    const std::string dir = (tmp.path / "auto").string();
+    const test::CommandResult exported = test::run_command(exporter + " --camera auto --events-only -o " + quoted(dir));
+    CHECK(exported.exit_code == 0);
+    CHECK_MESSAGE(exported.err.find("warning") == std::string::npos, exported.err);
+    const std::string plain = (tmp.path / "scene").string();
+    CHECK(test::run_command(exporter + " --events-only -o " + quoted(plain)).exit_code == 0);
+    CHECK(test::require_file(fs::path(dir) / "camera.csv") != test::require_file(fs::path(plain) / "camera.csv"));
+  }
+}
