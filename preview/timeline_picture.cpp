@@ -211,7 +211,7 @@ std::vector<LegendKey> legend_keys(bool script_failed) {
                                  {event_color(EventType::cue), "cue", false},
                                  {event_color(EventType::ball_ball), "ball-ball", false},
                                  {event_color(EventType::ball_rail), "ball-rail", false},
-                                 {pocket_color(), "pocket drop (\xE2\x97\x86 on the axis; its key: pocket I)", false},
+                                 {pocket_color(), "pocket drop (its key: pocket I)", false},
                                  {camera_mode_color(CameraMode::follow), "follow", true},
                                  {camera_mode_color(CameraMode::look), "look", true},
                                  {camera_mode_color(CameraMode::hover), "hover", true},

@@ -92,6 +92,9 @@ bool write_camera_key(ViewerState& state, const CameraPlacement& placement) {
     return false;
   };
   if (!state.source.path) return fail("the built-in break has no file to write the camera into; open a scene file");
+  if (state.source.strict)
+    return fail(
+        "with --strict the scene may not use camera keys (an extension): run without --strict to write the camera");
   if (!state.free_camera) return fail("place the camera with the free camera: press C, frame the shot, then the key");
   const std::string& path = *state.source.path;
   std::string error;
