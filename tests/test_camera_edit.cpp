@@ -10,12 +10,15 @@
 #include <map>
 #include <string>
 
+#include "builtin_scene.h"
 #include "camera_edit.h"
 #include "camera_key.h"
 #include "files.h"
 #include "fixtures.h"
+#include "labels.h"
 #include "shot.h"
 #include "support.h"
+#include "timeline_picture.h"
 
 using namespace bsim;
 using bsim::test::TempDir;
@@ -298,5 +301,34 @@ TEST_SUITE("camera edit") {
     CHECK(std::filesystem::is_symlink(link));
     CHECK(test::read_file(target) == before + "# more\n");
     CHECK(test::read_file(target + ".bak") == before);
+  }
+
+  TEST_CASE("the timeline names balls with their painted numbers beside the indices, and drops by their keys") {
+    CHECK(ball_index_text(11, {0, 1, 2, 3, 4, 8, 6, 7, 9, 10, 11, 12}) == "11 (12)");
+    CHECK(ball_index_text(3, {0, 1, 2, 3}) == "3");
+    CHECK(ball_index_text(7, {}) == "7");
+    const std::vector<int> painted = {0, 1, 9, 12};
+    CHECK(camera_key_label("hit 0 3", painted) == "hit 0 3 (12)");
+    CHECK(camera_key_label("fourth cushion 2", painted) == "fourth cushion 2 (9)");
+    CHECK(camera_key_label("pocket 3", painted) == "pocket 3 (12)");
+    CHECK(camera_key_label("at 3", painted) == "at 3");
+    CHECK(camera_key_label("cue", painted) == "cue");
+
+    // The built-in break: ball 11 is the 12, ball 5 the 8.
+    ShotResult r = load_shot(builtin_scene_text(), "break");
+    REQUIRE(r.shot);
+    const TimelineData data = timeline_data(*r.shot);
+    REQUIRE(data.camera.size() == 5);
+    CHECK(data.camera[2].label == "follow ball 11 (12)");
+    CHECK(data.camera[3].label == "look ball 5 (8)");
+    CHECK(data.camera[4].key == "pocket 5");
+    CHECK(camera_key_label(data.camera[2].key, data.painted) == "third cushion 11 (12)");
+    bool group_named = false;
+    for (const TimelineEventMark& e : data.events)
+      group_named = group_named || e.label.find("11 (12)") != std::string::npos;
+    CHECK(group_named);
+    // Every drop is a moment a camera key names.
+    for (const TimelineDrop& d : data.drops)
+      CHECK(name_moment(r.shot->timeline, d.time).key == "pocket " + std::to_string(d.ball));
   }
 }
