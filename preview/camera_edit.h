@@ -19,8 +19,10 @@ namespace bsim {
 /// second: a few frames either side of a contact, where a person pausing "on" it usually is.
 inline constexpr double kKeySnap = 0.25;
 
-/// The blend windows (`pre`, `post`) of a description the window writes.
-inline constexpr double kWrittenPre = 0.3, kWrittenPost = 0.3;
+/// The blend windows (`pre`, `post`) of a description the window writes: the camera glides in over
+/// the last 30% of the time since the description before, and arrives at the framing it was given
+/// exactly at its moment (no blend after it), so the scripted camera then shows what the free camera showed.
+inline constexpr double kWrittenPre = 0.3, kWrittenPost = 0;
 
 /// A moment of the shot named the way a camera key names it.
 struct NamedMoment {
@@ -43,7 +45,7 @@ struct CameraPlacement {
   int ball = -1;          ///< Kind::ball: the ball to look at or follow
 };
 
-/// "event hit 0 5 0.3 0.3 hover -1.2 0.4 1.1 0 0 0": one description, numbers to the millimetre.
+/// "event hit 0 5 0.3 0 hover -1.2 0.4 1.1 0 0 0": one description, numbers to the millimetre.
 std::string format_description(const std::string& key, double pre, double post, const CameraShot& camera);
 
 /// The outcome of placing a camera in a scene's text.

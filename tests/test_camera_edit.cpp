@@ -126,9 +126,9 @@ TEST_SUITE("camera edit") {
     const std::string text = std::string(test::fixtures::kTwoBalls) + "# no camera yet";  // no final newline
     const CameraEdit edit = place_camera(text, "s.scn", 0, hover_at({0, -2.5, 1.5}, {0.1, 0, 0}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.text == text + "\ncamera\nevent start 0.3 0.3 hover 0 -2.5 1.5 0.1 0 0\nendcamera\n");
+    CHECK(edit.text == text + "\ncamera\nevent start 0.3 0 hover 0 -2.5 1.5 0.1 0 0\nendcamera\n");
     CHECK(edit.line == 6);
-    CHECK(edit.description == "event start 0.3 0.3 hover 0 -2.5 1.5 0.1 0 0");
+    CHECK(edit.description == "event start 0.3 0 hover 0 -2.5 1.5 0.1 0 0");
     CHECK_FALSE(edit.replaced);
     CHECK(load_shot(edit.text, "s").shot);
   }
@@ -138,11 +138,11 @@ TEST_SUITE("camera edit") {
     const CameraPlacement p = hover_at({1, -2, 1.25}, {0, 0, 0});
     const CameraEdit lines = place_camera(balls + "camera\n  endcamera  # the end\n", "s.scn", 0, p);
     REQUIRE(lines.error.empty());
-    CHECK(lines.text == balls + "camera\n  event start 0.3 0.3 hover 1 -2 1.25 0 0 0\n  endcamera  # the end\n");
+    CHECK(lines.text == balls + "camera\n  event start 0.3 0 hover 1 -2 1.25 0 0 0\n  endcamera  # the end\n");
     CHECK(lines.line == 5);
     const CameraEdit one = place_camera(balls + "camera endcamera\n", "s.scn", 0, p);
     REQUIRE(one.error.empty());
-    CHECK(one.text == balls + "camera\nevent start 0.3 0.3 hover 1 -2 1.25 0 0 0\nendcamera\n");
+    CHECK(one.text == balls + "camera\nevent start 0.3 0 hover 1 -2 1.25 0 0 0\nendcamera\n");
     CHECK(load_shot(one.text, "s").shot);
   }
 
@@ -155,7 +155,7 @@ TEST_SUITE("camera edit") {
     const double hit = first_time(shot->timeline, EventType::ball_ball);
     const CameraEdit edit = place_camera(text, "s.scn", hit, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.text == head + first + "\tevent hit 0 1 0.3 0.3 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
+    CHECK(edit.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
     CHECK(edit.line == 8);
     const std::vector<double> times = description_times(edit.text);
     REQUIRE(times.size() == 3);
@@ -164,11 +164,11 @@ TEST_SUITE("camera edit") {
     // After every description: before `endcamera`, indented like the last one.
     const std::string two = head + first + "endcamera\n";
     const CameraEdit after = place_camera(two, "s.scn", hit, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
-    CHECK(after.text == head + first + "\tevent hit 0 1 0.3 0.3 hover 0.5 -1 0.5 0.25 0 0.03\nendcamera\n");
+    CHECK(after.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\nendcamera\n");
     // Before every description.
     const std::string late = head + last;
     const CameraEdit early = place_camera(late, "s.scn", 0, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
-    CHECK(early.text == head + "\tevent start 0.3 0.3 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
+    CHECK(early.text == head + "\tevent start 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
   }
 
   TEST_CASE("a later contact is written with its ordinal") {
@@ -183,7 +183,7 @@ TEST_SUITE("camera edit") {
     const CameraEdit edit = place_camera(text, "s.scn", second->second, hover_at({1, 1, 1}, {0, 0, 0}));
     REQUIRE(edit.error.empty());
     const NamedMoment m = name_moment(shot->timeline, second->second);
-    CHECK(edit.description.rfind("event " + m.key + " 0.3 0.3 hover 1 1 1 0 0 0", 0) == 0);
+    CHECK(edit.description.rfind("event " + m.key + " 0.3 0 hover 1 1 1 0 0 0", 0) == 0);
     CHECK(m.key == "second cushion " + std::to_string(second->first));
     CHECK(description_times(edit.text).back() == second->second);
   }
@@ -211,11 +211,11 @@ TEST_SUITE("camera edit") {
     p.eye = Vec3(0.6, -0.9, 0.7);
     const CameraEdit look = place_camera(text, "s.scn", hit, p);
     REQUIRE(look.error.empty());
-    CHECK(look.description == "event hit 0 1 0.3 0.3 look 0.6 -0.9 0.7 1");
+    CHECK(look.description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7 1");
     const CameraEdit follow = place_camera(look.text, "s.scn", hit, p);
     REQUIRE(follow.error.empty());
     CHECK(follow.replaced);
-    CHECK(follow.description.rfind("event hit 0 1 0.3 0.3 follow 1 ", 0) == 0);
+    CHECK(follow.description.rfind("event hit 0 1 0.3 0 follow 1 ", 0) == 0);
     // The follow camera stands where the free camera stood, at the moment it was placed (to the mm).
     const auto followed = shot_of(follow.text);
     const CameraPose pose = followed->camera->shot_pose(1, hit);
@@ -224,7 +224,7 @@ TEST_SUITE("camera edit") {
     CHECK(back.text == look.text);
     // Another ball: a look at it in place of the follow.
     p.ball = 0;
-    CHECK(place_camera(follow.text, "s.scn", hit, p).description == "event hit 0 1 0.3 0.3 look 0.6 -0.9 0.7 0");
+    CHECK(place_camera(follow.text, "s.scn", hit, p).description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7 0");
   }
 
   TEST_CASE("a scene file with errors is not edited") {

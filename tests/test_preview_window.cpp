@@ -78,7 +78,7 @@ TEST_SUITE("preview window") {
     hover.look_at = free.target;
     const CameraEdit keyed = place_camera(original, path, hit, hover);
     REQUIRE(keyed.error.empty());
-    REQUIRE(keyed.description.rfind("event hit 0 1 0.3 0.3 hover ", 0) == 0);
+    REQUIRE(keyed.description.rfind("event hit 0 1 0.3 0 hover ", 0) == 0);
     CameraPlacement look = hover;
     look.kind = CameraPlacement::Kind::ball;
     look.ball = 1;
@@ -115,6 +115,52 @@ TEST_SUITE("preview window") {
     CHECK(test::read_file(path) == original);
     CHECK(test::read_file(path + ".bak") == keyed.text);
     CHECK(undone.err.find("undone") != std::string::npos);
+  }
+
+  TEST_CASE("a camera key edits the file as it is on disk now, and the reloaded shot shows the new camera") {
+    TempDir dir;
+    const std::string path = dir.file("live.scn", kScene);
+    ViewerState state;
+    state.source = scene_source(path, false);
+    REQUIRE(load_into(state));
+    const double hit = state.shot->timeline.events().at(2).time;
+    state.set_time(hit);
+    CameraPlacement hover;
+    hover.eye = Vec3(0.5, -1.5, 0.8);
+    hover.look_at = Vec3(0.25, 0, 0);
+
+    // Not with the scripted camera: nothing is written.
+    CHECK_FALSE(write_camera_key(state, hover));
+    CHECK(state.notice_is_error);
+    CHECK(test::read_file(path) == kScene);
+
+    // An editor saved a change since the last load: the key keeps it.
+    const std::string edited = "# saved in an editor\n" + kScene;
+    REQUIRE(test::write_file(path, edited));
+    state.free_camera = true;
+    REQUIRE(write_camera_key(state, hover));
+    CHECK_FALSE(state.notice_is_error);
+    const std::string written = *test::read_file(path);
+    CHECK(written.rfind(edited.substr(0, edited.find("camera\n")), 0) == 0);
+    CHECK(written.find("event hit 0 1 0.3 0 hover 0.5 -1.5 0.8 0.25 0 0\n") != std::string::npos);
+    CHECK(test::read_file(path + ".bak") == edited);
+    REQUIRE(load_into(state));
+    const CameraPose pose = state.shot->camera->pose(hit);
+    CHECK((pose.location - hover.eye).norm() < 1e-9);
+    CHECK((pose.look_at - hover.look_at).norm() < 1e-9);
+
+    // A file saved with an error is left alone, and says why.
+    REQUIRE(test::write_file(path, edited + "ball 1\n"));
+    CHECK_FALSE(write_camera_key(state, hover));
+    CHECK(state.notice_is_error);
+    CHECK(state.notice.find(path + ":") != std::string::npos);
+    CHECK(test::read_file(path) == edited + "ball 1\n");
+
+    // Undo: refused while the file is not what the window wrote; once it is again, it goes back.
+    CHECK_FALSE(undo_camera_key(state));
+    REQUIRE(test::write_file(path, written));
+    CHECK(undo_camera_key(state));
+    CHECK(test::read_file(path) == edited);
   }
 
   TEST_CASE("hot reload: a bad edit keeps the shot and the time and reports line and column; a fix reloads") {
