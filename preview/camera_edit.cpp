@@ -247,6 +247,7 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
     edit.error = "the camera was not written: the scene file has no ball " + std::to_string(placement.ball);
     return edit;
   }
+  t = std::clamp(t, 0.0, timeline.duration());
   const NamedMoment moment = name_moment(timeline, t);
 
   // Each description's instant, and the one (if any) already at this moment.
@@ -274,6 +275,7 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
   };
 
   std::string out(text);
+  const std::string nl = text.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";  // the file's line ends
   std::size_t at = 0;      // where the description starts in `out`
   std::size_t at_end = 0;  // where it ends
   if (existing) {
@@ -319,10 +321,10 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
       const std::size_t o = offset_of(text, tokens[*first]);
       const std::size_t start = line_start(text, o);
       if (only_blanks(text, start, o)) {
-        out.insert(start, indent_of(text, o) + line + "\n");
+        out.insert(start, indent_of(text, o) + line + nl);
         at = start + indent_of(text, o).size();
       } else {
-        out.insert(o, line + "\n");
+        out.insert(o, line + nl);
         at = o;
       }
       at_end = at + line.size();
@@ -335,21 +337,21 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
         if (const auto last = token_at(scene.camera.back().loc))
           indent = indent_of(text, offset_of(text, tokens[*last]));
       if (only_blanks(text, start, e)) {
-        out.insert(start, indent + line + "\n");
+        out.insert(start, indent + line + nl);
         at = start + indent.size();
       } else {
         // `camera endcamera` or a description and `endcamera` on one line: break the line there.
         const std::size_t p = token_end(text, tokens[*end_token - 1]);
-        out.replace(p, e - p, "\n" + indent + line + "\n");
-        at = p + 1 + indent.size();
+        out.replace(p, e - p, nl + indent + line + nl);
+        at = p + nl.size() + indent.size();
       }
       at_end = at + line.size();
     } else {
       // No camera block: one at the end of the file.
-      if (!out.empty() && out.back() != '\n') out += '\n';
-      out += "camera\n";
+      if (!out.empty() && out.back() != '\n') out += nl;
+      out += "camera" + nl;
       at = out.size();
-      out += line + "\nendcamera\n";
+      out += line + nl + "endcamera" + nl;
       at_end = at + line.size();
     }
   }

@@ -146,6 +146,18 @@ TEST_SUITE("camera edit") {
     CHECK(load_shot(one.text, "s").shot);
   }
 
+  TEST_CASE("a file with CRLF line ends gets CRLF lines") {
+    std::string text = std::string(test::fixtures::kTwoBalls) + "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+    for (std::size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 2)) text.insert(i, "\r");
+    const CameraEdit edit = place_camera(text, "s.scn", 99, hover_at({1, -2, 1}, {0, 0, 0}));
+    REQUIRE(edit.error.empty());
+    CHECK(edit.text.find("\r\nevent end 0.3 0 hover 1 -2 1 0 0 0\r\nendcamera\r\n") != std::string::npos);
+    CHECK(edit.description == "event end 0.3 0 hover 1 -2 1 0 0 0");
+    const std::string without = std::string(test::fixtures::kTwoBalls).insert(7, "\r");
+    CHECK(place_camera(without, "s.scn", 0, hover_at({1, -2, 1}, {0, 0, 0})).text.find("camera\r\nevent start") !=
+          std::string::npos);
+  }
+
   TEST_CASE("a new description goes in time order; comments and odd spacing stay as they were") {
     const std::string head = std::string(test::fixtures::kTwoBalls) + "camera   # my script\n";
     const std::string first = "\tevent  start   0 0   hover 0 -3 2  0 0 0    # wide\n\n# the hit comes later\n";
