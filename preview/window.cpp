@@ -1,5 +1,7 @@
-// The interactive window: GLFW + the shared renderer + Dear ImGui panels (see viewer_ui.h).
-// Under a test it scrubs through the shot by itself (--quit-after) and saves its last frame (--screenshot).
+// The interactive window: GLFW + the shared renderer + Dear ImGui panels (see viewer_ui.h), and the
+// keys that write the free camera into the scene file (camera_edit.h). Under a test it scrubs through
+// the shot by itself (--quit-after), plays typed keys (BSIM_WINDOW_INPUT, below) and saves its last
+// frame (--screenshot).
 #include <GLFW/glfw3.h>
 #include <dlfcn.h>
 #include <link.h>
