@@ -9,17 +9,51 @@
 
 namespace bsim {
 
-std::string camera_shot_label(const CameraShot& shot) {
+std::vector<int> painted_numbers(const Scene& scene) {
+  std::vector<int> numbers;
+  for (const Ball& b : scene.balls) numbers.push_back(b.number);
+  return numbers;
+}
+
+std::string ball_index_text(int index, const std::vector<int>& painted) {
+  std::string text = std::to_string(index);
+  if (index >= 0 && static_cast<std::size_t>(index) < painted.size() &&
+      painted[static_cast<std::size_t>(index)] != index)
+    text += " (" + std::to_string(painted[static_cast<std::size_t>(index)]) + ")";
+  return text;
+}
+
+std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& painted) {
   switch (shot.mode) {
     case CameraMode::hover: return "hover";
-    case CameraMode::look: return "look ball " + std::to_string(shot.ball);
-    case CameraMode::follow: return "follow ball " + std::to_string(shot.ball);
+    case CameraMode::look: return "look ball " + ball_index_text(shot.ball, painted);
+    case CameraMode::follow: return "follow ball " + ball_index_text(shot.ball, painted);
   }
   return "?";
 }
 
-std::string event_label(const Event& event) {
-  const auto ball = [&](std::size_t k) { return k < event.balls.size() ? std::to_string(event.balls[k]) : "?"; };
+std::string camera_key_label(const std::string& key, const std::vector<int>& painted) {
+  // The tokens after hit, cushion or pocket are ball indices; the rest stays as written.
+  std::string out;
+  bool balls = false;
+  std::size_t start = 0;
+  while (start < key.size()) {
+    std::size_t end = key.find(' ', start);
+    if (end == std::string::npos) end = key.size();
+    const std::string word = key.substr(start, end - start);
+    if (!out.empty()) out += ' ';
+    const bool number = !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
+    out += balls && number && word.size() < 6 ? ball_index_text(std::stoi(word), painted) : word;
+    if (word == "hit" || word == "cushion" || word == "pocket") balls = true;
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string event_label(const Event& event, const std::vector<int>& painted) {
+  const auto ball = [&](std::size_t k) {
+    return k < event.balls.size() ? ball_index_text(event.balls[k], painted) : "?";
+  };
   switch (event.type) {
     case EventType::start: return "start";
     case EventType::end: return "end";

@@ -1,6 +1,7 @@
 #pragma once
 // Short words for what the pictures label: events, camera descriptions, cue phases, and their colours.
 #include <string>
+#include <vector>
 
 #include "cue_script.h"
 #include "event.h"
@@ -8,10 +9,19 @@
 
 namespace bsim {
 
-/// "follow ball 0", "hover", "look ball 3" (ball indices as the scene file writes them).
-std::string camera_shot_label(const CameraShot& shot);
-/// "ball-ball 0·5", "ball-rail 3 · rail 2", "cue → 0", "start", "end".
-std::string event_label(const Event& event);
+/// Every ball's painted number, by file-order index (what `painted` means below).
+std::vector<int> painted_numbers(const Scene& scene);
+/// A ball's file-order index with its painted number beside it when the two differ: "11 (12)", "3".
+/// Without `painted` (or for an index it lacks), the index alone.
+std::string ball_index_text(int index, const std::vector<int>& painted);
+
+/// "follow ball 0", "hover", "look ball 3 (12)" (ball indices as the scene file writes them, painted
+/// numbers beside them where they differ).
+std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& painted = {});
+/// "ball 0 – ball 5 (8)", "ball 3 – rail 2", "cue → ball 0", "balls 0, 1, 2 (group)", "start", "end".
+std::string event_label(const Event& event, const std::vector<int>& painted = {});
+/// A camera key as written with painted numbers beside its ball indices: "hit 0 5 (8)", "pocket 11 (12)".
+std::string camera_key_label(const std::string& key, const std::vector<int>& painted);
 std::string cue_phase_label(CuePhase phase);
 
 /// Colours as 0xAABBGGRR (ImGui's packing), chosen to be told apart on a dark ground.

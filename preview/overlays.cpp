@@ -302,10 +302,10 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
   std::string text = buffer;
   if (const Event* e = latest_event(f.shot.timeline, f.time)) {
     std::snprintf(buffer, sizeof buffer, "  \xE2\x80\xA2  after event %d (%.3f s): ", e->index, e->time);
-    text += buffer + event_label(*e);
+    text += buffer + event_label(*e, painted_numbers(f.shot.scene));
   }
   if (const CameraShot* c = camera_shot_at(f.shot, f.time)) {
-    text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c);
+    text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c, painted_numbers(f.shot.scene));
     if (f.shot.camera->pose(f.time).interpolating) text += " (interpolating)";
   }
   const float size = f.fonts.regular_size;

@@ -39,7 +39,7 @@ std::vector<TimelineCameraSpan> written_camera_spans(const Scene& scene, const T
     span.event = shot.event;
     span.key = shot.key.text;
     span.mode = shot.mode;
-    span.label = camera_shot_label(shot);
+    span.label = camera_shot_label(shot, painted_numbers(scene));
     const KeyResolution at = resolve_camera_key(shot, scene, timeline);
     span.placed = at.instant.has_value();
     // Unplaced, it sits beside the others with nothing to compare: say what the shot has instead.

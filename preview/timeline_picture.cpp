@@ -83,6 +83,7 @@ struct RowLayout {
   float top_margin = 0;     ///< px above the title, or above the rows when compact
   float label_height = 0;   ///< px, one level of event numbers
   float camera_height = 0;  ///< px of the camera band
+  float lane = 0;           ///< px at the bottom of the camera band for the labels too long for their bar
 
   // Set by place().
   int label_levels = 0;
@@ -99,7 +100,13 @@ struct RowLayout {
         top_margin(pad * (compact ? 0.5f : 1.f)),
         label_height(small + 2),
         // A script that failed shows each description's error under its label.
-        camera_height(script_failed ? fonts.regular_size + small + 12 : fonts.regular_size + 10) {}
+        camera_height(script_failed ? fonts.regular_size + small + 12 : fonts.regular_size + 10),
+        lane(compact || script_failed ? 0 : small + 6) {
+    camera_height += lane;
+  }
+
+  /// px, the bottom of the camera bars (above the lane).
+  float bars_bottom() const { return camera_bottom - lane; }
 
   /// px the four bands and the axis take, gaps aside: the height the label levels cannot have.
   float bands_height() const {
@@ -171,9 +178,9 @@ void labelled_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, fl
   list.PopClipRect();
 }
 
-std::string camera_span_label(const TimelineCameraSpan& c, bool compact) {
-  if (compact) return c.label;
-  if (!c.key.empty()) return c.key + ": " + c.label;
+/// "hit 0 5 (8): follow ball 5 (8)", "event 3: hover": what the description starts at and does.
+std::string camera_span_label(const TimelineCameraSpan& c, const std::vector<int>& painted) {
+  if (!c.key.empty()) return camera_key_label(c.key, painted) + ": " + c.label;
   const std::string event = c.event == CameraShot::kLastEvent ? "last" : std::to_string(c.event);
   return "event " + event + ": " + c.label;
 }
@@ -181,9 +188,9 @@ std::string camera_span_label(const TimelineCameraSpan& c, bool compact) {
 // A description of a camera script that does not fit the shot: its label above, its error (if any)
 // below in a red bar, so a wrong event number reads next to the events that do exist.
 void written_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, float top, float bottom,
-                 const TimelineCameraSpan& c) {
+                 const TimelineCameraSpan& c, const std::vector<int>& painted) {
   if (c.problem.empty()) {
-    labelled_bar(list, fonts, x0, x1, top, bottom, camera_mode_color(c.mode), camera_span_label(c, false), true);
+    labelled_bar(list, fonts, x0, x1, top, bottom, camera_mode_color(c.mode), camera_span_label(c, painted), true);
     return;
   }
   if (x1 - x0 < 3) x1 = x0 + 3;
@@ -192,7 +199,7 @@ void written_bar(ImDrawList& list, const UiFonts& fonts, float x0, float x1, flo
   const float pad = 4, gap = (bottom - top - fonts.regular_size - fonts.small_size) / 3;
   list.PushClipRect(ImVec2(x0 + 1, top), ImVec2(x1 - 1, bottom), true);
   list.AddText(fonts.regular, fonts.regular_size, ImVec2(x0 + pad, top + gap), IM_COL32(255, 255, 255, 255),
-               camera_span_label(c, false).c_str());
+               camera_span_label(c, painted).c_str());
   list.AddText(fonts.small, fonts.small_size, ImVec2(x0 + pad, bottom - gap - fonts.small_size),
                IM_COL32(255, 226, 220, 255), c.problem.c_str());
   list.PopClipRect();
@@ -204,7 +211,7 @@ std::vector<LegendKey> legend_keys(bool script_failed) {
                                  {event_color(EventType::cue), "cue", false},
                                  {event_color(EventType::ball_ball), "ball-ball", false},
                                  {event_color(EventType::ball_rail), "ball-rail", false},
-                                 {pocket_color(), "pocket drop", false},
+                                 {pocket_color(), "pocket drop (its key: pocket I)", false},
                                  {camera_mode_color(CameraMode::follow), "follow", true},
                                  {camera_mode_color(CameraMode::look), "look", true},
                                  {camera_mode_color(CameraMode::hover), "hover", true},
@@ -214,14 +221,33 @@ std::vector<LegendKey> legend_keys(bool script_failed) {
   return keys;
 }
 
-// The event list's lines, without their numbers: "  1.234 s   ball 0 – ball 5".
-std::vector<std::string> event_list_entries(const TimelineData& data) {
-  std::vector<std::string> entries;
+// One line of the event list: a numbered event, or a pocket drop (which has no number).
+struct ListEntry {
+  const TimelineEventMark* event = nullptr;  ///< null for a pocket drop
+  std::string text;                          ///< without the number: "  1.234 s   ball 0 – ball 5"
+};
+
+// The event list's lines in time order, the pocket drops among the events by their key:
+// "  4.900 s   pocket 3 (12): into pocket 2".
+std::vector<ListEntry> event_list_entries(const TimelineData& data) {
+  std::vector<ListEntry> entries;
+  std::size_t drop = 0;
+  const auto add_drops_until = [&](double t) {
+    for (; drop < data.drops.size() && data.drops[drop].time < t; ++drop) {
+      const TimelineDrop& d = data.drops[drop];
+      char buffer[48];
+      std::snprintf(buffer, sizeof buffer, "%8.3f s   ", d.time);
+      entries.push_back({nullptr, buffer + ("pocket " + ball_index_text(d.ball, data.painted)) + ": into pocket " +
+                                      std::to_string(d.pocket)});
+    }
+  };
   for (const TimelineEventMark& e : data.events) {
+    add_drops_until(e.time);
     char buffer[48];
     std::snprintf(buffer, sizeof buffer, "%8.3f s   ", e.time);
-    entries.push_back(buffer + e.label);
+    entries.push_back({&e, buffer + e.label});
   }
+  add_drops_until(INFINITY);
   return entries;
 }
 
@@ -295,18 +321,48 @@ class TimelinePainter {
   // A script that failed is drawn as written: the faulty descriptions last (on top), each tied to the
   // event it names by a red line, and those naming no event in the zone (draw_unplaced_descriptions).
   void draw_camera_descriptions() {
-    const float top = rows_.camera_top + 2, low = rows_.camera_bottom - 2;
-    if (!script_failed_)
-      for (const TimelineCameraSpan& c : data_.camera)
+    const float top = rows_.camera_top + 2, low = rows_.bars_bottom() - 2;
+    if (!script_failed_) {
+      // A label too long for its bar goes in the lane under the bars (the scrub bar: the mode alone).
+      std::vector<const TimelineCameraSpan*> in_lane;
+      for (const TimelineCameraSpan& c : data_.camera) {
+        const std::string label = camera_span_label(c, data_.painted);
+        const bool fits = text_size(fonts_.regular, fonts_.regular_size, label).x + 8 <= at(c.end) - at(c.begin);
         labelled_bar(list_, fonts_, at(c.begin), at(c.end), top, low, camera_mode_color(c.mode),
-                     camera_span_label(c, layout_.compact), true);
+                     fits              ? label
+                     : layout_.compact ? c.label
+                                       : "",
+                     true);
+        if (!fits && !layout_.compact) in_lane.push_back(&c);
+      }
+      draw_lane_labels(in_lane);
+    }
     for (int faulty = 0; script_failed_ && faulty < 2; ++faulty)
       for (const TimelineCameraSpan& c : data_.camera) {
         if (!c.placed || c.problem.empty() == bool(faulty)) continue;
         const float a = at(c.begin);
         if (faulty) list_.AddLine(ImVec2(a, rows_.events_top), ImVec2(a, top), kError, 2.f);
-        written_bar(list_, fonts_, a, at(c.end), top, low, c);
+        written_bar(list_, fonts_, a, at(c.end), top, low, c, data_.painted);
       }
+  }
+
+  // The labels of short bars in the lane under them, from the last one back so that the last is
+  // always whole: each at its bar's start if there is room, else moved left, tied to its bar by a line.
+  void draw_lane_labels(const std::vector<const TimelineCameraSpan*>& spans) {
+    const float small = fonts_.small_size, y = rows_.bars_bottom() + 2;
+    float limit = right_ - rows_.pad;
+    for (auto it = spans.rbegin(); it != spans.rend(); ++it) {
+      const TimelineCameraSpan& c = **it;
+      const std::string label = camera_span_label(c, data_.painted);
+      const float w = text_size(fonts_.small, small, label).x;
+      const float start = at(c.begin);
+      const float x = std::max(std::min(start, limit - w), across_.x0);
+      const ImU32 color = camera_mode_color(c.mode);
+      list_.AddLine(ImVec2(start + 1, rows_.bars_bottom() - 2), ImVec2(std::max(x, start) + 1, y + 2), color, 1.f);
+      if (x < start) list_.AddLine(ImVec2(x, y + 2), ImVec2(start + 1, y + 2), with_alpha(color, 140), 1.f);
+      list_.AddText(fonts_.small, small, ImVec2(x, y + 2), color, label.c_str());
+      limit = x - rows_.pad;
+    }
   }
 
   // The zone after the axis: the descriptions naming an event the shot lacks, side by side, narrowed
@@ -327,7 +383,7 @@ class TimelinePainter {
     for (const TimelineCameraSpan& c : data_.camera) {
       if (c.placed) continue;
       const float w = z.unplaced_widths[k++] * scale;
-      written_bar(list_, fonts_, x + 1, x + w - 1, rows_.camera_top + 2, rows_.camera_bottom - 2, c);
+      written_bar(list_, fonts_, x + 1, x + w - 1, rows_.camera_top + 2, rows_.camera_bottom - 2, c, data_.painted);
       x += w;
     }
   }
@@ -347,12 +403,12 @@ class TimelinePainter {
       list_.AddLine(ImVec2(a, rows_.events_top), ImVec2(a, rows_.cue_bottom), kWindowEdge, 1.f);
       list_.AddLine(ImVec2(b, rows_.events_top), ImVec2(b, rows_.cue_bottom), kWindowEdge, 1.f);
       // Hatching over the camera row: the camera is between two descriptions here.
-      const float top = rows_.camera_top + 2, low = rows_.camera_bottom - 2, h = low - top;
+      const float top = rows_.camera_top + 2, low = rows_.bars_bottom() - 2, h = low - top;
       list_.PushClipRect(ImVec2(a, top), ImVec2(std::max(b, a + 1), low), true);
       for (float x = a - h; x < b; x += 7) list_.AddLine(ImVec2(x, low), ImVec2(x + h, top), kWindowHatch, 1.5f);
       list_.PopClipRect();
-      list_.AddTriangleFilled(ImVec2(e - 4, rows_.camera_bottom + 1), ImVec2(e + 4, rows_.camera_bottom + 1),
-                              ImVec2(e, rows_.camera_bottom - 5), IM_COL32(255, 255, 255, 230));
+      list_.AddTriangleFilled(ImVec2(e - 4, rows_.bars_bottom() + 1), ImVec2(e + 4, rows_.bars_bottom() + 1),
+                              ImVec2(e, rows_.bars_bottom() - 5), IM_COL32(255, 255, 255, 230));
     }
   }
 
@@ -383,9 +439,14 @@ class TimelinePainter {
       const float x = at(d.time), mid = (rows_.drops_top + rows_.drops_bottom) / 2;
       const float s = (rows_.drops_bottom - rows_.drops_top) * 0.32f;
       list_.AddTriangleFilled(ImVec2(x - s, mid - s), ImVec2(x + s, mid - s), ImVec2(x, mid + s), pocket_color());
+      // A key on the time axis: a faint line down to a diamond on it, unlike the events' ticks.
+      const float axis = rows_.axis_top + 1, r = layout_.compact ? 3.f : 4.5f;
+      list_.AddLine(ImVec2(x, mid + s), ImVec2(x, axis - r), with_alpha(pocket_color(), 70), 1.f);
+      list_.AddQuadFilled(ImVec2(x, axis - r), ImVec2(x + r, axis), ImVec2(x, axis + r), ImVec2(x - r, axis),
+                          pocket_color());
+      // Named by its key, as a camera description would start at it: "pocket 3 (12)".
       const std::string label =
-          layout_.compact ? std::to_string(d.ball)
-                          : "ball " + std::to_string(d.ball) + " \xE2\x86\x92 pocket " + std::to_string(d.pocket);
+          layout_.compact ? ball_index_text(d.ball, data_.painted) : "pocket " + ball_index_text(d.ball, data_.painted);
       const float w = text_size(fonts_.small, small, label).x;
       if (drop_levels.place(x + s + 2, w, 6) == 0 && x + s + 2 + w < across_.x1)
         list_.AddText(fonts_.small, small, ImVec2(x + s + 2, text_y), pocket_color(), label.c_str());
@@ -438,14 +499,14 @@ class TimelinePainter {
     const float line = small + 3;
     const int lines = static_cast<int>((bottom_ - pad * 0.5f - y) / line);
     if (lines < 1 || data_.events.empty()) return;
-    const std::vector<std::string> entries = event_list_entries(data_);
+    const std::vector<ListEntry> entries = event_list_entries(data_);
     float column = 0;
-    for (const std::string& entry : entries)
-      column = std::max(column, text_size(fonts_.small, small, "000  " + entry).x);
+    for (const ListEntry& entry : entries)
+      column = std::max(column, text_size(fonts_.small, small, "000  " + entry.text).x);
     column += pad * 2;
     const int columns = std::max(1, static_cast<int>((right_ - across_.x0) / column));
     const int capacity = lines * columns;
-    const int count = static_cast<int>(data_.events.size());
+    const int count = static_cast<int>(entries.size());
     for (int k = 0; k < count && k < capacity; ++k) {
       const float cx = across_.x0 + (k / lines) * column, cy = y + (k % lines) * line;
       if (k == capacity - 1 && count > capacity) {
@@ -453,8 +514,7 @@ class TimelinePainter {
                       ("\xE2\x80\xA6 and " + std::to_string(count - capacity + 1) + " more").c_str());
         break;
       }
-      const std::size_t i = static_cast<std::size_t>(k);
-      draw_event_list_line(cx, cy, data_.events[i], entries[i]);
+      draw_event_list_line(cx, cy, entries[static_cast<std::size_t>(k)]);
     }
   }
 
@@ -484,7 +544,7 @@ class TimelinePainter {
     // Descriptions naming an event the shot lacks have no time: they go in a zone after the axis.
     for (const TimelineCameraSpan& c : data_.camera)
       if (!c.placed)
-        a.unplaced_widths.push_back(std::max(text_size(fonts_.regular, text, camera_span_label(c, layout_.compact)).x,
+        a.unplaced_widths.push_back(std::max(text_size(fonts_.regular, text, camera_span_label(c, data_.painted)).x,
                                              text_size(fonts_.small, small, c.problem).x) +
                                     2 * pad);
     for (float w : a.unplaced_widths) a.zone_wanted += w;
@@ -515,14 +575,22 @@ class TimelinePainter {
     return true;
   }
 
-  // One line of the event list: the number right-aligned in its type's colour, then time and label.
-  void draw_event_list_line(float cx, float cy, const TimelineEventMark& e, const std::string& entry) {
+  // One line of the event list: the number right-aligned in its type's colour (a pocket drop: a
+  // diamond, as on the axis, and its line in the drops' colour), then time and label.
+  void draw_event_list_line(float cx, float cy, const ListEntry& entry) {
     const float small = fonts_.small_size;
-    const std::string number = std::to_string(e.index);
-    const float nw = text_size(fonts_.small, small, number).x;
     const float numbers_w = text_size(fonts_.small, small, "000").x;
-    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w - nw, cy), event_color(e.type), number.c_str());
-    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w + 4, cy), kText, entry.c_str());
+    if (entry.event) {
+      const std::string number = std::to_string(entry.event->index);
+      const float nw = text_size(fonts_.small, small, number).x;
+      list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w - nw, cy), event_color(entry.event->type),
+                    number.c_str());
+    } else {
+      const float r = small * 0.3f, x = cx + numbers_w - r - 1, y = cy + small / 2;
+      list_.AddQuadFilled(ImVec2(x, y - r), ImVec2(x + r, y), ImVec2(x, y + r), ImVec2(x - r, y), pocket_color());
+    }
+    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w + 4, cy), entry.event ? kText : pocket_color(),
+                  entry.text.c_str());
   }
 
   ImDrawList& list_;
@@ -551,12 +619,15 @@ TimelineData timeline_data(const Shot& shot) {
                 shot.scene.name.c_str(), data.duration, timeline.events().size(),
                 timeline.events().empty() ? 0 : timeline.events().size() - 1, pocketed);
   data.title = buffer;
-  for (const Event& e : timeline.events()) data.events.push_back({e.index, e.time, e.type, event_label(e)});
+  data.painted = painted_numbers(shot.scene);
+  for (const Event& e : timeline.events())
+    data.events.push_back({e.index, e.time, e.type, event_label(e, data.painted)});
   if (shot.camera) {
     for (const CameraSegment& s : shot.camera->segments()) {
       if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
       const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
-      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c), {}, true, c.key.text});
+      data.camera.push_back(
+          {s.begin, s.end, c.event, c.mode, camera_shot_label(c, data.painted), {}, true, c.key.text});
     }
     for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
   }

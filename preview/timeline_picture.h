@@ -33,7 +33,7 @@ struct TimelineCameraSpan {
   double begin = 0, end = 0;  ///< s
   int event = 0;              ///< the event number the description names (65535: the last)
   CameraMode mode = CameraMode::hover;
-  std::string label;    ///< "follow ball 0"
+  std::string label;    ///< "follow ball 0", "look ball 11 (12)"
   std::string problem;  ///< why the description does not fit the shot (drawn in red); empty when it does
   bool placed = true;   ///< false: the event it names does not exist (drawn after the time axis)
   std::string key;      ///< the camera key as written ("hit 0 5"), empty when it names an event number
@@ -52,6 +52,9 @@ struct TimelineData {
   std::vector<TimelineCameraSpan> camera;
   std::vector<TimelineWindow> windows;
   std::vector<CuePhaseSpan> cue;
+  /// Every ball's painted number by file-order index, written beside the indices the picture shows
+  /// where the two differ (keys, pocket drops); empty: indices alone.
+  std::vector<int> painted;
   /// Set when the camera script does not fit the shot: every error as printed. The camera row then
   /// shows the script as written (see script_as_written.h), and there are no windows or cue phases.
   std::vector<std::string> script_errors;

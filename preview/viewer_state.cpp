@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene_file.h"
+
 namespace bsim {
 
 namespace {
@@ -81,6 +83,45 @@ bool load_into(ViewerState& state) {
   state.set_time(state.time);  // keep the time, within the new shot
   ++state.reloads;
   return true;
+}
+
+bool write_camera_key(ViewerState& state, const CameraPlacement& placement) {
+  const auto fail = [&](const std::string& why) {
+    state.notice = why;
+    state.notice_is_error = true;
+    return false;
+  };
+  if (!state.source.path) return fail("the built-in break has no file to write the camera into; open a scene file");
+  if (state.source.strict)
+    return fail(
+        "with --strict the scene may not use camera keys (an extension): run without --strict to write the camera");
+  if (!state.free_camera) return fail("place the camera with the free camera: press C, frame the shot, then the key");
+  const std::string& path = *state.source.path;
+  std::string error;
+  // The file as it is on disk now, not as last loaded: an editor may have saved it since.
+  const std::optional<std::string> before = read_scene_file(path, error);
+  if (!before) return fail(error);
+  const CameraEdit edit = place_camera(*before, state.source.shown_path, state.time, placement);
+  if (!edit.error.empty()) return fail(edit.error);
+  if (edit.text == *before) {
+    state.notice = "line " + std::to_string(edit.line) + " already reads: " + edit.description;
+    state.notice_is_error = false;
+    return false;
+  }
+  if (std::string failed = replace_scene_file(path, *before, edit.text); !failed.empty()) return fail(failed);
+  state.edits.record(*before, edit.text);
+  state.notice = (edit.replaced ? "replaced line " : "wrote line ") + std::to_string(edit.line) + ": " +
+                 edit.description + "   (U undoes; the previous file is in " + backup_path(path) + ")";
+  state.notice_is_error = false;
+  return true;
+}
+
+bool undo_camera_key(ViewerState& state) {
+  if (!state.source.path) return false;
+  const std::string error = state.edits.undo(*state.source.path);
+  state.notice = error.empty() ? "undone: " + *state.source.path + " is back as it was" : error;
+  state.notice_is_error = !error.empty();
+  return error.empty();
 }
 
 FileWatch::FileWatch(std::optional<std::string> path) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_edit.h"
 #include "overlays.h"
 #include "preview_options.h"
 #include "shot_source.h"
@@ -44,6 +45,9 @@ struct ViewerState {
   OrbitCamera orbit;
   PreviewOverlays overlays;
   bool antialias = false;
+  SceneEdits edits;    ///< the window's own changes to the scene file, for undo
+  std::string notice;  ///< what the last camera placement or undo did, shown under the picture
+  bool notice_is_error = false;
 
   double duration() const;
   void set_time(double t);
@@ -55,6 +59,15 @@ struct ViewerState {
 /// Loads the source into the state; on errors keeps the previous shot and records the messages.
 /// Returns true when a new shot replaced the old one.
 bool load_into(ViewerState& state);
+
+/// Writes a camera description at the current time into the scene file (see place_camera), from
+/// the free camera, after reading the file afresh from disk; the previous version goes to its
+/// backup. Sets the notice. Returns true when the file changed (reload it).
+bool write_camera_key(ViewerState& state, const CameraPlacement& placement);
+
+/// Puts back the scene file as it was before the window's last change to it. Sets the notice.
+/// Returns true when the file changed (reload it).
+bool undo_camera_key(ViewerState& state);
 
 /// Notices when the scene file changes on disk (by time stamp and size).
 class FileWatch {

@@ -20,7 +20,8 @@ constexpr float kEventListWidth = 300;  // px
 constexpr double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0};
 constexpr const char* kKeyHelp =
     "Space play/pause   \xE2\x86\x90 \xE2\x86\x92 frame   Shift+\xE2\x86\x90 \xE2\x86\x92 or , . event   Home End   "
-    "C scripted/free camera   P paths   E events   M camera map   A antialias   R reload   Q quit";
+    "C scripted/free camera   K write the free camera into the scene   L look at/follow the ball under the cursor   "
+    "U undo   P paths   E events   M camera map   A antialias   R reload   Q quit";
 
 void transport(ViewerState& state) {
   if (ImGui::Button("|<")) state.set_time(0);
@@ -97,7 +98,8 @@ void event_list(ViewerState& state, float window_height) {
       if (e.time <= state.time + 1e-9) current = &e;
     for (const Event& e : state.shot->timeline.events()) {
       char label[160];
-      std::snprintf(label, sizeof label, "%3d  %7.3f s  %s", e.index, e.time, event_label(e).c_str());
+      std::snprintf(label, sizeof label, "%3d  %7.3f s  %s", e.index, e.time,
+                    event_label(e, state.timeline.painted).c_str());
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(event_color(e.type)));
       if (ImGui::Selectable(label, &e == current)) {
         state.set_time(e.time);
@@ -106,8 +108,8 @@ void event_list(ViewerState& state, float window_height) {
       ImGui::PopStyleColor();
     }
     for (const PocketDrop& d : state.shot->timeline.pocket_drops()) {
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pocket_color()), "     %7.3f s  ball %d into pocket %d", d.time,
-                         d.ball, d.pocket);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pocket_color()), "     %7.3f s  pocket %s: into pocket %d",
+                         d.time, ball_index_text(d.ball, state.timeline.painted).c_str(), d.pocket);
     }
   }
   ImGui::End();
@@ -170,6 +172,17 @@ void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, cons
                ImVec2(view.x + view.width - fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, 0, which).x - 8,
                       view.y + view.height - fonts.small_size - 6),
                IM_COL32(220, 220, 220, 200), which);
+  if (!state.notice.empty()) {
+    // What the last camera key did, at the bottom left of the picture above the status line.
+    const float wrap = view.width - 16;
+    const ImVec2 size = fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, wrap, state.notice.c_str());
+    const float top = view.y + view.height - size.y - 2 * fonts.small_size - 20;
+    list.AddRectFilled(ImVec2(view.x + 4, top - 3), ImVec2(view.x + 12 + size.x, top + size.y + 3),
+                       IM_COL32(0, 0, 0, 170), 3.f);
+    list.AddText(fonts.small, fonts.small_size, ImVec2(view.x + 8, top),
+                 state.notice_is_error ? IM_COL32(255, 130, 120, 255) : IM_COL32(170, 240, 170, 255),
+                 state.notice.c_str(), nullptr, wrap);
+  }
   list.PopClipRect();
 }
 

@@ -1,18 +1,24 @@
-// The interactive window: GLFW + the shared renderer + Dear ImGui panels (see viewer_ui.h).
-// Under a test it scrubs through the shot by itself (--quit-after) and saves its last frame (--screenshot).
+// The interactive window: GLFW + the shared renderer + Dear ImGui panels (see viewer_ui.h), and the
+// keys that write the free camera into the scene file (camera_edit.h). Under a test it scrubs through
+// the shot by itself (--quit-after), plays typed keys (BSIM_WINDOW_INPUT, below) and saves its last
+// frame (--screenshot).
 #include <GLFW/glfw3.h>
 #include <dlfcn.h>
 #include <link.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "camera_edit.h"
 #include "commands.h"
 #include "fonts.h"
 #include "gl_api.h"
@@ -63,10 +69,48 @@ struct GlfwSession {
   }
 };
 
-// The key bindings (listed in the window's help line and README).
-void handle_keys(ViewerState& state, GLFWwindow* window) {
+// The ball under the mouse cursor, seen from the free camera, at the current time.
+std::optional<int> ball_under_cursor(const ViewerState& state, const ViewRect& view) {
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  if (!state.shot || mouse.x < view.x || mouse.y < view.y || mouse.x >= view.x + view.width ||
+      mouse.y >= view.y + view.height)
+    return std::nullopt;
+  return ball_at_pixel(state.shot->timeline, state.time, state.orbit.view(), view.width, view.height, mouse.x - view.x,
+                       mouse.y - view.y);
+}
+
+// K, L and U: the camera written into the scene file from the free camera, and undone.
+// Returns true when the file changed.
+bool handle_camera_keys(ViewerState& state, const ViewRect& view) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureKeyboard) return;
+  CameraPlacement placement;
+  placement.eye = state.orbit.view().eye;
+  placement.look_at = state.orbit.view().target;
+  bool changed = false;
+  if (ImGui::IsKeyPressed(GLFW_KEY_K, false)) changed = write_camera_key(state, placement);
+  if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) {
+    const std::optional<int> ball = state.free_camera ? ball_under_cursor(state, view) : std::nullopt;
+    if (state.free_camera && !ball) {
+      state.notice = "no ball under the mouse cursor: point at the ball to look at or follow, then press L";
+      state.notice_is_error = true;
+    } else {
+      placement.kind = CameraPlacement::Kind::ball;
+      placement.ball = ball.value_or(-1);
+      changed = write_camera_key(state, placement);
+    }
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_U, false) || (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z, false)))
+    changed = undo_camera_key(state);
+  if (!state.notice.empty() && (changed || state.notice_is_error))
+    std::cerr << "billiards-preview: " << state.notice << "\n";
+  return changed;
+}
+
+// The key bindings (listed in the window's help line and README). Returns true when the scene file
+// was changed by a camera key.
+bool handle_keys(ViewerState& state, GLFWwindow* window, const ViewRect& view) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return false;
   const bool shift = io.KeyShift;
   if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) {
     if (state.time >= state.duration()) state.set_time(0);
@@ -87,7 +131,85 @@ void handle_keys(ViewerState& state, GLFWwindow* window) {
   if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) load_into(state);
   if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
     glfwSetWindowShouldClose(window, GLFW_TRUE);
+  return handle_camera_keys(state, view);
 }
+
+// A test hook, not an option: BSIM_WINDOW_INPUT="C K shift+Right mouse:320,180 L U" plays key
+// presses into the window as if typed, one every other frame (pressed, then released), and closes
+// the window after the last. `mouse:X,Y` puts the cursor at X,Y (window units) from then on.
+// Keys: a letter, `.`, `,`, Right, Left, Home, End, Space, each optionally after `shift+`.
+class InputScript {
+ public:
+  explicit InputScript(const char* text) {
+    if (!text) return;
+    active_ = true;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) {
+      Step step;
+      if (word.rfind("mouse:", 0) == 0) {
+        float x = 0, y = 0;
+        if (std::sscanf(word.c_str() + 6, "%f,%f", &x, &y) == 2) step.cursor = ImVec2(x, y);
+      } else {
+        if (word.rfind("shift+", 0) == 0) {
+          step.shift = true;
+          word.erase(0, 6);
+        }
+        step.key = key_code(word);
+      }
+      if (step.key < 0 && !step.cursor)
+        std::cerr << "billiards-preview: BSIM_WINDOW_INPUT: no key " << word << "\n";
+      else
+        steps_.push_back(step);
+    }
+  }
+
+  bool active() const { return active_; }
+  const ImVec2* cursor() const { return cursor_ ? &*cursor_ : nullptr; }
+
+  /// Feeds the next press or release before a frame. Returns true once every step has been played.
+  bool feed(GLFWwindow* window) {
+    if (!active_) return false;
+    if (held_key_ >= 0) {
+      ImGui_ImplGlfw_KeyCallback(window, held_key_, 0, GLFW_RELEASE, 0);
+      if (held_shift_) ImGui_ImplGlfw_KeyCallback(window, GLFW_KEY_LEFT_SHIFT, 0, GLFW_RELEASE, 0);
+      held_key_ = -1;
+      return false;
+    }
+    if (next_ >= steps_.size()) return true;
+    const Step& step = steps_[next_++];
+    if (step.cursor) cursor_ = step.cursor;
+    if (step.key < 0) return false;
+    if (step.shift) ImGui_ImplGlfw_KeyCallback(window, GLFW_KEY_LEFT_SHIFT, 0, GLFW_PRESS, GLFW_MOD_SHIFT);
+    ImGui_ImplGlfw_KeyCallback(window, step.key, 0, GLFW_PRESS, step.shift ? GLFW_MOD_SHIFT : 0);
+    held_key_ = step.key;
+    held_shift_ = step.shift;
+    return false;
+  }
+
+ private:
+  struct Step {
+    int key = -1;
+    bool shift = false;
+    std::optional<ImVec2> cursor;
+  };
+
+  static int key_code(const std::string& name) {
+    if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return GLFW_KEY_A + (name[0] - 'A');
+    static const std::pair<const char*, int> kNames[] = {
+        {".", GLFW_KEY_PERIOD},  {",", GLFW_KEY_COMMA}, {"Right", GLFW_KEY_RIGHT}, {"Left", GLFW_KEY_LEFT},
+        {"Home", GLFW_KEY_HOME}, {"End", GLFW_KEY_END}, {"Space", GLFW_KEY_SPACE}};
+    for (const auto& [n, code] : kNames)
+      if (name == n) return code;
+    return -1;
+  }
+
+  bool active_ = false;
+  std::vector<Step> steps_;
+  std::size_t next_ = 0;
+  int held_key_ = -1;  ///< the key pressed on the last frame, released on this one
+  bool held_shift_ = false;
+  std::optional<ImVec2> cursor_;
+};
 
 // Mouse on the 3D view drives the free camera: left drag orbits, right (or middle) drag pans, the wheel zooms.
 void handle_mouse(ViewerState& state, const ViewRect& view) {
@@ -209,16 +331,20 @@ struct FramebufferSize {
 };
 
 // One frame into the back buffer: input, the cleared window, the shot, the controls.
+// `file_changed` is set when a camera key changed the scene file; `cursor`, when set, is where the
+// mouse is taken to be (a test's input script).
 FramebufferSize draw_window_frame(ViewerState& state, SceneRenderer& renderer, GLFWwindow* window,
-                                  const PreviewOptions& options, const UiFonts& fonts) {
-  const ImGuiIO& io = ImGui::GetIO();
+                                  const PreviewOptions& options, const UiFonts& fonts, const ImVec2* cursor,
+                                  bool& file_changed) {
+  ImGuiIO& io = ImGui::GetIO();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (cursor) io.MousePos = *cursor;
   ImGui::NewFrame();
-  handle_keys(state, window);
   int fb_width = 0, fb_height = 0;
   glfwGetFramebufferSize(window, &fb_width, &fb_height);
   const ViewRect view = view_rect(io.DisplaySize.x, io.DisplaySize.y, options.width, options.height);
+  file_changed = handle_keys(state, window, view);
   handle_mouse(state, view);
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -257,6 +383,7 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
   state.overlays = options.overlays;
   load_scene(state, renderer);
   FileWatch watch(source.path);
+  InputScript input(std::getenv("BSIM_WINDOW_INPUT"));
 
   const double started = glfwGetTime();
   double last_poll = started;
@@ -268,8 +395,15 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
       last_poll = now;
       if (watch.changed()) load_scene(state, renderer);
     }
-    quit = advance_time(state, options, now - started, ImGui::GetIO().DeltaTime);
-    const FramebufferSize fb = draw_window_frame(state, renderer, session.window, options, fonts);
+    quit = advance_time(state, options, now - started, ImGui::GetIO().DeltaTime) || input.feed(session.window);
+    bool file_changed = false;
+    const FramebufferSize fb =
+        draw_window_frame(state, renderer, session.window, options, fonts, input.cursor(), file_changed);
+    if (file_changed) {
+      // Reloaded at once, so the scripted camera shows the change (or the window shows the errors).
+      load_scene(state, renderer);
+      watch.changed();
+    }
     if (glfwWindowShouldClose(session.window)) quit = true;
     if (quit && options.screenshot && !save_screenshot(*options.screenshot, fb.width, fb.height)) return 1;
     glfwSwapBuffers(session.window);

@@ -77,10 +77,14 @@ TimelineData made_up_timeline() {
   int index = 0;
   for (const auto& [time, type] : events) data.events.push_back({index++, time, type, "made-up event"});
   data.drops.push_back({4.9, 3, 2});
+  data.painted = {0, 1, 9, 12};  // ball 3 is the 12, ball 2 the 9
+  // The last description too short for its label, which goes under the bars.
   data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover", "", true, ""},
                  {2.5, 3.1, 1, CameraMode::follow, "follow ball 0", "", true, "cue"},
-                 {3.1, 6.0, 4, CameraMode::look, "look ball 3", "", true, "hit 0 3"}};
-  data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}};
+                 {3.1, 4.9, 4, CameraMode::look, "look ball 3 (12)", "", true, "hit 0 3"},
+                 {4.9, 5.85, 0, CameraMode::hover, "hover", "", true, "pocket 3"},
+                 {5.85, 6.0, 0, CameraMode::follow, "follow ball 2 (9)", "", true, "at 5.85"}};
+  data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}, {4.6, 4.9, 5.2}, {5.7, 5.85, 5.9}};
   data.cue = {{CuePhase::approach, 0.0, 0.9},
               {CuePhase::preflight, 0.9, 2.25},
               {CuePhase::impact, 2.25, 2.6},
