@@ -75,6 +75,26 @@ void add_noise(SoundRandom& random, double decay, double cutoff_hz, double weigh
   }
 }
 
+/// Noise band-passed between `low_hz` and `high_hz` (two one-pole high-passes, then four one-pole
+/// low-passes) under an exponential envelope: a rough ring with no single pitch.
+void add_band_noise(SoundRandom& random, double decay, double low_hz, double high_hz, double weight, int sample_rate,
+                    std::vector<double>& out) {
+  const double keep = std::exp(-2 * kPi * low_hz / sample_rate);
+  const double alpha = 1.0 - std::exp(-2 * kPi * high_hz / sample_rate);
+  double in1 = 0, hp1 = 0, in2 = 0, hp2 = 0;
+  double lp[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double x = random.signed_unit();
+    hp1 = keep * (hp1 + x - in1);
+    in1 = x;
+    hp2 = keep * (hp2 + hp1 - in2);
+    in2 = hp1;
+    double v = hp2;
+    for (double& stage : lp) v = stage += alpha * (v - stage);
+    out[i] += weight * 4 * v * std::exp(-static_cast<double>(i) / (decay * sample_rate));
+  }
+}
+
 /// A mode with its frequency drawn once per hit within +-spread (drawing it every sample is hiss).
 Mode jittered(Mode mode, SoundRandom& random, double spread) {
   mode.frequency *= 1.0 + spread * random.signed_unit();
@@ -96,12 +116,16 @@ std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsP
     out[i] = sum / kSub;
   }
   // The ring that follows, tuned against a recorded click (tests/bench/sound_bench.cpp): the balls
-  // rocking on the cloth-damped slate and the table's frame, 1.9 to 5.2 kHz, dying within tens of ms.
+  // rocking on the cloth-damped slate and the table's frame, a rough band of 1.2 to 3.5 kHz dying
+  // within tens of ms, over a few of its stronger modes.
+  // A longer contact pushes more of its energy into this low band and less into the click itself,
+  // so the ring is relatively stronger for gentle hits (faster hits sound brighter).
+  const double ring = std::pow(tau / 350e-6, 1.5);
   const std::vector<double> pulse = sampled_pulse(tau, sample_rate);
-  add_mode(pulse, jittered({5200, 0.004, 0.10}, random, 0.04), sample_rate, out);
-  add_mode(pulse, jittered({3400, 0.010, 0.12}, random, 0.05), sample_rate, out);
-  add_mode(pulse, jittered({2650, 0.016, 0.12}, random, 0.05), sample_rate, out);
-  add_mode(pulse, jittered({1900, 0.022, 0.06}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({5200, 0.004, 0.06 * ring}, random, 0.04), sample_rate, out);
+  add_mode(pulse, jittered({3400, 0.010, 0.05 * ring}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({2650, 0.016, 0.05 * ring}, random, 0.05), sample_rate, out);
+  add_band_noise(random, 0.022, 1200, 3500, 0.18 * ring, sample_rate, out);
   return out;
 }
 
