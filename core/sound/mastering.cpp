@@ -93,15 +93,22 @@ void master(AudioBuffer& program, const AudioBuffer& floor, std::optional<double
     const std::vector<float> left = oversampled_peaks(program.left), right = oversampled_peaks(program.right);
     for (std::size_t i = 0; i < n; ++i) envelope[i] = std::max(left[i], right[i]);
     const double headroom = std::max(0.1 * ceiling, ceiling - true_peak(floor));
-    double gain = std::min(from_db(*target - *measured), from_db(kMaxLoudnessGainDb));
-    // What the limiter takes off lowers the loudness a little: measure again and correct.
-    for (int round = 0; round < 6; ++round) {
-      mix_into(program, limiter_gain(envelope, gain, headroom, program.sample_rate), floor, out);
+    double gain_db = std::min(*target - *measured, kMaxLoudnessGainDb);
+    // What the limiter takes off lowers the loudness: measure again and correct. Each step divides the
+    // shortfall by how much the last step of gain raised the loudness (the secant), since the harder
+    // the limiter works the less a dB of gain brings.
+    double previous_gain = 0, previous_loudness = *measured;
+    for (int round = 0; round < 12; ++round) {
+      mix_into(program, limiter_gain(envelope, from_db(gain_db), headroom, program.sample_rate), floor, out);
       const std::optional<double> loudness = integrated_loudness(out);
       if (!loudness || std::abs(*loudness - *target) < 0.05) break;
-      const double next = std::min(gain * from_db(*target - *loudness), from_db(kMaxLoudnessGainDb));
-      if (next == gain) break;
-      gain = next;
+      const double step = gain_db - previous_gain;
+      const double slope = std::abs(step) > 1e-9 ? std::clamp((*loudness - previous_loudness) / step, 0.2, 1.0) : 1.0;
+      const double next = std::min(gain_db + (*target - *loudness) / slope, kMaxLoudnessGainDb);
+      if (next == gain_db) break;
+      previous_gain = gain_db;
+      previous_loudness = *loudness;
+      gain_db = next;
     }
   }
   // A last guard: the gain's own movement can lift a peak between samples a hair.

@@ -14,10 +14,10 @@ inline constexpr double kDefaultLoudness = -16.0;
 /// and half a dB more leaves room for meters that oversample differently and for 16-bit rounding.
 inline constexpr double kTruePeakCeilingDb = -1.5;
 /// dB, the most the track is raised to reach its loudness (a near-silent shot stays quiet).
-inline constexpr double kMaxLoudnessGainDb = 40.0;
+inline constexpr double kMaxLoudnessGainDb = 60.0;
 /// s: the limiter's look-ahead (its gain ramps down over twice this before a peak) and release.
-inline constexpr double kLimiterLookahead = 0.0015;
-inline constexpr double kLimiterRelease = 0.03;
+inline constexpr double kLimiterLookahead = 0.0025;
+inline constexpr double kLimiterRelease = 0.08;
 
 /// Finishes `program` (the effects, their reverberation and any music) over the room's `floor`
 /// (room tone, never scaled): with a `target`, scales `program` so that the sum has that integrated

@@ -79,8 +79,14 @@ void render_rumble(const std::vector<RumblePoint>& points, double start, double 
     const RumblePoint& q = points[k + 1];
     const long long first = std::llround((start + static_cast<double>(k) * kRumbleStep) * rate);
     const long long last = std::llround((start + static_cast<double>(k + 1) * kRumbleStep) * rate);
-    const double roll0 = rumble_level(p.roll), roll1 = rumble_level(q.roll);
-    const double slip0 = (1 - muffle) * slip_level(p.slip), slip1 = (1 - muffle) * slip_level(q.slip);
+    // Unit-RMS scales: uniform noise has variance 1/3; a Butterworth low-pass passes 1.11 fc of
+    // noise bandwidth, a unit-peak band-pass pi/2 fc/Q. They glide with the loudness, as a step in
+    // them every millisecond would be a buzz.
+    auto rumble_norm = [&](double roll) { return 1 / std::sqrt(1.0 / 3 * 2.22 * rumble_cutoff(roll, muffle) / rate); };
+    auto hiss_norm = [&](double slip) { return 1 / std::sqrt(1.0 / 3 * kPi * hiss_centre(slip) / kHissQ / rate); };
+    const double roll0 = rumble_level(p.roll) * rumble_norm(p.roll), roll1 = rumble_level(q.roll) * rumble_norm(q.roll);
+    const double slip0 = (1 - muffle) * slip_level(p.slip) * hiss_norm(p.slip);
+    const double slip1 = (1 - muffle) * slip_level(q.slip) * hiss_norm(q.slip);
     if (roll0 == 0 && roll1 == 0 && slip0 == 0 && slip1 == 0) {
       running = false;  // silent: the filters start afresh when it moves again
       continue;
@@ -96,22 +102,18 @@ void render_rumble(const std::vector<RumblePoint>& points, double start, double 
     const double cutoff = rumble_cutoff(roll, muffle), centre = hiss_centre(slip);
     rumble.tune(cutoff, 0.7071, rate);
     hiss.tune(centre, kHissQ, rate);
-    // Unit-RMS scales: uniform noise has variance 1/3; a Butterworth low-pass passes 1.11 fc of
-    // noise bandwidth, a unit-peak band-pass pi/2 fc/Q.
-    const double rumble_norm = 1 / std::sqrt(1.0 / 3 * 2.22 * cutoff / rate);
-    const double hiss_norm = 1 / std::sqrt(1.0 / 3 * kPi * centre / kHissQ / rate);
     const double turn_rate = roll / (2 * kPi * ball_radius) / rate;  // turns per sample
     for (long long i = std::max(first, 0LL); i < last && i < length; ++i) {
       const double f = static_cast<double>(i - first) / static_cast<double>(last - first);
       const double noise = random.signed_unit();
-      const double low = rumble_norm * rumble.process(noise);
+      const double low = rumble.process(noise);
       bed.process(low);
       hiss.process(noise);
       turn += turn_rate;
       turn -= std::floor(turn);
       const double uneven = 1 + kTurnUnevenness * std::sin(2 * kPi * turn);
       const double s = (roll0 + f * (roll1 - roll0)) * uneven * 0.75 * (low + 0.9 * bed.band()) +
-                       (slip0 + f * (slip1 - slip0)) * hiss_norm * hiss.band();
+                       (slip0 + f * (slip1 - slip0)) * hiss.band();
       const auto at = static_cast<std::size_t>(i);
       out.left[at] += static_cast<float>((p.left + f * (q.left - p.left)) * s);
       out.right[at] += static_cast<float>((p.right + f * (q.right - p.right)) * s);
