@@ -7,8 +7,8 @@
 
 namespace bsim {
 
-/// LUFS, the integrated loudness the track is brought to unless told otherwise (EBU R128's
-/// recommendation for online video, as YouTube and Apple normalise to about -14 to -16).
+/// LUFS, the integrated loudness the track is brought to unless told otherwise: the level AES TD1004
+/// ("Loudness of audio streaming and network file playback") recommends for media played online.
 inline constexpr double kDefaultLoudness = -16.0;
 /// dBTP, the finished track's true peak stays at or under this: EBU R128 asks for at most -1 dBTP,
 /// and half a dB more leaves room for meters that oversample differently and for 16-bit rounding.
