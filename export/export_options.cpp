@@ -1,6 +1,7 @@
 #include "export_options.h"
 
 #include "command_line.h"
+#include "mastering.h"
 
 namespace bsim {
 
@@ -21,6 +22,7 @@ options:
   --jobs N               POV-Ray processes run in parallel, 1 to 1024 (default: one per core)
   --audio-lead SECONDS   sounds start this long before their event, 0 to 1 (default: 0.005)
   --music FILE           a music file mixed under the sound track (default: none)
+  --loudness LUFS|off    the sound track's integrated loudness, -40 to -10, or off (default: -16)
   --strict               accept only the original scene language: no comments, spin, pocket or param
   --quiet                print no progress or closing lines (errors and warnings still print)
   --camera auto|scene    auto: film with the automatic director's camera script instead of the
@@ -83,8 +85,20 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
     o.music_path = *v;
     return true;
   }
-  message = unknown_option_message(
-      name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs", "--audio-lead", "--music"});
+  if (name == "--loudness") {
+    const auto v = value();
+    if (!v) return false;
+    if (*v == "off") {
+      o.loudness.reset();
+      return true;
+    }
+    const auto lufs = parse_real_option(*v);
+    if (!lufs || *lufs < kMinLoudness || *lufs > kMaxLoudness) return bad(*v, "LUFS from -40 to -10, or off");
+    o.loudness = *lufs;
+    return true;
+  }
+  message = unknown_option_message(name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs",
+                                          "--audio-lead", "--music", "--loudness"});
   return false;
 }
 
@@ -94,6 +108,7 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
                                         std::string& message) {
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
+  options.loudness = kDefaultLoudness;
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
   switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-export " BSIM_VERSION "\n", apply,
                          message)) {

@@ -13,6 +13,9 @@ enum class Quality { draft, final };
 /// s: how long before its event each sound starts, unless --audio-lead says otherwise.
 inline constexpr double kDefaultAudioLead = 0.005;
 inline constexpr double kMaxAudioLead = 1.0;  ///< s
+/// LUFS: the loudness --loudness accepts.
+inline constexpr double kMinLoudness = -40.0;
+inline constexpr double kMaxLoudness = -10.0;
 inline constexpr int kMaxJobs = 1024;
 
 /// fps, width, height and strict are the options both programs share (SharedOptions).
@@ -25,6 +28,7 @@ struct ExportOptions : SharedOptions {
   int jobs = 0;             ///< 0: one per core
   double audio_lead = 0.0;  ///< s; set to the documented default by the parser
   std::string music_path;
+  std::optional<double> loudness;  ///< LUFS of the sound track; none: not normalised (set by the parser)
 };
 
 enum class CommandLineOutcome { run, exit_success, exit_usage };

@@ -8,6 +8,7 @@
 
 #include "export_options.h"
 #include "fixtures.h"
+#include "mastering.h"
 #include "support.h"
 
 using namespace bsim;
@@ -105,6 +106,22 @@ TEST_SUITE("export command line") {
     CHECK(rejection({"-o"}) == "-o needs a value");
     CHECK(rejection({"--strict=yes"}).find("--strict takes no value") != std::string::npos);
     CHECK(rejection({"a.scn", "b.scn"}) == "more than one scene given: 'a.scn' and 'b.scn'");
+  }
+
+  TEST_CASE("--loudness takes LUFS from -40 to -10 or off, -16 by default") {
+    ExportOptions o;
+    std::string message;
+    REQUIRE(parse({}, o, message) == CommandLineOutcome::run);
+    CHECK(o.loudness == kDefaultLoudness);
+    REQUIRE(parse({"--loudness", "-23"}, o, message) == CommandLineOutcome::run);
+    CHECK(o.loudness == -23.0);
+    REQUIRE(parse({"--loudness=off"}, o, message) == CommandLineOutcome::run);
+    CHECK_FALSE(o.loudness.has_value());
+    for (const char* bad : {"-9", "-41", "loud", "nan", ""})
+      CHECK(rejection({"--loudness", bad}).find("expected LUFS from -40 to -10, or off") != std::string::npos);
+    REQUIRE(parse({"--help"}, o, message) == CommandLineOutcome::exit_success);
+    CHECK(message.find("--loudness LUFS|off") != std::string::npos);
+    CHECK(message.find("(default: -16)") != std::string::npos);
   }
 
   TEST_CASE("--help lists every option with its default; --version names the program") {

@@ -1,5 +1,7 @@
 // The sound track: each sound starts at its event, louder for faster hits, on the side of the
-// picture where it happens, exactly as long as the shot, the same bytes every time.
+// picture where it happens; the rolling heard while a ball rolls and not after; a room under it all;
+// brought to its loudness with the true peak under -1 dBTP (by our meter and by ffmpeg's); exactly
+// as long as the shot, the same bytes every time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -7,9 +9,15 @@
 #include <cstdint>
 
 #include "fixtures.h"
+#include "loudness.h"
+#include "mastering.h"
+#include "motion.h"
 #include "music_bed.h"
+#include "rolling.h"
+#include "room.h"
 #include "shot.h"
 #include "shots.h"
+#include "simulate.h"
 #include "sound_mix.h"
 #include "sound_synth.h"
 #include "soundtrack.h"
@@ -78,7 +86,9 @@ TEST_SUITE("sound") {
 
   TEST_CASE("every kind of sound gets louder with speed, and its peak is its gain") {
     const PhysicsParams physics;
-    for (SoundKind kind : {SoundKind::ball_ball, SoundKind::ball_rail, SoundKind::cue, SoundKind::pocket}) {
+    for (SoundKind kind : {SoundKind::ball_ball, SoundKind::ball_rail, SoundKind::cue, SoundKind::pocket_fall,
+                           SoundKind::pocket_knock, SoundKind::pocket_roll}) {
+      CAPTURE(static_cast<int>(kind));
       double previous = 0;
       for (double speed : {0.05, 0.3, 1.0, 3.0, 8.0}) {
         const std::vector<float> sound = synth_impact(kind, speed, 42, physics, kSampleRate);
@@ -97,7 +107,8 @@ TEST_SUITE("sound") {
     const std::vector<SoundCue> cues = {{SoundKind::cue, 0.3, 2.0, 0, 1},
                                         {SoundKind::ball_ball, 0.61, 1.0, 0, 2},
                                         {SoundKind::ball_rail, 1.02, 0.5, 0, 3},
-                                        {SoundKind::pocket, 1.5, 0.8, 0, 4}};
+                                        {SoundKind::pocket_fall, 1.5, 0.8, 0, 4},
+                                        {SoundKind::pocket_knock, 1.9, 0.8, 0, 5}};
     for (double lead : {0.0, 0.005, 0.03}) {
       CAPTURE(lead);
       AudioBuffer audio = silence(2.2);
@@ -145,38 +156,168 @@ TEST_SUITE("sound") {
     const auto shot = test::load_clean(kScene, "sound");
     const double duration = shot->timeline.duration();
     const auto samples = static_cast<std::size_t>(std::llround(duration * kSampleRate));
+    const double lead = 0.005;
     AudioBuffer audio;
     std::string error;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {}, samples, audio, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
+                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, audio, error));
     CHECK(audio.left.size() == samples);
     CHECK(audio.right.size() == samples);
 
-    const double loudest = peak(audio, 0, duration);
-    CHECK(loudest > 0.05);
-    CHECK(loudest <= 0.9);
     double previous_hit = -1;
     bool rail_seen = false;
     for (const Event& e : shot->timeline.events()) {
       if (e.type != EventType::cue && e.type != EventType::ball_ball && e.type != EventType::ball_rail) continue;
       CAPTURE(e.index);
       CAPTURE(e.time);
+      const double t = e.time - lead;
       // A hit right after another can hide in its ring; the shot's hits are far apart but for that.
       if (previous_hit < 0 || e.time - previous_hit > 0.06) {
-        CHECK(std::abs(onset_near(audio, e.time) - e.time) <= 0.002);
-        CHECK(peak(audio, e.time, e.time + 0.006) > 4 * peak(audio, e.time - 0.012, e.time - 0.003));
+        CHECK(std::abs(onset_near(audio, t) - t) <= 0.002);
+        CHECK(peak(audio, t, t + 0.006) > 4 * peak(audio, t - 0.012, t - 0.003));
       }
       if (e.type == EventType::ball_rail && e.rail == 2 && !rail_seen) {  // the right-hand cushion
         rail_seen = true;
-        CHECK(energy(audio.right, e.time, e.time + 0.05) > energy(audio.left, e.time, e.time + 0.05));
+        CHECK(energy(audio.right, t, t + 0.05) > energy(audio.left, t, t + 0.05));
       }
       previous_hit = e.time;
     }
     CHECK(rail_seen);
 
     AudioBuffer again;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {}, samples, again, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
+                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, again, error));
     CHECK(again.left == audio.left);
     CHECK(again.right == audio.right);
+  }
+
+  TEST_CASE("a rolling ball rumbles, louder the faster it rolls, and falls silent when it stops") {
+    const auto shot = test::load_clean(kScene, "sound");
+    const Timeline& timeline = shot->timeline;
+    const double duration = timeline.duration();
+    AudioBuffer audio = silence(duration);
+    mix_rolling({shot->scene, timeline, *shot->camera}, audio, nullptr);
+    // Ball 1 is struck, rolls to the cushion and back out, then stops: every window of it rolling
+    // holds rumble, and after the last of the balls stops there is not one sample.
+    double last_stop = 0;
+    for (int ball = 0; ball < timeline.ball_count(); ++ball) {
+      const MotionSegment& last = timeline.segments(ball).back();
+      REQUIRE(last.start.motion == Motion::stationary);
+      last_stop = std::max(last_stop, last.t0);
+    }
+    REQUIRE(last_stop < duration - 0.2);
+    CHECK(peak(audio, last_stop + kRumbleStep, duration) == 0.0);
+    CHECK(peak(audio, 0, kCueLeadTime - kRumbleStep) == 0.0);  // before the stroke nothing rolls
+    std::vector<double> levels;
+    for (const MotionSegment& seg : timeline.segments(1)) {
+      if (seg.start.motion != Motion::rolling) continue;
+      const double end = seg.t0 + std::min(0.3, 0.5 * transition_time(seg.start, timeline.physics()));
+      const double rms = std::sqrt((energy(audio.left, seg.t0 + 0.01, end) + energy(audio.right, seg.t0 + 0.01, end)) /
+                                   ((end - seg.t0 - 0.01) * kSampleRate));
+      CAPTURE(seg.t0);
+      CHECK(rms > 1e-4);
+      levels.push_back(rms);
+    }
+    REQUIRE_FALSE(levels.empty());
+    CHECK(rumble_level(0.0) == 0.0);
+    CHECK(rumble_level(0.5) < rumble_level(1.0));
+    CHECK(rumble_level(1.0) < rumble_level(3.0));
+    CHECK(slip_level(0.0) == 0.0);
+    CHECK(slip_level(0.5) < slip_level(2.0));
+  }
+
+  TEST_CASE("K-weighting at 48 kHz is BS.1770-4's filter; a sine's loudness and a true peak between samples") {
+    const auto k = k_weighting(48000);
+    CHECK(k[0].b[0] == doctest::Approx(1.53512485958697).epsilon(1e-9));
+    CHECK(k[0].b[1] == doctest::Approx(-2.69169618940638).epsilon(1e-9));
+    CHECK(k[0].b[2] == doctest::Approx(1.19839281085285).epsilon(1e-9));
+    CHECK(k[0].a[0] == doctest::Approx(-1.69065929318241).epsilon(1e-9));
+    CHECK(k[0].a[1] == doctest::Approx(0.73248077421585).epsilon(1e-9));
+    CHECK(k[1].a[0] == doctest::Approx(-1.99004745483398).epsilon(1e-9));
+    CHECK(k[1].a[1] == doctest::Approx(0.99007225036621).epsilon(1e-9));
+
+    // A 997 Hz sine at -20 dBFS in both channels: -20 LUFS (BS.1770-4: 0 dBFS in one channel is -3.01).
+    AudioBuffer sine = silence(2.0);
+    for (std::size_t i = 0; i < sine.left.size(); ++i)
+      sine.left[i] = sine.right[i] =
+          static_cast<float>(0.1 * std::sin(2 * M_PI * 997 * static_cast<double>(i) / kSampleRate));
+    REQUIRE(integrated_loudness(sine).has_value());
+    CHECK(*integrated_loudness(sine) == doctest::Approx(-20.0).epsilon(0.005));
+    CHECK_FALSE(integrated_loudness(silence(2.0)).has_value());
+
+    // A quarter-rate sine 45 degrees off the samples: they reach 0.707 of its true peak.
+    AudioBuffer quarter = silence(0.1);
+    for (std::size_t i = 0; i < quarter.left.size(); ++i)
+      quarter.left[i] = static_cast<float>(0.5 * std::sin(M_PI / 2 * static_cast<double>(i) + M_PI / 4));
+    CHECK(peak(quarter, 0.01, 0.09) == doctest::Approx(0.5 * std::sqrt(0.5)).epsilon(1e-3));
+    CHECK(true_peak(quarter) == doctest::Approx(0.5).epsilon(0.02));
+  }
+
+  TEST_CASE("the finished track: its loudness by our meter and ffmpeg's, true peak under -1 dBTP, never silent") {
+    test::require_program("ffmpeg");
+    const auto shot = test::load_clean(kScene, "sound");
+    const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
+    test::TempDir dir;
+    for (double target : {kDefaultLoudness, -23.0}) {
+      CAPTURE(target);
+      AudioBuffer audio;
+      std::string error;
+      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
+                             {.lead = 0.005, .music_path = {}, .loudness = target}, samples, audio, error));
+      REQUIRE(integrated_loudness(audio).has_value());
+      CHECK(std::abs(*integrated_loudness(audio) - target) < 1.0);
+      CHECK(to_db(true_peak(audio)) < -1.0);
+      CHECK(quietest_window_db(audio, 0.1) > -70.0);
+
+      const std::string path = (dir.path / "track.wav").string();
+      REQUIRE(write_wav(path, audio, error));
+      const test::CommandResult r = test::run_command("ffmpeg -hide_banner -nostats -i " + test::quoted(path) +
+                                                      " -af ebur128=peak=true -f null -");
+      REQUIRE(r.exit_code == 0);
+      // The summary at the end: "I:  -16.0 LUFS" and, under "True peak:", "Peak:  -1.6 dBFS".
+      const std::size_t summary = r.err.rfind("Integrated loudness:");
+      REQUIRE(summary != std::string::npos);
+      const std::size_t i = r.err.find("I:", summary), p = r.err.find("Peak:", summary);
+      REQUIRE(i != std::string::npos);
+      REQUIRE(p != std::string::npos);
+      const double ffmpeg_loudness = std::stod(r.err.substr(i + 2)), ffmpeg_peak = std::stod(r.err.substr(p + 5));
+      CHECK(std::abs(ffmpeg_loudness - target) < 1.0);
+      CHECK(ffmpeg_peak < -1.0);
+    }
+  }
+
+  TEST_CASE("with --loudness off the track keeps its level, only kept under the true-peak ceiling") {
+    const auto shot = test::load_clean(kScene, "sound");
+    const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
+    AudioBuffer audio;
+    std::string error;
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
+                           {.lead = 0.005, .music_path = {}, .loudness = std::nullopt}, samples, audio, error));
+    CHECK(to_db(true_peak(audio)) <= kTruePeakCeilingDb + 0.01);
+    CHECK(quietest_window_db(audio, 0.1) > -70.0);
+  }
+
+  TEST_CASE("the room: its tone is continuous at its level, its reverberation short and the same every time") {
+    const AudioBuffer tone = room_tone(kSampleRate, 3);
+    double sum = 0;
+    for (std::size_t i = 0; i < tone.left.size(); ++i)
+      sum += 0.5 * (tone.left[i] * tone.left[i] + tone.right[i] * tone.right[i]);
+    CHECK(10 * std::log10(sum / kSampleRate) == doctest::Approx(kRoomToneDb).epsilon(0.001));
+    CHECK(quietest_window_db(tone, 0.1) > kRoomToneDb - 3);
+    CHECK(room_tone(1000, 3).left == room_tone(1000, 3).left);
+
+    std::vector<float> send(kSampleRate, 0.0f);
+    send[0] = 1.0f;
+    AudioBuffer wet = silence(1.0), again = silence(1.0);
+    add_reverb(send, wet);
+    add_reverb(send, again);
+    CHECK(wet.left == again.left);
+    CHECK(peak(wet, 0, kReverbPreDelay - 0.001) == 0.0);  // nothing before the first reflections
+    const double early = 0.5 * (energy(wet.left, 0, 0.1) + energy(wet.right, 0, 0.1));
+    CHECK(early > 0);
+    CHECK(early < std::pow(10.0, kReverbLevelDb / 10));  // under the direct sound's energy (1)
+    // Well down by 0.7 s (the reverberation time is 0.45 s): under a ten-thousandth of the early energy.
+    CHECK(0.5 * (energy(wet.left, 0.7, 1.0) + energy(wet.right, 0.7, 1.0)) < 1e-4 * early);
   }
 
   TEST_CASE("the WAV file is 48 kHz 16-bit stereo PCM holding every sample") {
@@ -222,13 +363,29 @@ TEST_SUITE("sound") {
     REQUIRE(music.left.size() == static_cast<std::size_t>(2 * kSampleRate));
     CHECK(std::abs(music.left.front()) < 1e-3);  // faded in
     CHECK(std::abs(music.left.back()) < 1e-3);   // faded out
-    CHECK(peak(music, 0, 2) == doctest::Approx(kMusicLevel).epsilon(0.01));
-    CHECK(peak(music, 1.2, 1.3) > 0.5 * kMusicLevel);  // the half-second tone plays on, looped
+    CHECK(peak(music, 1.2, 1.3) > 0.5 * 0.8);    // the half-second tone plays on, looped
 
     REQUIRE(load_music_bed(path, kSampleRate / 10, music, error));  // longer than the shot: trimmed
     CHECK(music.left.size() == static_cast<std::size_t>(kSampleRate / 10));
 
     CHECK_FALSE(load_music_bed((dir.path / "none.ogg").string(), 100, music, error));
     CHECK(error.find("none.ogg") != std::string::npos);
+
+    // Under the effects of a shot: the track still comes to its loudness, and it is the same bytes
+    // every time it is made.
+    const auto shot = test::load_clean(kScene, "sound");
+    const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
+    std::string bytes[2];
+    for (int k = 0; k < 2; ++k) {
+      AudioBuffer track;
+      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
+                             {.lead = 0.005, .music_path = path, .loudness = kDefaultLoudness}, samples, track, error));
+      REQUIRE(integrated_loudness(track).has_value());
+      CHECK(std::abs(*integrated_loudness(track) - kDefaultLoudness) < 1.0);
+      const std::string wav = (dir.path / ("track" + std::to_string(k) + ".wav")).string();
+      REQUIRE(write_wav(wav, track, error));
+      bytes[k] = test::require_file(wav);
+    }
+    CHECK(bytes[0] == bytes[1]);
   }
 }

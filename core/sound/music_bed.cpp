@@ -105,15 +105,6 @@ bool load_music_bed(const std::string& path, std::size_t sample_count, AudioBuff
   out.left = resample(left, info.samplerate, out.sample_rate);
   out.right = resample(right, info.samplerate, out.sample_rate);
   fit_music(out, sample_count);
-  float peak = 0.0f;
-  for (std::size_t i = 0; i < sample_count; ++i) peak = std::max({peak, std::abs(out.left[i]), std::abs(out.right[i])});
-  if (peak > 0.0f) {
-    const auto gain = static_cast<float>(kMusicLevel / peak);
-    for (std::size_t i = 0; i < sample_count; ++i) {
-      out.left[i] *= gain;
-      out.right[i] *= gain;
-    }
-  }
   return true;
 }
 

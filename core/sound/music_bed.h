@@ -1,15 +1,13 @@
 #pragma once
 // The optional music under the effects (the seed's "music sound track"): any file libsndfile reads,
-// made stereo at the track's rate, looped or trimmed to the shot, faded in and out.
+// made stereo at the track's rate, looped or trimmed to the shot, faded in and out; its level is set
+// by the sound track (soundtrack.h) from its loudness.
 #include <cstddef>
 #include <string>
 
 #include "audio_buffer.h"
 
 namespace bsim {
-
-/// Peak level of the music bed, well under the effects (about -12 dBFS).
-inline constexpr double kMusicLevel = 0.25;
 
 /// Fills `out` (sample rate already set) with exactly `sample_count` samples per channel of the
 /// music in `path`. Returns false with `error` set ("PATH: reason") when the file cannot be read.

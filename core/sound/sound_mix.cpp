@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "camera_interpolation.h"
+#include "pocket_fall.h"
 #include "simulate.h"
 
 namespace bsim {
@@ -21,15 +22,46 @@ std::uint64_t cue_seed(SoundKind kind, int index, int ball) {
          (static_cast<std::uint64_t>(ball) + 7) * 0x165667b19e3779f9ULL;
 }
 
-/// When a dropped ball comes to rest at the bottom of its pocket: the knock heard.
-double landing_time(const Timeline& timeline, const PocketDrop& drop) {
-  for (const MotionSegment& segment : timeline.segments(drop.ball))
-    if (segment.t0 >= drop.time && segment.start.motion == Motion::pocketed) return segment.t0;
-  return drop.time;
+SoundCue event_cue(const SoundSource& shot, SoundKind kind, double t, double speed, const Vec3& where,
+                   std::uint64_t seed) {
+  const CameraPose pose = shot.camera.pose(t);
+  return {kind,  t,
+          speed, kPanWidth * view_position(pose, where, kCameraFovDeg),
+          seed,  distance_gain((where - pose.location).norm())};
 }
 
-double pan_of(const SoundSource& shot, double t, const Vec3& where) {
-  return kPanWidth * view_position(shot.camera.pose(t), where, kCameraFovDeg);
+/// s: how finely a pocket fall is searched for its knocks (the fall's own integration step).
+constexpr double kFallScan = 1.0 / 2000.0;
+/// m/s: a change of the falling ball's horizontal velocity bigger than this is a knock on the liner.
+constexpr double kKnockJump = 0.02;
+
+/// The sounds of one ball dropping into a pocket: the fall over the lip as it enters, a knock for each
+/// bounce off the liner (found where the fall's horizontal velocity jumps: only the liner changes it),
+/// a knock as it lands at the bottom (at the speed it lands with), and its roll away from there.
+void add_pocket_drop(const SoundSource& shot, const PocketDrop& drop, int index, std::vector<SoundCue>& cues) {
+  const Timeline& timeline = shot.timeline;
+  const Vec3 pocket = shot.scene.pockets[static_cast<std::size_t>(drop.pocket)].center;
+  auto cue = [&](SoundKind kind, double t, double speed, const Vec3& where, int part) {
+    cues.push_back(event_cue(shot, kind, t, speed, where, cue_seed(kind, index * 64 + part, drop.ball)));
+  };
+  const BallState entry = timeline.motion_state(drop.ball, drop.time);
+  cue(SoundKind::pocket_fall, drop.time, std::hypot(entry.velocity.x(), entry.velocity.y()), entry.position, 0);
+  double t = drop.time;
+  BallState previous = entry;
+  int part = 1;
+  while (t < timeline.duration()) {
+    t += kFallScan;
+    const BallState s = timeline.motion_state(drop.ball, t);
+    if (s.motion == Motion::pocketed) {
+      cue(SoundKind::pocket_knock, t, std::abs(previous.velocity.z()), s.position, part++);
+      cue(SoundKind::pocket_roll, t + 0.04, 0.25 + 0.3 * std::abs(previous.velocity.z()), pocket, part++);
+      return;
+    }
+    const Vec3 jump(s.velocity.x() - previous.velocity.x(), s.velocity.y() - previous.velocity.y(), 0);
+    if (s.motion == Motion::falling && previous.motion == Motion::falling && jump.norm() > kKnockJump)
+      cue(SoundKind::pocket_knock, t, jump.norm() / (1 + kPocketWallRestitution), s.position, part++);
+    previous = s;
+  }
 }
 
 }  // namespace
@@ -43,6 +75,16 @@ double view_position(const CameraPose& camera, const Vec3& point, double fov_deg
   const double half = fov_deg * std::numbers::pi / 360.0;
   const double angle = std::atan2(across, std::max(ahead, 0.0));
   return std::clamp(angle / half, -1.0, 1.0);
+}
+
+double distance_gain(double distance) { return kReferenceDistance / std::max(distance, kNearestDistance); }
+
+Placement placement(const CameraPose& camera, const Vec3& where) {
+  // Equal-power pan: the sum of the channels' powers is the same wherever the sound sits.
+  const double pan = kPanWidth * view_position(camera, where, kCameraFovDeg);
+  const double angle = (pan + 1.0) * std::numbers::pi / 4.0;
+  const double gain = distance_gain((where - camera.location).norm());
+  return {gain * std::cos(angle), gain * std::sin(angle), 1.0};
 }
 
 std::vector<SoundCue> sound_cues(const SoundSource& shot) {
@@ -61,38 +103,34 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
       // than a numbered event are not heard).
       for (const Contact& c : e.contacts)
         if (c.speed >= kMinEventSpeed)
-          cues.push_back(
-              {kind, c.time, c.speed, pan_of(shot, c.time, c.where), cue_seed(kind, e.index, c.a * 16 + c.b)});
+          cues.push_back(event_cue(shot, kind, c.time, c.speed, c.where, cue_seed(kind, e.index, c.a * 16 + c.b)));
       continue;
     }
-    cues.push_back({kind, e.time, e.speed, pan_of(shot, e.time, e.where), cue_seed(kind, e.index, ball)});
+    cues.push_back(event_cue(shot, kind, e.time, e.speed, e.where, cue_seed(kind, e.index, ball)));
   }
   const auto& drops = shot.timeline.pocket_drops();
-  for (std::size_t i = 0; i < drops.size(); ++i) {
-    const PocketDrop& drop = drops[i];
-    const double t = landing_time(shot.timeline, drop);
-    const double speed = shot.timeline.state(drop.ball, drop.time).velocity.norm();
-    const Vec3 where = shot.scene.pockets[static_cast<std::size_t>(drop.pocket)].center;
-    cues.push_back({SoundKind::pocket, t, speed, pan_of(shot, t, where),
-                    cue_seed(SoundKind::pocket, static_cast<int>(i), drop.ball)});
-  }
+  for (std::size_t i = 0; i < drops.size(); ++i) add_pocket_drop(shot, drops[i], static_cast<int>(i), cues);
   std::stable_sort(cues.begin(), cues.end(), [](const SoundCue& a, const SoundCue& b) { return a.time < b.time; });
   return cues;
 }
 
-void mix_cues(const std::vector<SoundCue>& cues, const PhysicsParams& physics, double lead, AudioBuffer& out) {
+void mix_cues(const std::vector<SoundCue>& cues, const PhysicsParams& physics, double lead, AudioBuffer& out,
+              std::vector<float>* send) {
   const auto length = static_cast<long long>(out.left.size());
   for (const SoundCue& cue : cues) {
     const std::vector<float> sound = synth_impact(cue.kind, cue.speed, cue.seed, physics, out.sample_rate);
     // Equal-power pan: the sum of the channels' powers is the same wherever the sound sits.
     const double angle = (std::clamp(cue.pan, -1.0, 1.0) + 1.0) * std::numbers::pi / 4.0;
-    const auto gain_left = static_cast<float>(std::cos(angle)), gain_right = static_cast<float>(std::sin(angle));
+    const auto gain_left = static_cast<float>(cue.gain * std::cos(angle));
+    const auto gain_right = static_cast<float>(cue.gain * std::sin(angle));
     const long long start = std::llround((cue.time - lead) * out.sample_rate);
     for (long long i = std::max(0LL, -start); i < static_cast<long long>(sound.size()); ++i) {
       const long long at = start + i;
       if (at >= length) break;
       out.left[static_cast<std::size_t>(at)] += gain_left * sound[static_cast<std::size_t>(i)];
       out.right[static_cast<std::size_t>(at)] += gain_right * sound[static_cast<std::size_t>(i)];
+      if (send && static_cast<std::size_t>(at) < send->size())
+        (*send)[static_cast<std::size_t>(at)] += sound[static_cast<std::size_t>(i)];
     }
   }
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Procedural impact sounds, one mono burst per collision, synthesised from the contact it models:
 // a Hertz force pulse heard as acceleration noise for ball on ball (Koss & Alfredson 1973; Chadwick,
-// Zheng & James 2012), the same pulse driving a few damped modes for cushion, cue tip and pocket
-// (modal synthesis after van den Doel, Kry & Pai, "FoleyAutomatic", 2001).
+// Zheng & James 2012), the same pulse driving a few damped modes for cushion, cue tip and the pocket's
+// lip and liner (modal synthesis after van den Doel, Kry & Pai, "FoleyAutomatic", 2001), and the
+// rolling model of rolling.h for a pocketed ball rolling away inside the table.
 #include <cstdint>
 #include <vector>
 
@@ -10,7 +11,14 @@
 
 namespace bsim {
 
-enum class SoundKind { ball_ball, ball_rail, cue, pocket };
+enum class SoundKind {
+  ball_ball,     ///< a contact between two balls
+  ball_rail,     ///< a ball against a cushion
+  cue,           ///< the cue tip striking the cue ball
+  pocket_fall,   ///< a ball tipping over a pocket's lip into the pocket
+  pocket_knock,  ///< a falling ball knocking against the pocket's liner or landing at its bottom
+  pocket_roll,   ///< a pocketed ball rolling away down the table's gutter
+};
 
 /// A small deterministic generator (splitmix64), so sounds never depend on the standard library's
 /// distributions.

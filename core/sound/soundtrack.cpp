@@ -5,38 +5,48 @@
 #include <algorithm>
 #include <cmath>
 
+#include "loudness.h"
 #include "music_bed.h"
+#include "rolling.h"
+#include "room.h"
 #include "sound_mix.h"
 
 namespace bsim {
 
 namespace {
 
-/// Highest sample level after mixing (-1 dBFS): a louder mix is scaled down as a whole, which keeps
-/// every sound's loudness relative to the others.
-constexpr float kCeiling = 0.891f;
+/// Seed of the room tone: the same room for every shot.
+constexpr std::uint64_t kRoomSeed = 0x526f6f6d546f6e65ULL;
+
+void add(AudioBuffer& to, const AudioBuffer& from, double gain) {
+  for (std::size_t i = 0; i < to.left.size() && i < from.left.size(); ++i) {
+    to.left[i] += static_cast<float>(gain * from.left[i]);
+    to.right[i] += static_cast<float>(gain * from.right[i]);
+  }
+}
 
 }  // namespace
 
 bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
                     std::string& error) {
+  AudioBuffer music;
+  music.sample_rate = kSampleRate;
+  if (!options.music_path.empty() && !load_music_bed(options.music_path, sample_count, music, error)) return false;
   out.sample_rate = kSampleRate;
-  if (options.music_path.empty()) {
-    out.left.assign(sample_count, 0.0f);
-    out.right.assign(sample_count, 0.0f);
-  } else if (!load_music_bed(options.music_path, sample_count, out, error)) {
-    return false;
+  out.left.assign(sample_count, 0.0f);
+  out.right.assign(sample_count, 0.0f);
+  std::vector<float> send(sample_count, 0.0f);
+  mix_cues(sound_cues(shot), shot.timeline.physics(), options.lead, out, &send);
+  mix_rolling(shot, out, &send);
+  add_reverb(send, out);
+  if (!options.music_path.empty()) {
+    // The bed sits kMusicUnderEffects under the effects (or under the target if nothing is heard).
+    const std::optional<double> music_loudness = integrated_loudness(music);
+    const std::optional<double> effects = integrated_loudness(out);
+    const double wanted = (effects ? *effects : options.loudness.value_or(kDefaultLoudness)) - kMusicUnderEffects;
+    if (music_loudness) add(out, music, from_db(wanted - *music_loudness));
   }
-  mix_cues(sound_cues(shot), shot.timeline.physics(), options.lead, out);
-  float peak = 0.0f;
-  for (std::size_t i = 0; i < sample_count; ++i) peak = std::max({peak, std::abs(out.left[i]), std::abs(out.right[i])});
-  if (peak > kCeiling) {
-    const float gain = kCeiling / peak;
-    for (std::size_t i = 0; i < sample_count; ++i) {
-      out.left[i] *= gain;
-      out.right[i] *= gain;
-    }
-  }
+  master(out, room_tone(sample_count, kRoomSeed), options.loudness);
   return true;
 }
 

@@ -1,18 +1,25 @@
 #pragma once
-// The sound track: one synthesised sound per cue, ball-ball, ball-rail event and pocket drop,
-// panned by where the event lies in the camera's view, optionally over a music bed.
+// The sound track: the impacts (sound_mix.h) and the rolling (rolling.h) heard from the camera, the
+// room's reverberation and tone (room.h), optionally a music bed under them, brought to a loudness
+// with its true peak limited (mastering.h).
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "audio_buffer.h"
+#include "mastering.h"
 #include "sound_mix.h"
 
 namespace bsim {
 
+/// LU: the music bed's integrated loudness under the effects' (their reverberation included).
+inline constexpr double kMusicUnderEffects = 12.0;
+
 struct SoundOptions {
   double lead = 0.0;       ///< s, sounds play this much before their event (default chosen in export)
   std::string music_path;  ///< optional music bed (any format libsndfile reads); empty for none
+  std::optional<double> loudness = kDefaultLoudness;  ///< LUFS of the finished track; none: not normalised
 };
 
 /// Mixes the effects (and music) into exactly `sample_count` samples per channel.
