@@ -101,7 +101,9 @@ int run(const bsim::ExportOptions& options) {
   // Every program the run needs is found before any work, so a missing one costs nothing.
   std::string error;
   bsim::RunPrograms programs;
-  if (!bsim::find_run_programs(options, programs, error)) {
+  bsim::ExportOptions staged = options;  // on the farm, this run renders nothing itself
+  staged.no_render = staged.no_render || on_farm;
+  if (!bsim::find_run_programs(staged, programs, error)) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
@@ -117,8 +119,6 @@ int run(const bsim::ExportOptions& options) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  bsim::ExportOptions staged = options;
-  staged.no_render = staged.no_render || on_farm;
   bsim::RunOutcome outcome = produce(shot, staged, programs, stage, summary, error);
   if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, error))
     outcome = bsim::RunOutcome::failed;
