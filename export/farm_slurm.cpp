@@ -339,12 +339,24 @@ int default_farm_chunk(int width, int height, Quality quality) {
 }
 
 std::vector<std::pair<int, int>> farm_chunks(const std::vector<int>& missing, int chunk) {
-  std::vector<std::pair<int, int>> chunks;
+  std::vector<std::pair<int, int>> runs;  // contiguous runs of missing frames
   for (int frame : missing) {
-    if (!chunks.empty() && chunks.back().second == frame - 1 && frame - chunks.back().first < chunk)
-      chunks.back().second = frame;
+    if (!runs.empty() && runs.back().second == frame - 1)
+      runs.back().second = frame;
     else
-      chunks.emplace_back(frame, frame);
+      runs.emplace_back(frame, frame);
+  }
+  // Each run in as few chunks as --chunk allows, of sizes that differ by one at most, so that no
+  // task is left with a short tail.
+  std::vector<std::pair<int, int>> chunks;
+  for (const auto& run : runs) {
+    const int length = run.second - run.first + 1, pieces = (length + chunk - 1) / chunk;
+    int first = run.first;
+    for (int i = 0; i < pieces; ++i) {
+      const int size = length / pieces + (i < length % pieces ? 1 : 0);
+      chunks.emplace_back(first, first + size - 1);
+      first += size;
+    }
   }
   return chunks;
 }
@@ -511,9 +523,11 @@ int SlurmSubmission::submit(std::string& error) {
   conf.frames_job = frames_job;
   conf.movie_job = movie_job;
   if (!write_whole(dir_ + "/" + kConf, conf_text(conf), error)) return 1;
+  int largest = 0;
+  for (const auto& c : chunks_) largest = std::max(largest, c.second - c.first + 1);
   if (!frames_job.empty())
     std::cout << "submitted job " << frames_job << ": " << chunks_.size() << (chunks_.size() == 1 ? " task" : " tasks")
-              << " render " << missing_ << " of " << frames_ << " frames, up to " << chunk_ << " a task\n";
+              << " render " << missing_ << " of " << frames_ << " frames, up to " << largest << " a task\n";
   else
     std::cout << "every frame is rendered already\n";
   std::cout << "submitted job " << movie_job << ": checks every frame and writes " << dir_

@@ -28,7 +28,8 @@ double estimated_frame_seconds(int width, int height, Quality quality);
 /// The default --chunk: frames in about kFarmTaskSeconds of POV-Ray time, at least 1.
 int default_farm_chunk(int width, int height, Quality quality);
 
-/// Contiguous runs of `missing` (sorted frame numbers), each split into pieces of at most `chunk`.
+/// Contiguous runs of `missing` (sorted frame numbers), each split into as few pieces of at most
+/// `chunk` frames as it takes, of nearly equal sizes.
 std::vector<std::pair<int, int>> farm_chunks(const std::vector<int>& missing, int chunk);
 
 /// `--farm slurm`: submitting a run. Used by billiards-export's run in three steps around its

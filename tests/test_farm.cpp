@@ -65,6 +65,9 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(bsim::farm_chunks({0, 1, 2, 3, 4, 7, 8, 10}, 3) == Chunks{{0, 2}, {3, 4}, {7, 8}, {10, 10}});
     CHECK(bsim::farm_chunks({}, 3).empty());
     CHECK(bsim::farm_chunks({5, 6, 7}, 100) == Chunks{{5, 7}});
+    std::vector<int> all(300);
+    for (int k = 0; k < 300; ++k) all[k] = k;
+    CHECK(bsim::farm_chunks(all, 196) == Chunks{{0, 149}, {150, 299}});  // two halves, not 196 and 104
   }
 
   TEST_CASE("the command line: --farm's modes, --chunk and --sbatch-option go with --farm slurm") {

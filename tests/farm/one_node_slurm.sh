@@ -8,12 +8,41 @@
 #   bash tests/farm/one_node_slurm.sh BILLIARDS_EXPORT
 # Exits 77 (ctest: skipped) when not root or Slurm is not installed, except in CI (CI=true), where the
 # test command installs Slurm and runs as root, so either is a failure.
+#
+# The same cluster, started to try the farm by hand (README "Rendering on a Slurm cluster"):
+#   bash tests/farm/one_node_slurm.sh --start DIR   # leaves the daemons running; DIR/slurm.conf
+#   bash tests/farm/one_node_slurm.sh --stop DIR    # cancels its jobs and stops the daemons
 set -euo pipefail
-export_bin=$(realpath "$1")
 export PATH="$PATH:/usr/sbin:/sbin"
+mode=test
+case "${1:-}" in
+  --start | --stop)
+    mode=${1#--}
+    [ $# -eq 2 ] || { echo "usage: $0 --start|--stop DIR" >&2; exit 2; }
+    t=$(realpath -m "$2")
+    ;;
+  "") echo "usage: $0 BILLIARDS_EXPORT, or $0 --start|--stop DIR" >&2; exit 2 ;;
+  *) export_bin=$(realpath "$1") ;;
+esac
+
+# Stops the daemon with process id $1: SIGTERM, then SIGKILL after 10 s.
+stop_pid() {
+  kill -TERM "$1" 2>/dev/null || return 0
+  for _ in $(seq 100); do kill -0 "$1" 2>/dev/null || break; sleep 0.1; done
+  kill -KILL "$1" 2>/dev/null || true
+  wait "$1" 2>/dev/null || true
+}
+if [ "$mode" = stop ]; then
+  [ -f "$t/daemons.pids" ] || { echo "no cluster of this script runs in $t (no daemons.pids)" >&2; exit 1; }
+  SLURM_CONF="$t/slurm.conf" timeout 20 scancel --full --user=root >/dev/null 2>&1 || true
+  for pid in $(tac "$t/daemons.pids"); do stop_pid "$pid"; done
+  rm -f "$t/daemons.pids"
+  echo "stopped the one-node Slurm in $t"
+  exit 0
+fi
 
 skip() {
-  if [ "${CI:-}" = true ]; then
+  if [ "$mode" = start ] || [ "${CI:-}" = true ]; then
     echo "FAIL: $1 (in CI the test command installs slurm-wlm and munge and runs as root)" >&2
     exit 1
   fi
@@ -32,21 +61,41 @@ for program in povray ffmpeg; do
   command -v "$program" >/dev/null || fail "$program is not installed (bash .ci/install-deps)"
 done
 
-t=$(mktemp -d /tmp/bsim-slurm.XXXXXX)
+if [ "$mode" = start ]; then
+  [ ! -f "$t/daemons.pids" ] || { echo "a cluster already runs in $t: stop it with $0 --stop $t" >&2; exit 1; }
+  mkdir -p "$t"
+else
+  t=$(mktemp -d /tmp/bsim-slurm.XXXXXX)
+fi
 pids=()
+# Starts a daemon in the background and records its process id (in start mode in its own session,
+# so that it outlives this script, and in DIR/daemons.pids for --stop).
+daemon() {
+  local name=$1
+  shift
+  if [ "$mode" = start ]; then
+    setsid "$@" >"$t/$name.out" 2>&1 </dev/null &
+  else
+    "$@" >"$t/$name.out" 2>&1 &
+  fi
+  pids+=($!)
+  printf '%s\n' "${pids[@]}" >"$t/daemons.pids"
+}
 cleanup() {
   status=$?
   set +e
+  if [ "$mode" = start ] && [ "$status" -eq 0 ]; then
+    echo "a one-node Slurm runs in $t; use it with: export SLURM_CONF=$t/slurm.conf"
+    echo "stop it with: bash $0 --stop $t"
+    exit 0
+  fi
   if [ -f "$t/slurm.conf" ] && [ ${#pids[@]} -gt 1 ]; then
     SLURM_CONF="$t/slurm.conf" timeout 20 scancel --full --user=root >/dev/null 2>&1
   fi
   # Stopped in reverse order of start (slurmd, slurmctld, munged), by the ids recorded at start.
-  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do
-    kill -TERM "${pids[i]}" 2>/dev/null
-    for _ in $(seq 100); do kill -0 "${pids[i]}" 2>/dev/null || break; sleep 0.1; done
-    kill -KILL "${pids[i]}" 2>/dev/null
-    wait "${pids[i]}" 2>/dev/null
-  done
+  for ((i = ${#pids[@]} - 1; i >= 0; i--)); do stop_pid "${pids[i]}"; done
+  rm -f "$t/daemons.pids"
+  [ "$mode" = start ] && exit "$status"  # the logs stay in DIR
   if [ "$status" -ne 0 ]; then
     for log in "$t"/*.log "$t"/farm/farm/logs/*.log; do
       [ -f "$log" ] && { echo "---- $log (last lines)"; tail -n 30 "$log"; }
@@ -72,11 +121,10 @@ free_port() {
 }
 
 # munge: its own key and socket, so no system munged is needed or disturbed.
-mungekey --create --keyfile="$t/munge.key"
+mungekey --create --force --keyfile="$t/munge.key"
 chmod 600 "$t/munge.key"
-munged --foreground --force --socket="$t/munge.socket" --key-file="$t/munge.key" --pid-file="$t/munged.pid" \
-  --log-file="$t/munged.log" --seed-file="$t/munged.seed" >"$t/munged.out" 2>&1 &
-pids+=($!)
+daemon munged munged --foreground --force --socket="$t/munge.socket" --key-file="$t/munge.key" \
+  --pid-file="$t/munged.pid" --log-file="$t/munged.log" --seed-file="$t/munged.seed"
 for _ in $(seq 300); do [ -S "$t/munge.socket" ] && break; sleep 0.1; done
 [ -S "$t/munge.socket" ] || fail "munged did not start"
 
@@ -121,10 +169,8 @@ NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
 PartitionName=bsim Nodes=$host Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF="$t/slurm.conf"
-slurmctld -D -c -f "$t/slurm.conf" >"$t/slurmctld.out" 2>&1 &
-pids+=($!)
-slurmd -D -f "$t/slurm.conf" >"$t/slurmd.out" 2>&1 &
-pids+=($!)
+daemon slurmctld slurmctld -D -c -f "$t/slurm.conf"
+daemon slurmd slurmd -D -f "$t/slurm.conf"
 
 echo "waiting for the node to be idle"
 state=""
@@ -134,6 +180,7 @@ for _ in $(seq 600); do
   sleep 0.5
 done
 [ "$state" = idle ] || fail "the Slurm node did not become idle in 5 minutes (state: '$state')"
+[ "$mode" = start ] && exit 0
 
 # A short shot (6 s): 12 tiny frames at 2 fps.
 cat >"$t/shot.scn" <<'EOF'
