@@ -16,6 +16,7 @@
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
 #include "frames.h"
+#include "movie_export.h"
 #include "output_stage.h"
 #include "pov_frame.h"
 #include "pov_table.h"
@@ -322,6 +323,15 @@ int farm_assemble(const ExportOptions& options, const std::string& dir) {
     guard.finish();
     return 1;
   }
+  // Kept in the frame store too, as a local run keeps its pictures (best effort).
+  ExportOptions rendered;
+  rendered.width = conf.width;
+  rendered.height = conf.height;
+  rendered.quality = conf.quality;
+  const FrameCache store(default_frame_cache_dir(), dir + "/frames");
+  const std::vector<std::uint64_t> keys = frame_store_keys(dir + "/frames", conf.frames, rendered);
+  for (int k = 0; k < conf.frames; ++k) store.set(frame_name(k) + ".png", keys[k]);
+  store.trim();
   std::cerr << "wrote " << dir << "/movie.mp4 (" << conf.frames << " frames)\n";
   return 0;
 }
@@ -407,12 +417,16 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   const bool comparable = read_conf(dir_, earlier, ignored) && earlier.width == conf.width &&
                           earlier.height == conf.height && earlier.quality == conf.quality &&
                           same_file(dir_ + "/" + include, stage.path(include));
+  // The others may be in this machine's frame store, from a local run or an earlier farm run.
+  const FrameCache store(default_frame_cache_dir(), stage.path("frames"));
+  const std::vector<std::uint64_t> keys = frame_store_keys(stage.path("frames"), frames_, options);
   std::vector<int> missing;
   for (int k = 0; k < frames_; ++k) {
     const std::string pov = "frames/" + frame_name(k) + ".pov", png = "frames/" + frame_name(k) + ".png";
     if (comparable && picture_there(dir_, k) && same_file(dir_ + "/" + pov, stage.path(pov)) &&
         link_or_copy(dir_ + "/" + png, stage.path(png)))
       continue;
+    if (store.fetch(frame_name(k) + ".png", keys[k])) continue;
     missing.push_back(k);
   }
   missing_ = static_cast<int>(missing.size());
@@ -529,7 +543,7 @@ int SlurmSubmission::submit(std::string& error) {
     std::cout << "submitted job " << frames_job << ": " << chunks_.size() << (chunks_.size() == 1 ? " task" : " tasks")
               << " render " << missing_ << " of " << frames_ << " frames, up to " << largest << " a task\n";
   else
-    std::cout << "every frame is rendered already\n";
+    std::cout << "all " << frames_ << " frames are rendered already\n";
   std::cout << "submitted job " << movie_job << ": checks every frame and writes " << dir_
             << "/movie.mp4 when the frames are done\n"
             << "follow them with: billiards-export " << dir_ << " --farm status\n";

@@ -41,10 +41,11 @@ struct Farm {
                                         sh((dir.path / "sbatch.args").string()) + ")\necho $((40 + n))\n"));
     fs::permissions(sbatch, fs::perms::owner_all);
   }
+  std::string store = "off";  ///< BSIM_CACHE_DIR
   bsim::test::CommandResult run(const std::string& arguments, bool with_sbatch = true) const {
     const std::string path = with_sbatch ? "PATH=" + sh((dir.path / "bin").string()) + ":\"$PATH\" " : "";
-    return bsim::test::run_command(path + "BSIM_CACHE_DIR=off " + sh(bsim::test::bin("billiards-export")) + " " +
-                                   arguments);
+    return bsim::test::run_command(path + "BSIM_CACHE_DIR=" + sh(store) + " " +
+                                   sh(bsim::test::bin("billiards-export")) + " " + arguments);
   }
   bsim::test::CommandResult submit(const std::string& extra = "") const {
     return run(sh(scene) + " --farm slurm -o " + sh(out.string()) + kOptions + extra);
@@ -158,5 +159,14 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(bsim::test::require_file(farm.out / "movie.mp4") ==
           bsim::test::require_file(farm.dir.path / "local/movie.mp4"));
     CHECK(bsim::test::leftovers(farm.out).empty());
+
+    // The movie job keeps the frames in the frame store, and a submission takes what the store has.
+    farm.store = (farm.dir.path / "store").string();
+    REQUIRE(farm.run(dir + " --farm assemble", false).exit_code == 0);
+    farm.out = farm.dir.path / "elsewhere";
+    const bsim::test::CommandResult stored = farm.submit();
+    REQUIRE_MESSAGE(stored.exit_code == 0, stored.err);
+    CHECK(has(stored.out, "all 6 frames are rendered already"));
+    CHECK(fs::exists(farm.out / "frames/frame_00005.png"));
   }
 }
