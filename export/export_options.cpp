@@ -23,6 +23,8 @@ options:
   --music FILE           a music file mixed under the sound track (default: none)
   --strict               accept only the original scene language: no comments, spin, pocket or param
   --quiet                print no progress lines (errors and warnings still print)
+  -h, --help             show this help and exit
+  --version              show the version and exit
 
 rendering on a Slurm cluster (see README):
   --farm slurm           write the inputs into DIR (on a shared file system) and submit the frames as
@@ -32,8 +34,6 @@ rendering on a Slurm cluster (see README):
   billiards-export DIR --farm status     frames rendered so far and the jobs in the queue
   billiards-export DIR --farm assemble   check every frame and make movie.mp4 (the movie job)
   billiards-export DIR --farm render --frames A-B   render the missing frames A to B (a task)
-  -h, --help             show this help and exit
-  --version              show the version and exit
 
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";

@@ -84,6 +84,11 @@ TEST_SUITE("rendering on a Slurm cluster") {
             bsim::CommandLineOutcome::run);
     CHECK(o.first_frame == 3);
     CHECK(o.last_frame == 9);
+    std::string help;
+    REQUIRE(bsim::parse_export_options({"--help"}, o, help) == bsim::CommandLineOutcome::exit_success);
+    for (const char* line : {"--farm slurm", "--chunk N", "--sbatch-option ARG", "DIR --farm status",
+                             "DIR --farm assemble", "DIR --farm render --frames A-B"})
+      CHECK_MESSAGE(has(help, line), line);
     for (const std::vector<std::string>& bad : {std::vector<std::string>{"--chunk", "5"},
                                                 {"--farm", "cloud"},
                                                 {"--farm", "status"},
