@@ -30,6 +30,15 @@ options:
   -h, --help             show this help and exit
   --version              show the version and exit
 
+rendering on a Slurm cluster (see README):
+  --farm slurm           write the inputs into DIR (on a shared file system) and submit the frames as
+                         a job array and the movie as a job that waits for it; print the job ids
+  --chunk N              frames a task renders (default: about three minutes of work)
+  --sbatch-option ARG    passed to sbatch, e.g. --sbatch-option=--partition=short (repeatable)
+  billiards-export DIR --farm status     frames rendered so far and the jobs in the queue
+  billiards-export DIR --farm assemble   check every frame and make movie.mp4 (the movie job)
+  billiards-export DIR --farm render --frames A-B   render the missing frames A to B (a task)
+
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";
 
@@ -97,8 +106,46 @@ bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
     o.loudness = *lufs;
     return true;
   }
-  message = unknown_option_message(name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs",
-                                          "--audio-lead", "--music", "--loudness"});
+  if (name == "--farm") {
+    const auto v = value();
+    if (!v) return false;
+    static const std::vector<std::pair<std::string, FarmMode>> modes = {{"slurm", FarmMode::slurm},
+                                                                        {"status", FarmMode::status},
+                                                                        {"render", FarmMode::render},
+                                                                        {"assemble", FarmMode::assemble}};
+    for (const auto& [word, mode] : modes)
+      if (*v == word) return (o.farm = mode), true;
+    return bad(*v, "slurm, status, assemble or render");
+  }
+  if (name == "--chunk") {
+    const auto v = value();
+    if (!v) return false;
+    const auto chunk = parse_int_option(*v, 1, kMaxFarmChunk);
+    if (!chunk) return bad(*v, "a number of frames from 1 to " + std::to_string(kMaxFarmChunk));
+    o.chunk = *chunk;
+    return true;
+  }
+  if (name == "--sbatch-option") {
+    const auto v = value();
+    if (!v) return false;
+    if (v->empty()) return bad(*v, "an sbatch option");
+    o.sbatch_options.push_back(*v);
+    return true;
+  }
+  if (name == "--frames") {
+    const auto v = value();
+    if (!v) return false;
+    const std::size_t dash = v->find('-');
+    const auto first = parse_int_option(v->substr(0, dash), 0, 100000000);
+    const auto last = dash == std::string::npos ? first : parse_int_option(v->substr(dash + 1), 0, 100000000);
+    if (!first || !last || *last < *first) return bad(*v, "frames FIRST-LAST");
+    o.first_frame = *first;
+    o.last_frame = *last;
+    return true;
+  }
+  message = unknown_option_message(
+      name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs", "--audio-lead", "--music",
+             "--loudness", "--farm", "--chunk", "--sbatch-option", "--frames"});
   return false;
 }
 
@@ -116,6 +163,19 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
     case ArgumentsOutcome::exit_usage: return CommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;
   }
+  const bool submit = options.farm == FarmMode::slurm;
+  if (!submit && (options.chunk > 0 || !options.sbatch_options.empty()))
+    message = std::string(options.chunk > 0 ? "--chunk" : "--sbatch-option") + " needs --farm slurm";
+  else if (options.farm != FarmMode::render && options.last_frame >= 0)
+    message = "--frames needs --farm render";
+  else if (submit && (options.events_only || options.no_render))
+    message = std::string("--farm slurm renders on the cluster; it cannot go with ") +
+              (options.events_only ? "--events-only" : "--no-render");
+  else if (options.farm != FarmMode::none && !submit && !options.scene_path)
+    message =
+        "--farm status, assemble and render need the farm's output directory, as in `billiards-export DIR "
+        "--farm status`";
+  if (!message.empty()) return CommandLineOutcome::exit_usage;
   return CommandLineOutcome::run;
 }
 

@@ -10,6 +10,9 @@ namespace bsim {
 
 enum class Quality { draft, final };
 
+/// --farm: render on a Slurm cluster (see farm_slurm.h); `none` renders here.
+enum class FarmMode { none, slurm, status, render, assemble };
+
 /// s: how long before its event each sound starts, unless --audio-lead says otherwise.
 inline constexpr double kDefaultAudioLead = 0.005;
 inline constexpr double kMaxAudioLead = 1.0;  ///< s
@@ -17,6 +20,7 @@ inline constexpr double kMaxAudioLead = 1.0;  ///< s
 inline constexpr double kMinLoudness = -40.0;
 inline constexpr double kMaxLoudness = -10.0;
 inline constexpr int kMaxJobs = 1024;
+inline constexpr int kMaxFarmChunk = 100000;  ///< frames
 
 /// fps, width, height and strict are the options both programs share (SharedOptions).
 struct ExportOptions : SharedOptions {
@@ -29,6 +33,10 @@ struct ExportOptions : SharedOptions {
   double audio_lead = 0.0;  ///< s; set to the documented default by the parser
   std::string music_path;
   std::optional<double> loudness;  ///< LUFS of the sound track; none: not normalised (set by the parser)
+  FarmMode farm = FarmMode::none;
+  int chunk = 0;                            ///< --chunk: frames a farm task renders; 0: chosen from size and quality
+  std::vector<std::string> sbatch_options;  ///< --sbatch-option, in order
+  int first_frame = 0, last_frame = -1;     ///< --frames A-B (--farm render)
 };
 
 enum class CommandLineOutcome { run, exit_success, exit_usage };

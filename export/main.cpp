@@ -11,6 +11,7 @@
 #include "builtin_scene.h"
 #include "child_process.h"
 #include "export_options.h"
+#include "farm_slurm.h"
 #include "frames.h"
 #include "movie_export.h"
 #include "output_stage.h"
@@ -35,8 +36,8 @@ bool write_staged(const bsim::OutputStage& stage, const std::string& name, Write
 
 /// Every name a run may write into its output directory: a run removes those it did not write this
 /// time, so the directory never holds one run's data beside another's movie.
-const std::vector<std::string> kRunOutputs = {"events.json",    "trajectory.csv", "camera.csv",         "frames",
-                                              "soundtrack.wav", "movie.mp4",      bsim::kRunSummaryName};
+const std::vector<std::string> kRunOutputs = {"events.json",    "trajectory.csv", "camera.csv",          "frames",
+                                              "soundtrack.wav", "movie.mp4",      bsim::kRunSummaryName, "farm"};
 
 /// Everything a run writes, into the stage: the data files, then (unless --events-only) the frames'
 /// .pov files and the sound track, then (unless --no-render) the rendered frames and the movie, and
@@ -68,6 +69,8 @@ bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& opti
 }
 
 int run(const bsim::ExportOptions& options) {
+  const bool on_farm = options.farm == bsim::FarmMode::slurm;
+  if (options.farm != bsim::FarmMode::none && !on_farm) return bsim::run_farm_command(options);
   const auto start = std::chrono::steady_clock::now();
   std::string text, name, shown_path;
   if (options.scene_path) {
@@ -100,18 +103,27 @@ int run(const bsim::ExportOptions& options) {
   // Every program the run needs is found before any work, so a missing one costs nothing.
   std::string error;
   bsim::RunPrograms programs;
-  if (!bsim::find_run_programs(options, programs, error)) {
+  bsim::ExportOptions staged = options;  // on the farm, this run renders nothing itself
+  staged.no_render = staged.no_render || on_farm;
+  if (!bsim::find_run_programs(staged, programs, error)) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
   const std::string& dir = summary.output;
+  bsim::SlurmSubmission farm;  // --farm slurm: the inputs here, the rendering on the cluster
+  if (on_farm && !farm.prepare(options, dir, error)) {
+    std::cerr << "billiards-export: error: " << error << "\n";
+    return 1;
+  }
   bsim::InterruptGuard guard;  // Ctrl-C from here on stops the children and discards the stage first
   bsim::OutputStage stage;
   if (!stage.open(dir, error)) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  bsim::RunOutcome outcome = produce(shot, options, programs, stage, summary, error);
+  bsim::RunOutcome outcome = produce(shot, staged, programs, stage, summary, error);
+  if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, error))
+    outcome = bsim::RunOutcome::failed;
   if (outcome == bsim::RunOutcome::done && !stage.commit(error, kRunOutputs)) outcome = bsim::RunOutcome::failed;
   if (outcome != bsim::RunOutcome::done) {
     stage.discard();                                               // the output directory stays exactly as it was
@@ -119,6 +131,11 @@ int run(const bsim::ExportOptions& options) {
     std::cerr << "billiards-export: error: " << (outcome == bsim::RunOutcome::interrupted ? "interrupted" : error)
               << "\n";
     return 1;
+  }
+  if (on_farm) {
+    const int status = farm.submit(error);
+    if (status != 0) std::cerr << "billiards-export: error: " << error << "\n";
+    return status;
   }
   if (options.quiet) return 0;  // --quiet: success is the exit status alone
   if (!options.events_only && !options.no_render)

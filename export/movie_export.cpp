@@ -82,12 +82,11 @@ struct FramePlan {
   int fetched = 0;                              ///< copied from the store
 };
 
-FramePlan plan_frames(const std::string& frames_dir, int frames, std::uint64_t common, const FrameCache& cache) {
+FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& cache) {
   FramePlan plan;
   std::map<std::uint64_t, int> first;
-  for (int k = 0; k < frames; ++k) {
-    const std::uint64_t key =
-        fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common);
+  for (int k = 0; k < static_cast<int>(keys.size()); ++k) {
+    const std::uint64_t key = keys[k];
     const auto [it, fresh] = first.emplace(key, k);
     if (!fresh)
       plan.duplicates.emplace_back(k, it->second);
@@ -114,6 +113,17 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
 }
 
 }  // namespace
+
+std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
+  // What every picture depends on besides its own .pov text; "v2" names the store's key format.
+  const std::string settings = "v2 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                               quality_name(options.quality);
+  const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
+  std::vector<std::uint64_t> keys;
+  for (int k = 0; k < frames; ++k)
+    keys.push_back(fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common));
+  return keys;
+}
 
 bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
                             std::string& error) {
@@ -164,12 +174,8 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
                         const OutputStage& stage, RunSummary& summary, std::string& error) {
   const std::string frames_dir = stage.path("frames");
   const int frames = frame_count(shot.timeline.duration(), options.fps);
-  // What every picture depends on besides its own .pov text; "v2" names the store's key format.
-  const std::string settings = "v2 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                               quality_name(options.quality);
-  const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
   FrameCache cache(default_frame_cache_dir(), frames_dir);
-  const FramePlan plan = plan_frames(frames_dir, frames, common, cache);
+  const FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
   summary.frames_rendered = static_cast<int>(plan.jobs.size());
   summary.frames_reused = frames - summary.frames_rendered;
 

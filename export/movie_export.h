@@ -1,7 +1,9 @@
 #pragma once
 // POV-Ray frames, the sound track, rendering and the movie, all inside a run's staging directory:
 // nothing reaches the output directory until the whole run has succeeded (see output_stage.h).
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "export_options.h"
 #include "render_jobs.h"
@@ -25,6 +27,10 @@ bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std:
 /// Writes frames/*.pov (and the shared include) and soundtrack.wav into the stage.
 bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
                             std::string& error);
+
+/// The frame store's key (frame_cache.h) of each of the `frames` frames written into `frames_dir`
+/// (their .pov text without comments, the shared include, the size and the quality).
+std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options);
 
 /// Renders the staged frames (reusing stored pictures, see frame_cache.h) and encodes the staged
 /// movie.mp4, filling the summary's frame counts and times. Interrupted: Ctrl-C came, every child

@@ -1,0 +1,177 @@
+// --farm slurm without a cluster: the chunking, the command line, what is staged and handed to
+// sbatch (a stand-in that records its arguments), and the task and movie commands run by hand, whose
+// movie must equal a local render's byte for byte. The real one-node Slurm test is
+// tests/farm/one_node_slurm.sh.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "export_options.h"
+#include "farm_slurm.h"
+#include "files.h"
+#include "support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string sh(const std::string& s) { return bsim::test::quoted(s); }
+
+/// A 6-second shot: 6 frames at 1 fps, 32x18, draft.
+const char* const kScene =
+    "cue 0 0\n"
+    "ball 0 -0.3 0 0.028575  0.4 0 0  1 0 0 0\n"
+    "camera\nevent 0 0 0 hover -1.5 -1.2 1.2  0 0 0\nendcamera\n";
+const char* const kOptions = " --size 32x18 --fps 1 --quality draft --quiet";
+
+/// A directory with the scene and a stand-in sbatch that records its arguments in sbatch.args and
+/// hands out job ids 41, 42, ...; `refuse` makes it turn every job down.
+struct Farm {
+  bsim::test::TempDir dir;
+  std::string scene = dir.file("shot.scn", kScene);
+  fs::path out = dir.path / "out";
+
+  explicit Farm(bool refuse = false) {
+    const std::string sbatch = dir.file(
+        "bin/sbatch", "#!/bin/sh\necho \"$*\" >> " + sh((dir.path / "sbatch.args").string()) + "\n" +
+                          (refuse ? "echo 'sbatch: error: Invalid partition name specified' >&2; exit 1\n"
+                                  : "case \"$*\" in *--test-only*) echo 'sbatch: Job 7 to start'; exit 0;; esac\n"
+                                    "n=$(grep -vc test-only " +
+                                        sh((dir.path / "sbatch.args").string()) + ")\necho $((40 + n))\n"));
+    fs::permissions(sbatch, fs::perms::owner_all);
+  }
+  std::string store = "off";  ///< BSIM_CACHE_DIR
+  bsim::test::CommandResult run(const std::string& arguments, bool with_sbatch = true) const {
+    const std::string path = with_sbatch ? "PATH=" + sh((dir.path / "bin").string()) + ":\"$PATH\" " : "";
+    return bsim::test::run_command(path + "BSIM_CACHE_DIR=" + sh(store) + " " +
+                                   sh(bsim::test::bin("billiards-export")) + " " + arguments);
+  }
+  bsim::test::CommandResult submit(const std::string& extra = "") const {
+    return run(sh(scene) + " --farm slurm -o " + sh(out.string()) + kOptions + extra);
+  }
+  std::string sbatch_args() const { return bsim::test::read_file(dir.path / "sbatch.args").value_or(""); }
+};
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_SUITE("rendering on a Slurm cluster") {
+  TEST_CASE("a task gets about three minutes of frames, and chunks never span a frame already done") {
+    CHECK(bsim::default_farm_chunk(1280, 720, bsim::Quality::final) == 20);  // 9 s a frame (README's table)
+    CHECK(bsim::default_farm_chunk(640, 360, bsim::Quality::draft) == 96);
+    CHECK(bsim::default_farm_chunk(16384, 16384, bsim::Quality::final) == 1);
+    using Chunks = std::vector<std::pair<int, int>>;
+    CHECK(bsim::farm_chunks({0, 1, 2, 3, 4, 7, 8, 10}, 3) == Chunks{{0, 2}, {3, 4}, {7, 8}, {10, 10}});
+    CHECK(bsim::farm_chunks({}, 3).empty());
+    CHECK(bsim::farm_chunks({5, 6, 7}, 100) == Chunks{{5, 7}});
+    std::vector<int> all(300);
+    for (int k = 0; k < 300; ++k) all[k] = k;
+    CHECK(bsim::farm_chunks(all, 196) == Chunks{{0, 149}, {150, 299}});  // two halves, not 196 and 104
+  }
+
+  TEST_CASE("the command line: --farm's modes, --chunk and --sbatch-option go with --farm slurm") {
+    bsim::ExportOptions o;
+    std::string message;
+    REQUIRE(bsim::parse_export_options({"s.scn", "--farm", "slurm", "--chunk", "5", "--sbatch-option=--time=10",
+                                        "--sbatch-option", "--partition=short"},
+                                       o, message) == bsim::CommandLineOutcome::run);
+    CHECK(o.farm == bsim::FarmMode::slurm);
+    CHECK(o.chunk == 5);
+    CHECK(o.sbatch_options == std::vector<std::string>{"--time=10", "--partition=short"});
+    REQUIRE(bsim::parse_export_options({"out/x", "--farm", "render", "--frames", "3-9"}, o, message) ==
+            bsim::CommandLineOutcome::run);
+    CHECK(o.first_frame == 3);
+    CHECK(o.last_frame == 9);
+    std::string help;
+    REQUIRE(bsim::parse_export_options({"--help"}, o, help) == bsim::CommandLineOutcome::exit_success);
+    for (const char* line : {"--farm slurm", "--chunk N", "--sbatch-option ARG", "DIR --farm status",
+                             "DIR --farm assemble", "DIR --farm render --frames A-B"})
+      CHECK_MESSAGE(has(help, line), line);
+    for (const std::vector<std::string>& bad : {std::vector<std::string>{"--chunk", "5"},
+                                                {"--farm", "cloud"},
+                                                {"--farm", "status"},
+                                                {"s.scn", "--farm", "slurm", "--no-render"},
+                                                {"s.scn", "--farm", "slurm", "--chunk", "0"},
+                                                {"d", "--farm", "render", "--frames", "9-3"},
+                                                {"s.scn", "--frames", "1-2"}}) {
+      CHECK_MESSAGE(bsim::parse_export_options(bad, o, message) == bsim::CommandLineOutcome::exit_usage, bad[1]);
+      CHECK(!message.empty());
+    }
+  }
+
+  TEST_CASE("no sbatch, or sbatch refusing the jobs: a clear error and no output directory") {
+    Farm farm;
+    const bsim::test::CommandResult missing =
+        bsim::test::run_command("PATH=/nonexistent " + sh(bsim::test::bin("billiards-export")) + " " + sh(farm.scene) +
+                                " --farm slurm -o " + sh(farm.out.string()));
+    CHECK(missing.exit_code == 1);
+    CHECK(has(missing.err, "sbatch is not on PATH"));
+    CHECK_FALSE(fs::exists(farm.out));
+
+    Farm refusing(true);
+    const bsim::test::CommandResult refused = refusing.submit(" --sbatch-option=--partition=nowhere");
+    CHECK(refused.exit_code == 1);
+    CHECK(has(refused.err, "sbatch would not take the jobs: sbatch: error: Invalid partition name specified"));
+    CHECK(has(refusing.sbatch_args(), "--test-only"));
+    CHECK(has(refusing.sbatch_args(), "--partition=nowhere"));
+    CHECK_FALSE(fs::exists(refusing.out));
+    CHECK(bsim::test::leftovers(refusing.dir.path).empty());
+  }
+
+  TEST_CASE("submitted, the tasks and the movie job run by hand make the local render's movie") {
+    for (const char* tool : {"povray", "ffmpeg"}) bsim::test::require_program(tool);
+    Farm farm;
+    const bsim::test::CommandResult submitted = farm.submit(" --chunk 2 --sbatch-option=--time=5");
+    REQUIRE_MESSAGE(submitted.exit_code == 0, submitted.err);
+    CHECK(has(submitted.out, "submitted job 41: 3 tasks render 6 of 6 frames, up to 2 a task"));
+    CHECK(has(submitted.out, "submitted job 42: checks every frame"));
+    const std::string args = farm.sbatch_args();
+    CHECK(has(args, "--array=0-2"));
+    CHECK(has(args, "--dependency=afterany:41"));
+    CHECK(has(args, "--time=5"));
+    for (const char* file : {"farm/farm.conf", "farm/chunks.txt", "farm/task.sh", "farm/movie.sh",
+                             "farm/billiards-export", "frames/frame_00002.pov", "soundtrack.wav"})
+      CHECK_MESSAGE(fs::exists(farm.out / file), file);
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "0-1\n2-3\n4-5\n");
+    CHECK(has(bsim::test::read_file(farm.out / "farm/farm.conf").value_or(""), "frames_job=41\nmovie_job=42\n"));
+
+    const std::string dir = sh(farm.out.string());
+    const bsim::test::CommandResult task = farm.run(dir + " --farm render --frames 0-3", false);
+    CHECK_MESSAGE(task.exit_code == 0, task.err);
+    const bsim::test::CommandResult early = farm.run(dir + " --farm assemble", false);
+    CHECK(early.exit_code == 1);
+    CHECK(has(early.err,
+              "frame 4 (frames/frame_00004.png) was not rendered; see its task's log, "
+              "farm/logs/frames-41_2.log"));
+    CHECK_FALSE(fs::exists(farm.out / "movie.mp4"));
+    const bsim::test::CommandResult status = farm.run(dir + " --farm status", false);
+    CHECK(has(status.out, "4 of 6 frames rendered"));
+
+    // Submitted again, only the missing frames are rendered.
+    const bsim::test::CommandResult again = farm.submit();
+    REQUIRE_MESSAGE(again.exit_code == 0, again.err);
+    CHECK(has(again.out, "1 task render 2 of 6 frames"));
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "4-5\n");
+    CHECK(farm.run(dir + " --farm render --frames 4-5", false).exit_code == 0);
+    const bsim::test::CommandResult movie = farm.run(dir + " --farm assemble", false);
+    REQUIRE_MESSAGE(movie.exit_code == 0, movie.err);
+
+    const bsim::test::CommandResult local =
+        farm.run(sh(farm.scene) + " -o " + sh((farm.dir.path / "local").string()) + kOptions, false);
+    REQUIRE_MESSAGE(local.exit_code == 0, local.err);
+    CHECK(bsim::test::require_file(farm.out / "movie.mp4") ==
+          bsim::test::require_file(farm.dir.path / "local/movie.mp4"));
+    CHECK(bsim::test::leftovers(farm.out).empty());
+
+    // The movie job keeps the frames in the frame store, and a submission takes what the store has.
+    farm.store = (farm.dir.path / "store").string();
+    REQUIRE(farm.run(dir + " --farm assemble", false).exit_code == 0);
+    farm.out = farm.dir.path / "elsewhere";
+    const bsim::test::CommandResult stored = farm.submit();
+    REQUIRE_MESSAGE(stored.exit_code == 0, stored.err);
+    CHECK(has(stored.out, "all 6 frames are rendered already"));
+    CHECK(fs::exists(farm.out / "frames/frame_00005.png"));
+  }
+}
