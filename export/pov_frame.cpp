@@ -47,6 +47,10 @@ class PictureProjection {
     up_ = right_.cross(forward_);
     scale_ = 640.0 / std::tan(0.5 * kCameraFovDeg * std::numbers::pi / 180.0);
   }
+  /// Whether the point is in front of the camera (else it has no place in the picture).
+  bool in_front(const Vec3& p) const { return (p - eye_).dot(forward_) > 0.05; }
+  /// Whether a place is in the picture (a 16:9 one), or near enough that its blur would show.
+  static bool in_picture(const Eigen::Vector2d& at) { return std::abs(at.x()) < 700 && std::abs(at.y()) < 400; }
   /// The point's place in the picture (pixels from its centre).
   Eigen::Vector2d at(const Vec3& p) const {
     const Vec3 d = p - eye_;
@@ -63,7 +67,7 @@ class PictureProjection {
 
 /// Sub-frame instants the blur measures a path at and draws its copies at, across the open shutter.
 constexpr int kMeasureSteps = 8;
-constexpr int kMaxCopies = 16;
+constexpr int kMaxCopies = 24;
 /// How much of the background the copies together still let through where they all overlap.
 constexpr double kStreakLeak = 0.04;
 
@@ -73,11 +77,18 @@ template <class PointAt>
 double picture_travel(const Shot& shot, double t, double shutter, PointAt&& point) {
   double travel = 0;
   Eigen::Vector2d last = Eigen::Vector2d::Zero();
+  bool seen_last = false;
   for (int k = 0; k <= kMeasureSteps; ++k) {
-    const double u = t + shutter * (static_cast<double>(k) / kMeasureSteps - 0.5);
-    const Eigen::Vector2d here = PictureProjection(shot.camera->pose(u)).at(point(u));
-    if (k > 0) travel += (here - last).norm();
+    const double u =
+        std::clamp(t + shutter * (static_cast<double>(k) / kMeasureSteps - 0.5), 0.0, shot.timeline.duration());
+    const PictureProjection view(shot.camera->pose(u));
+    const Vec3 p = point(u);
+    // What is behind the camera or outside the picture does not count.
+    const bool seen = view.in_front(p) && view.in_picture(view.at(p));
+    const Eigen::Vector2d here = seen ? view.at(p) : Eigen::Vector2d::Zero();
+    if (k > 0 && seen && seen_last) travel += (here - last).norm();
     last = here;
+    seen_last = seen;
   }
   return travel;
 }
@@ -93,7 +104,10 @@ int copies_for(double travel, double spacing) {
 /// let through kStreakLeak: 1 - a, with (1 - a)^overlap = kStreakLeak.
 double copy_transmit(int overlap) { return std::pow(kStreakLeak, 1.0 / std::max(overlap, 1)); }
 
-double sub_time(double t, double shutter, int k, int copies) { return t + shutter * ((k + 0.5) / copies - 0.5); }
+/// The instant of copy k of `copies`, within the shot.
+double sub_time(const Shot& shot, double t, double shutter, int k, int copies) {
+  return std::clamp(t + shutter * ((k + 0.5) / copies - 0.5), 0.0, shot.timeline.duration());
+}
 
 struct StickFrame {
   Vec3 along, side, up;
@@ -125,8 +139,8 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
     const double travel =
         picture_travel(shot, t, shutter, [&](double u) { return shot.timeline.state(i, u).position; });
     const double diameter = view.size_at(state.position, 2 * radius);
-    // Copies about a quarter of the ball's picture apart; where they overlap, that many cover a point.
-    const double spacing = std::max(1.5, 0.25 * diameter);
+    // Copies a fifth of the ball's picture apart; where they overlap, that many cover a point.
+    const double spacing = std::max(1.5, 0.2 * diameter);
     const int copies = copies_for(travel, spacing);
     blur.ball_copies.push_back(copies);
     blur.ball_overlap.push_back(std::min<double>(copies, diameter / std::max(travel / (copies - 1 + 1e-9), 1e-9) + 1));
@@ -136,7 +150,8 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
     double travel = 0;
     for (double along : {0.0, kStickLength}) {
       travel = std::max(travel, picture_travel(shot, t, shutter, [&](double u) {
-                          const CuePose p = shot.cue->pose(u);
+                          // Where the stick is out of the scene, it counts as where it is now.
+                          const CuePose p = shot.cue->pose(u).visible ? shot.cue->pose(u) : cue;
                           return Vec3(p.tip + along * p.axis.normalized());
                         }));
     }
@@ -193,7 +208,7 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
         pov_number(copy_transmit(static_cast<int>(std::lround(blur.ball_overlap[static_cast<std::size_t>(i)]))));
     out << "object { BallShadow translate " << pov_vector(state.position) << " }  // ball " << i << "'s shadow\n";
     for (int k = 0; k < copies; ++k) {
-      const BallState sub = shot.timeline.state(i, sub_time(t, shutter, k, copies));
+      const BallState sub = shot.timeline.state(i, sub_time(shot, t, shutter, k, copies));
       const Eigen::Matrix3d r = sub.orientation.normalized().toRotationMatrix();
       out << "object { BallBlur(" << number << ", " << transmit << ") "
           << pov_matrix(r.col(0), r.col(1), r.col(2), sub.position) << " }  // ball " << i << ", blurred " << k + 1
@@ -212,7 +227,7 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
   }
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
-    const CuePose cue = shot.cue->pose(sub_time(t, shutter, k, stick_copies));
+    const CuePose cue = shot.cue->pose(sub_time(shot, t, shutter, k, stick_copies));
     if (!cue.visible) continue;
     const StickFrame f = stick_frame(cue);
     out << "object { CueStickT(" << transmit << ") " << pov_matrix(f.along, f.side, f.up, cue.tip) << " }  // blurred "

@@ -261,7 +261,11 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
     object {
       cylinder { -2 * BallR * z, 2 * BallR * z, DiscR }
       pigment { Body }
-      pigment { object { Glyphs color BallWhite transmit T color srgb 0.02 transmit T } }
+      #if (T > 0)  // a blurred copy: the number turns too fast to read, a plain disc
+        pigment { color BallWhite transmit T }
+      #else
+        pigment { object { Glyphs BallWhite srgb 0.02 } }
+      #end
     }
   }
 #end
@@ -403,7 +407,7 @@ WallPiece(Trim)
 }
 WallPiece(WallDecor)
 #macro WallLights(P, R)  // the sconces' glow on the wall through P, turned by R: one light between the two
-  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.72, 0.42> * 0.9 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
+  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.72, 0.42> * 1.2 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
 #end
 WallLights(x * RoomMin.u, 0)
 WallLights(x * RoomMax.u, 180)
@@ -450,9 +454,9 @@ union {
 // 1.2 m. Final: an area light the size of the diffuser, without jitter (jitter flickers from frame to
 // frame); draft: two point lights.
 #declare LampColour = srgb <1.0, 0.92, 0.78>;  // a warm white, about 3500 K
-#declare LampPower = 2.6;
+#declare LampPower = 2.9;
 #macro LampCone()
-  spotlight point_at <Middle.u, Middle.v, 0> radius 30 falloff 62 tightness 0
+  spotlight point_at <Middle.u, Middle.v, 0> radius 24 falloff 60 tightness 0
   fade_distance 1.2 fade_power 2
 #end
 #if (Final)
@@ -470,8 +474,8 @@ light_source { <Middle.u, Middle.v, -0.35> srgb <0.10, 0.30, 0.16> * 0.55
   spotlight point_at <Middle.u, Middle.v, 1> radius 60 falloff 88 tightness 0
   fade_distance 0.8 fade_power 2 shadowless }
 // the dim rest of the room: a faint warm fill from high in two corners
-light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.08 shadowless }
-light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.06 shadowless }
+light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.16 shadowless }
+light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.12 shadowless }
 
 object { Table }
 )pov";
