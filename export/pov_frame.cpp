@@ -1,7 +1,10 @@
 #include "pov_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <vector>
 
 #include "camera_interpolation.h"
 #include "frames.h"
@@ -33,7 +36,138 @@ void steady_camera(Vec3& location, Vec3& look_at) {
   if (picture_up(d) == Vec3::UnitY()) look_at = location + d.norm() * Vec3(0, 1e-4, d.z() > 0 ? 1 : -1);
 }
 
+/// Where points land in the picture of one camera pose, in pixels of a 1280-pixel-wide picture.
+class PictureProjection {
+ public:
+  explicit PictureProjection(const CameraPose& pose) : eye_(pose.location) {
+    Vec3 location = pose.location, look_at = pose.look_at;
+    steady_camera(location, look_at);
+    forward_ = view_direction(location, look_at);
+    right_ = forward_.cross(picture_up(forward_)).normalized();
+    up_ = right_.cross(forward_);
+    scale_ = 640.0 / std::tan(0.5 * kCameraFovDeg * std::numbers::pi / 180.0);
+  }
+  /// Whether the point is in front of the camera (else it has no place in the picture).
+  bool in_front(const Vec3& p) const { return (p - eye_).dot(forward_) > 0.05; }
+  /// Whether a place is in the picture (a 16:9 one), or near enough that its blur would show.
+  static bool in_picture(const Eigen::Vector2d& at) { return std::abs(at.x()) < 700 && std::abs(at.y()) < 400; }
+  /// The point's place in the picture (pixels from its centre).
+  Eigen::Vector2d at(const Vec3& p) const {
+    const Vec3 d = p - eye_;
+    const double ahead = std::max(d.dot(forward_), 1e-3);
+    return {d.dot(right_) / ahead * scale_, d.dot(up_) / ahead * scale_};
+  }
+  /// Pixels a length `size` at `p` spans across the picture.
+  double size_at(const Vec3& p, double size) const { return size / std::max((p - eye_).dot(forward_), 1e-3) * scale_; }
+
+ private:
+  Vec3 eye_, forward_{1, 0, 0}, right_{0, 1, 0}, up_{0, 0, 1};
+  double scale_ = 1;
+};
+
+/// Sub-frame instants the blur measures a path at and draws its copies at, across the open shutter.
+constexpr int kMeasureSteps = 8;
+constexpr int kMaxCopies = 24;
+/// How much of the background the copies together still let through where they all overlap.
+constexpr double kStreakLeak = 0.04;
+
+/// Pixels `point(u)` travels across the picture while the shutter of the frame at t is open, the
+/// camera moving too (u runs over the shutter's sub-frame instants).
+template <class PointAt>
+double picture_travel(const Shot& shot, double t, double shutter, PointAt&& point) {
+  double travel = 0;
+  Eigen::Vector2d last = Eigen::Vector2d::Zero();
+  bool seen_last = false;
+  for (int k = 0; k <= kMeasureSteps; ++k) {
+    const double u =
+        std::clamp(t + shutter * (static_cast<double>(k) / kMeasureSteps - 0.5), 0.0, shot.timeline.duration());
+    const PictureProjection view(shot.camera->pose(u));
+    const Vec3 p = point(u);
+    // What is behind the camera or outside the picture does not count.
+    const bool seen = view.in_front(p) && view.in_picture(view.at(p));
+    const Eigen::Vector2d here = seen ? view.at(p) : Eigen::Vector2d::Zero();
+    if (k > 0 && seen && seen_last) travel += (here - last).norm();
+    last = here;
+    seen_last = seen;
+  }
+  return travel;
+}
+
+/// The copies a streak of `travel` pixels needs: close enough (at most `spacing` pixels apart) to
+/// read as one streak; 1 below the threshold.
+int copies_for(double travel, double spacing) {
+  if (travel < kBlurPixels) return 1;
+  return std::clamp(static_cast<int>(std::ceil(travel / std::max(spacing, 1.0))) + 1, 3, kMaxCopies);
+}
+
+/// What each of `copies` lets through so that where `overlap` of them cover a point together they
+/// let through kStreakLeak: 1 - a, with (1 - a)^overlap = kStreakLeak.
+double copy_transmit(int overlap) { return std::pow(kStreakLeak, 1.0 / std::max(overlap, 1)); }
+
+/// The instant of copy k of `copies`, within the shot.
+double sub_time(const Shot& shot, double t, double shutter, int k, int copies) {
+  return std::clamp(t + shutter * ((k + 0.5) / copies - 0.5), 0.0, shot.timeline.duration());
+}
+
+struct StickFrame {
+  Vec3 along, side, up;
+};
+
+StickFrame stick_frame(const CuePose& cue) {
+  const Vec3 along = cue.axis.normalized();
+  Vec3 side = Vec3::UnitZ().cross(along);
+  if (side.norm() < 1e-9) side = Vec3::UnitY();
+  side.normalize();
+  return {along, side, along.cross(side)};
+}
+
+constexpr double kStickLength = 1.47;  // m, the model's tip to butt
+
+struct FrameBlur {
+  std::vector<int> ball_copies;  ///< per ball, 1: drawn once
+  std::vector<double> ball_overlap;
+  int stick_copies = 1;
+};
+
+FrameBlur plan_blur(const Shot& shot, double t, int fps) {
+  FrameBlur blur;
+  const double shutter = kShutter / fps;
+  const PictureProjection view(shot.camera->pose(t));
+  const double radius = shot.scene.physics.ball_radius;
+  for (int i = 0; i < shot.timeline.ball_count(); ++i) {
+    const BallState state = shot.timeline.state(i, t);
+    const double travel =
+        picture_travel(shot, t, shutter, [&](double u) { return shot.timeline.state(i, u).position; });
+    const double diameter = view.size_at(state.position, 2 * radius);
+    // Copies a fifth of the ball's picture apart; where they overlap, that many cover a point.
+    const double spacing = std::max(1.5, 0.2 * diameter);
+    const int copies = copies_for(travel, spacing);
+    blur.ball_copies.push_back(copies);
+    blur.ball_overlap.push_back(std::min<double>(copies, diameter / std::max(travel / (copies - 1 + 1e-9), 1e-9) + 1));
+  }
+  const CuePose cue = shot.cue->pose(t);
+  if (cue.visible) {
+    double travel = 0;
+    for (double along : {0.0, kStickLength}) {
+      travel = std::max(travel, picture_travel(shot, t, shutter, [&](double u) {
+                          // Where the stick is out of the scene, it counts as where it is now.
+                          const CuePose p = shot.cue->pose(u).visible ? shot.cue->pose(u) : cue;
+                          return Vec3(p.tip + along * p.axis.normalized());
+                        }));
+    }
+    blur.stick_copies = copies_for(travel, 4.0);
+  }
+  return blur;
+}
+
 }  // namespace
+
+int blur_samples(const Shot& shot, int frame, int fps) {
+  const FrameBlur blur = plan_blur(shot, frame_time(frame, fps), fps);
+  int most = blur.stick_copies;
+  for (int c : blur.ball_copies) most = std::max(most, c);
+  return most;
+}
 
 std::string frame_name(int frame) {
   char name[32];
@@ -41,7 +175,7 @@ std::string frame_name(int frame) {
   return name;
 }
 
-void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
+void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Look look) {
   const double t = frame_time(frame, fps);
   out << "// " << frame_name(frame) << " of " << shot.scene.name << ": t = " << pov_number(t) << " s\n";
   out << "#version 3.7;\n#include \"" << kPovIncludeName << "\"\n\n";
@@ -54,23 +188,50 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
       << "  right -x * image_width / image_height\n  angle " << pov_number(kCameraFovDeg) << "\n  look_at "
       << pov_vector(look_at) << "\n}\n\n";
 
+  const bool photo = look == Look::photo;
+  FrameBlur blur;
+  if (photo) blur = plan_blur(shot, t, fps);
+  const double shutter = kShutter / fps;
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
     const BallState state = shot.timeline.state(i, t);
-    if (state.motion == Motion::pocketed) continue;  // at rest in its pocket, out of sight
-    const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
+    // Classic: a pocketed ball is out of sight; photographic: it lies in its pocket's cup.
+    if (state.motion == Motion::pocketed && !photo) continue;
     const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
-    out << "object { Ball(" << number << ") " << pov_matrix(r.col(0), r.col(1), r.col(2), state.position)
-        << " }  // ball " << i << "\n";
+    const int copies = photo ? blur.ball_copies[static_cast<std::size_t>(i)] : 1;
+    if (copies == 1) {
+      const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
+      out << "object { Ball(" << number << ") " << pov_matrix(r.col(0), r.col(1), r.col(2), state.position)
+          << " }  // ball " << i << "\n";
+      continue;
+    }
+    const std::string transmit =
+        pov_number(copy_transmit(static_cast<int>(std::lround(blur.ball_overlap[static_cast<std::size_t>(i)]))));
+    out << "object { BallShadow translate " << pov_vector(state.position) << " }  // ball " << i << "'s shadow\n";
+    for (int k = 0; k < copies; ++k) {
+      const BallState sub = shot.timeline.state(i, sub_time(shot, t, shutter, k, copies));
+      const Eigen::Matrix3d r = sub.orientation.normalized().toRotationMatrix();
+      out << "object { BallBlur(" << number << ", " << transmit << ") "
+          << pov_matrix(r.col(0), r.col(1), r.col(2), sub.position) << " }  // ball " << i << ", blurred " << k + 1
+          << "/" << copies << "\n";
+    }
   }
 
-  const CuePose cue = shot.cue->pose(t);
-  if (cue.visible) {
-    const Vec3 along = cue.axis.normalized();
-    Vec3 side = Vec3::UnitZ().cross(along);
-    if (side.norm() < 1e-9) side = Vec3::UnitY();
-    side.normalize();
-    const Vec3 up = along.cross(side);
-    out << "object { CueStick " << pov_matrix(along, side, up, cue.tip) << " }\n";
+  const int stick_copies = photo ? blur.stick_copies : 1;
+  if (stick_copies == 1) {
+    const CuePose cue = shot.cue->pose(t);
+    if (cue.visible) {
+      const StickFrame f = stick_frame(cue);
+      out << "object { CueStick " << pov_matrix(f.along, f.side, f.up, cue.tip) << " }\n";
+    }
+    return;
+  }
+  const std::string transmit = pov_number(copy_transmit(stick_copies));
+  for (int k = 0; k < stick_copies; ++k) {
+    const CuePose cue = shot.cue->pose(sub_time(shot, t, shutter, k, stick_copies));
+    if (!cue.visible) continue;
+    const StickFrame f = stick_frame(cue);
+    out << "object { CueStickT(" << transmit << ") " << pov_matrix(f.along, f.side, f.up, cue.tip) << " }  // blurred "
+        << k + 1 << "/" << stick_copies << "\n";
   }
 }
 

@@ -1,50 +1,86 @@
-// The fixed POV-Ray models of the shared include. They read the numbers write_pov_include puts
-// before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/PocketOut/PocketStretch,
-// NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW, CushionUndercut,
-// CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX), from the room
-// description (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls'
-// colours (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident
-// faces make POV-Ray pick either surface per ray, which shows as speckled seams.
+// The fixed POV-Ray models of the shared include, the photographic look. They read the numbers
+// write_pov_include puts before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/
+// PocketOut/PocketStretch, NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW,
+// CushionUndercut, CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX),
+// from the physics (PocketDepth: how deep a pocketed ball rests), from the room description
+// (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls' colours
+// (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident faces make POV-Ray pick
+// either surface per ray, which shows as speckled seams.
+//
+// Light, after how pool halls are lit and photographed: one rectangular lamp over the bed, its
+// light cut off by the shade (a spotlight cone), so a pool of light lies on the cloth and falls off
+// towards the rails while the room stays dim; a few wall sconces; the light the cloth throws back
+// (bounce light) by a shadowless green light from below the bed instead of radiosity, which cost
+// several times as much a frame and shimmered between frames (README "Quality presets").
+// Materials: worsted cloth (a woven normal, a sheen at grazing angles by the `aoi` pattern),
+// phenolic balls with a clear coat (fresnel reflection with ior 1.5: 4 % head-on, all at grazing,
+// after Schlick's approximation of the Fresnel equations), lacquered mahogany (the same clear coat).
 #include "pov_table.h"
 
 namespace bsim {
 
 namespace {
 
-constexpr std::string_view kModels = R"pov(// ---- fixed models
+constexpr std::string_view kModels = R"pov(// ---- fixed models (the photographic look)
 #include "transforms.inc"
-global_settings { assumed_gamma 1.0 max_trace_level 8 }
-// A little ambient stands in for the light the bright cloth throws back (no radiosity: too slow).
-#default { finish { ambient 0.02 } }
+global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
+// No ambient: the room's light comes from its lamps and the bounce light below.
+#default { finish { ambient 0 diffuse 0.8 } }
 
 #declare Eps = 0.001;
 #declare ApronDepth = 0.23;   // the rail's face below the bed
 #declare SlateDepth = 0.028;
 #declare LinerT = 0.008;      // pocket liner thickness
 #declare Far = <0, 0, -100>;  // where a placeholder keeps an empty CSG valid
+#declare ClearCoat = interior { ior 1.5 }  // lacquer and phenolic resin: fresnel needs an ior
 
 // ---- materials
+// Worsted wool cloth: the weave's fine grain as a low bump noise (a regular weave of threads 0.5 mm
+// apart aliased into moire rings at 1280x720), a faint mottle, and the fibres' sheen where the cloth
+// is seen at a grazing angle (aoi is 1 head-on, 0.5 at grazing).
+#declare ClothGreen = srgb <0.035, 0.33, 0.16>;
+#declare N_Weave = normal { bumps 0.05 scale 0.0012 }
+#declare P_Cloth = pigment {
+  aoi pigment_map {
+    [0.5 srgb <0.16, 0.44, 0.28>]
+    [0.62 bozo turbulence 0.5 color_map { [0 srgb <0.032, 0.315, 0.152>] [1 srgb <0.04, 0.345, 0.168>] } scale 0.12]
+    [1.0 bozo turbulence 0.5 color_map { [0 srgb <0.032, 0.315, 0.152>] [1 srgb <0.04, 0.345, 0.168>] } scale 0.12]
+  }
+}
 #declare T_Cloth = texture {
-  pigment { bozo turbulence 0.3 color_map { [0 srgb <0.05, 0.35, 0.155>] [1 srgb <0.055, 0.37, 0.165>] } scale 0.08 }
-  normal { granite 0.06 scale 0.0015 }
-  finish { diffuse 0.85 specular 0.02 roughness 0.2 }
+  pigment { P_Cloth }
+  normal { N_Weave }
+  finish { diffuse 0.9 brilliance 0.8 specular 0.03 roughness 0.25 }
 }
-#declare T_CushionCloth = texture {
-  pigment { srgb <0.05, 0.32, 0.14> }
-  normal { granite 0.06 scale 0.0015 }
-  finish { diffuse 0.85 specular 0.03 roughness 0.15 }
-}
-// Mahogany with its grain along x; turned for the rails along y.
+#declare T_CushionCloth = texture { T_Cloth }
+// Mahogany under lacquer: grain along x (turned for the rails along y), a little figure in the
+// normal, the clear coat's tight highlight (a mirroring coat cost a tenth of the frame and turned the
+// near rail into a white bar in wide shots).
 #declare T_Wood = texture {
   pigment {
-    wood turbulence 0.05 octaves 3 scale <0.03, 0.012, 1> rotate y * 90
-    color_map { [0.0 srgb <0.20, 0.08, 0.035>] [0.6 srgb <0.28, 0.12, 0.05>] [1.0 srgb <0.16, 0.06, 0.03>] }
+    wood turbulence <0.04, 0.3, 0.04> octaves 4 scale <0.006, 0.006, 1> rotate y * 90
+    color_map { [0.0 srgb <0.23, 0.085, 0.035>] [0.45 srgb <0.30, 0.12, 0.05>] [0.7 srgb <0.20, 0.07, 0.03>]
+                [1.0 srgb <0.27, 0.10, 0.045>] }
   }
-  finish { diffuse 0.7 specular 0.12 roughness 0.02 }
+  normal { wood 0.015 turbulence <0.04, 0.3, 0.04> scale <0.006, 0.006, 1> rotate y * 90 }
+  finish { diffuse 0.65 specular 0.6 roughness 0.0025 }
 }
 #declare T_WoodY = texture { T_Wood rotate z * 90 }
-#declare T_Liner = texture { pigment { srgb 0.02 } finish { diffuse 0.6 specular 0.12 roughness 0.05 } }
-#declare T_Sight = texture { pigment { srgb <0.92, 0.90, 0.84> } finish { diffuse 0.6 specular 0.6 roughness 0.01 } }
+#declare T_DarkWood = texture {
+  pigment { wood turbulence 0.1 scale <0.02, 0.02, 1> rotate y * 90
+            color_map { [0 srgb <0.12, 0.05, 0.025>] [1 srgb <0.17, 0.07, 0.035>] } }
+  finish { diffuse 0.6 specular 0.2 roughness 0.01 }
+}
+// Leather of the pocket liners and the pocket cups, and mother-of-pearl sights.
+#declare T_Leather = texture {
+  pigment { srgb <0.16, 0.09, 0.05> }
+  normal { granite 0.15 scale 0.004 }
+  finish { diffuse 0.6 specular 0.25 roughness 0.03 }
+}
+#declare T_Sight = texture {
+  pigment { srgb <0.93, 0.91, 0.86> }
+  finish { diffuse 0.6 specular 0.7 roughness 0.004 irid { 0.2 thickness 0.4 turbulence 0.3 } }
+}
 
 // ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
 // on the right of A->B seen from above, reaching back into the wood; the pockets cut its jaws.
@@ -139,20 +175,26 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   RailPiece(<InnerMin.u, InnerMin.v>, <InnerMin.u, InnerMax.v>, <OuterMin.u, OuterMax.v>, <OuterMin.u, OuterMin.v>, <-1, 0>, T_WoodY)
 }
 
-// ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
-// the wood; the cushions' jaws stay cloth, as on a real table.
+// ---- pockets: a leather liner lines each opening's throat through the wood and under the bed, and
+// a leather cup closes it PocketDepth below the bed, where the physics leaves a pocketed ball, so a
+// ball is seen to drop in and to lie there. A leather collar edges the opening on the rail's top.
 #declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
+#declare CupFloorZ = -PocketDepth - 0.0005;
 #declare Liners = union {
   sphere { Far, Eps }
   #for (I, 0, PocketCount - 1)
     difference {
-      PocketCut(I, LinerT, -0.16, RailTopZ + 0.0008)
-      PocketCut(I, 0, -1, 1)
+      PocketCut(I, LinerT, CupFloorZ - LinerT, RailTopZ + 0.0008)
+      PocketCut(I, 0, CupFloorZ, 1)
+      difference { object { InsideWood } box { <-100, -100, -100>, <100, 100, -SlateDepth + Eps> } }
+    }
+    difference {
+      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0025)
+      PocketCut(I, LinerT / 2, -1, 1)
       object { InsideWood }
     }
-    PocketCut(I, LinerT, -0.17, -0.16)
   #end
-  texture { T_Liner }
+  texture { T_Leather }
 }
 
 // ---- diamond sights: inlaid in the rails' tops where the table description puts them, the long
@@ -171,15 +213,19 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   texture { T_Sight }
 }
 
-// ---- the body under the rails and four legs
+// ---- the body under the rails and four turned legs
 #declare TableBody = union {
   box { <OuterMin.u + 0.06, OuterMin.v + 0.06, -ApronDepth - 0.12>, <OuterMax.u - 0.06, OuterMax.v - 0.06, -ApronDepth + Eps> }
   #for (I, 0, 3)
     #local LX = (I < 2 ? OuterMin.u + 0.22 : OuterMax.u - 0.22);
     #local LY = (mod(I, 2) = 0 ? OuterMin.v + 0.22 : OuterMax.v - 0.22);
-    box { <LX - 0.09, LY - 0.09, FloorZ - Eps>, <LX + 0.09, LY + 0.09, -ApronDepth - 0.1> }
+    union {
+      box { <-0.09, -0.09, FloorZ - Eps>, <0.09, 0.09, FloorZ + 0.08> }
+      cone { <0, 0, FloorZ + 0.08>, 0.075, <0, 0, -ApronDepth - 0.1>, 0.1 }
+      translate <LX, LY, 0>
+    }
   #end
-  texture { T_Wood scale 3 }
+  texture { T_DarkWood }
 }
 
 #declare Table = union {
@@ -191,113 +237,245 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
   object { TableBody }
 }
 
-// ---- balls: stripe and number disc are object patterns over the sphere, so no seams; the glyph
-// reaches through one half only, else the far side's number shows through.
+// ---- balls of phenolic resin under a clear coat: diffuse colour, the lamp mirrored by fresnel
+// reflection (4 % head-on), a tight highlight. Stripe and number circle are object patterns over
+// the sphere, so no seams; the glyph reaches through one half only, else the far side's number
+// shows through. Proportions of a standard (Aramith-style) set: the stripe is the middle half of the
+// ball's height (|y| < R/2), the number circle 25 mm across, centred on the stripe.
 #declare BallFinish = finish {
-  ambient 0.14 diffuse 0.75 specular 0.55 roughness 0.004 phong 0.25 phong_size 180
-  reflection { 0.03, 0.07 fresnel } conserve_energy
+  diffuse 0.78 specular 0.35 roughness 0.0015 brilliance 1.2
+  reflection { 0.0, 1.0 fresnel } conserve_energy
 }
 #declare BallWhite = srgb BallSrgb[0];
 #declare BallColour = array[16]
 #for (N, 0, 15)
   #declare BallColour[N] = srgb BallSrgb[N];
 #end
-// The number on a white disc at each end of the ball's z axis; the stripe is the band |y| < 0.56 R.
-#macro NumberDisc(N, Body)
+#declare StripeHalf = 0.5 * BallR;
+#declare DiscR = 0.4375 * BallR;
+#macro NumberDisc(N, Body, T)
   #local G = text { ttf "cyrvetic.ttf" str(N, 0, 0) 1, 0 }
-  #local G = object { G Center_Trans(G, x + y) scale <0.6 * BallR / 0.72, 0.6 * BallR / 0.72, 2 * BallR> }
+  #local G = object { G Center_Trans(G, x + y) scale <0.55 * BallR / 0.72, 0.55 * BallR / 0.72, 2 * BallR> }
   #local Glyphs = union { object { G } object { G rotate y * 180 } }
   pigment {
     object {
-      cylinder { -2 * BallR * z, 2 * BallR * z, 0.47 * BallR }
+      cylinder { -2 * BallR * z, 2 * BallR * z, DiscR }
       pigment { Body }
-      pigment { object { Glyphs BallWhite srgb 0.02 } }
+      #if (T > 0)  // a blurred copy: the number turns too fast to read, a plain disc
+        pigment { color BallWhite transmit T }
+      #else
+        pigment { object { Glyphs BallWhite srgb 0.02 } }
+      #end
     }
   }
 #end
-#macro BallPigment(N)
+// T: how much the ball lets through (0, but for the copies of a motion-blurred ball).
+#macro BallPigment(N, T)
+  #local White = color BallWhite transmit T;
+  #local Colour = color BallColour[N] transmit T;
   #if (N = 0)
-    pigment { BallWhite }
+    pigment { White }
   #elseif (N <= 8)
-    NumberDisc(N, pigment { BallColour[N] })
+    NumberDisc(N, pigment { Colour }, T)
   #else
-    NumberDisc(N, pigment { object { box { <-2 * BallR, -0.56 * BallR, -2 * BallR>, <2 * BallR, 0.56 * BallR, 2 * BallR> }
-                                     BallWhite, BallColour[N] } })
+    NumberDisc(N, pigment { object { box { <-2 * BallR, -StripeHalf, -2 * BallR>, <2 * BallR, StripeHalf, 2 * BallR> }
+                                     White, Colour } }, T)
   #end
 #end
 #declare BallTexture = array[16]
 #for (N, 0, 15)
-  #declare BallTexture[N] = texture { BallPigment(N) finish { BallFinish } }
+  #declare BallTexture[N] = texture { BallPigment(N, 0) finish { BallFinish } }
 #end
 // Ball N centred on the origin; a frame places it with its orientation as a matrix.
 #macro Ball(N)
-  sphere { 0, BallR texture { BallTexture[N] } }
+  sphere { 0, BallR texture { BallTexture[N] } interior { ClearCoat } }
 #end
+// One of the sub-frame copies a frame draws of a ball that moves more than a few pixels during
+// the shutter, letting through T of what lies behind, so the copies together read as a streak.
+#macro BallBlur(N, T)
+  sphere { 0, BallR texture { BallPigment(N, T) finish { diffuse 0.78 specular 0.35 roughness 0.002 } } no_shadow }
+#end
+// The shadow of a blurred ball: one unseen ball at the frame's instant (the soft lamp blurs it anyway;
+// shadows through every transparent copy would cost more than all the rest of the frame).
+#declare BallShadow = sphere { 0, BallR no_image no_reflection pigment { srgb 0 } }
 
-// ---- cue stick of cones and cylinders: the tip's face at the origin, the butt along +x
-#declare CueStick = union {
-  cylinder { <-0.0005, 0, 0>, <0.011, 0, 0>, 0.0064 pigment { srgb <0.18, 0.30, 0.55> } finish { diffuse 0.8 } }
-  cylinder { <0.011, 0, 0>, <0.035, 0, 0>, 0.0065 pigment { srgb <0.95, 0.94, 0.90> } finish { diffuse 0.7 specular 0.4 roughness 0.01 } }
-  cone { <0.035, 0, 0>, 0.0065, <0.74, 0, 0>, 0.0105
-    pigment { wood turbulence 0.02 scale <1, 0.004, 0.004> rotate z * 90
-              color_map { [0 srgb <0.86, 0.74, 0.55>] [1 srgb <0.80, 0.66, 0.46>] } }
-    finish { diffuse 0.7 specular 0.5 roughness 0.006 reflection 0.03 } }
-  cone { <0.74, 0, 0>, 0.0106, <0.755, 0, 0>, 0.0107 pigment { srgb <0.85, 0.85, 0.82> } finish { specular 0.8 roughness 0.003 metallic reflection 0.2 } }
-  cone { <0.755, 0, 0>, 0.0107, <1.0, 0, 0>, 0.0122 texture { T_Wood scale 0.3 } }
-  cone { <1.0, 0, 0>, 0.0122, <1.26, 0, 0>, 0.0137 pigment { srgb 0.04 } normal { bumps 0.3 scale 0.0008 } finish { diffuse 0.8 } }
-  cone { <1.26, 0, 0>, 0.0137, <1.455, 0, 0>, 0.0144 texture { T_Wood scale 0.3 } }
-  cylinder { <1.455, 0, 0>, <1.47, 0, 0>, 0.0145 pigment { srgb 0.03 } finish { diffuse 0.8 specular 0.2 } }
-}
+// ---- cue stick of cones and cylinders: the tip's face at the origin, the butt along +x. T lets
+// light through for the sub-frame copies of a fast stroke (0: the solid stick).
+#macro CueStickT(T)
+  union {
+    cylinder { <-0.0005, 0, 0>, <0.011, 0, 0>, 0.0064 pigment { srgb <0.18, 0.30, 0.55> transmit T } finish { diffuse 0.8 } }
+    cylinder { <0.011, 0, 0>, <0.035, 0, 0>, 0.0065 pigment { srgb <0.95, 0.94, 0.90> transmit T } finish { diffuse 0.7 specular 0.4 roughness 0.01 } }
+    cone { <0.035, 0, 0>, 0.0065, <0.74, 0, 0>, 0.0105
+      pigment { wood turbulence 0.02 scale <1, 0.004, 0.004> rotate z * 90
+                color_map { [0 srgbt <0.86, 0.74, 0.55, T>] [1 srgbt <0.80, 0.66, 0.46, T>] } }
+      finish { diffuse 0.7 specular 0.5 roughness 0.006 } }
+    cone { <0.74, 0, 0>, 0.0106, <0.755, 0, 0>, 0.0107 pigment { srgb <0.85, 0.85, 0.82> transmit T } finish { specular 0.8 roughness 0.003 metallic } }
+    cone { <0.755, 0, 0>, 0.0107, <1.0, 0, 0>, 0.0122 pigment { srgb <0.25, 0.09, 0.04> transmit T } finish { diffuse 0.6 specular 0.5 roughness 0.004 } }
+    cone { <1.0, 0, 0>, 0.0122, <1.26, 0, 0>, 0.0137 pigment { srgb 0.04 transmit T } normal { bumps 0.3 scale 0.0008 } finish { diffuse 0.8 } }
+    cone { <1.26, 0, 0>, 0.0137, <1.455, 0, 0>, 0.0144 pigment { srgb <0.25, 0.09, 0.04> transmit T } finish { diffuse 0.6 specular 0.5 roughness 0.004 } }
+    cylinder { <1.455, 0, 0>, <1.47, 0, 0>, 0.0145 pigment { srgb 0.03 transmit T } finish { diffuse 0.8 specular 0.2 } }
+  }
+#end
+#declare CueStick = CueStickT(0)
 
-// ---- the room: a carpeted floor, panelled walls, a long lamp over the table
+// ---- the room: wide dark oak boards, walls panelled in dark wood to a chair rail with deep red
+// paper above, a dark ceiling; on the walls framed pictures, a cue rack and brass sconces.
+#declare RoomMin = <OuterMin.u - RoomMargin, OuterMin.v - RoomMargin>;
+#declare RoomMax = <OuterMax.u + RoomMargin, OuterMax.v + RoomMargin>;
+#declare WainscotTop = FloorZ + 1.0;
 plane { z, FloorZ
-  pigment { bozo turbulence 0.4 color_map { [0 srgb <0.20, 0.06, 0.05>] [1 srgb <0.26, 0.09, 0.06>] } scale 0.05 }
-  normal { granite 0.2 scale 0.01 }
-  finish { diffuse 0.7 }
+  pigment {
+    gradient y
+    pigment_map {
+      [0.0 wood turbulence 0.08 scale <0.04, 0.04, 1> rotate y * 90 color_map { [0 srgb <0.16, 0.09, 0.05>] [1 srgb <0.21, 0.12, 0.065>] }]
+      [0.985 wood turbulence 0.08 scale <0.04, 0.04, 1> rotate y * 90 color_map { [0 srgb <0.16, 0.09, 0.05>] [1 srgb <0.21, 0.12, 0.065>] }]
+      [0.985 srgb 0.02] [1.0 srgb 0.02]
+    }
+    scale 0.14
+  }
+  finish { diffuse 0.7 specular 0.15 roughness 0.02 }
 }
-box { <OuterMin.u - RoomMargin, OuterMin.v - RoomMargin, FloorZ - 0.1>, <OuterMax.u + RoomMargin, OuterMax.v + RoomMargin, CeilingZ> inverse
-  pigment { gradient z color_map { [0 srgb <0.17, 0.11, 0.07>] [0.35 srgb <0.17, 0.11, 0.07>]
-                                   [0.35 srgb <0.22, 0.17, 0.11>] [1 srgb <0.22, 0.17, 0.11>] }
-            scale 3.4 translate z * FloorZ }
-  finish { diffuse 0.6 }
+plane { -z, -CeilingZ pigment { srgb <0.09, 0.08, 0.07> } finish { diffuse 0.6 } }
+// the four walls: panels (raised frames every 0.6 m) below the chair rail, paper above
+#declare P_Wall = pigment {
+  gradient z
+  pigment_map {
+    [0.0 srgb <0.12, 0.06, 0.03>]
+    [(WainscotTop - FloorZ) / 3 srgb <0.12, 0.06, 0.03>]
+    [(WainscotTop - FloorZ) / 3 srgb <0.30, 0.06, 0.05>]
+    [1.0 srgb <0.30, 0.06, 0.05>]
+  }
+  scale 3 translate z * FloorZ
 }
+box { <RoomMin.u, RoomMin.v, FloorZ - 0.1>, <RoomMax.u, RoomMax.v, CeilingZ + 0.1> inverse
+  pigment { P_Wall } normal { bumps 0.05 scale 0.01 } finish { diffuse 0.7 }
+}
+#macro WallPiece(Obj)  // an object built against the wall at x = 0 facing +x, placed on each wall
+  object { Obj translate x * RoomMin.u }
+  object { Obj rotate z * 180 translate x * RoomMax.u }
+  object { Obj rotate z * 90 translate y * RoomMin.v }
+  object { Obj rotate z * -90 translate y * RoomMax.v }
+#end
+// a chair rail and a skirting board all round
+#declare Trim = union {
+  box { <0, -100, WainscotTop - 0.03>, <0.03, 100, WainscotTop + 0.01> }
+  box { <0, -100, FloorZ>, <0.02, 100, FloorZ + 0.12> }
+  texture { T_DarkWood }
+}
+WallPiece(Trim)
+// a framed picture W x H, centred at (0, Y, Z) on the wall x = 0: a dark canvas of soft shapes
+#macro Picture(Y, Z, W, H, Seed)
+  union {
+    difference {
+      box { <0, Y - W / 2 - 0.06, Z - H / 2 - 0.06>, <0.04, Y + W / 2 + 0.06, Z + H / 2 + 0.06> }
+      box { <0.02, Y - W / 2, Z - H / 2>, <0.1, Y + W / 2, Z + H / 2> }
+      pigment { srgb <0.45, 0.33, 0.14> } finish { diffuse 0.6 specular 0.5 roughness 0.01 metallic }
+    }
+    box { <0.01, Y - W / 2, Z - H / 2>, <0.025, Y + W / 2, Z + H / 2>
+      pigment { wrinkles turbulence 0.6 color_map { [0 srgb <0.10, 0.12, 0.10>] [0.5 srgb <0.35, 0.27, 0.15>] [1 srgb <0.55, 0.45, 0.30>] }
+                scale <1, W / 2, H / 2> translate Seed }
+      finish { diffuse 0.7 }
+    }
+  }
+#end
+// a cue rack: a board with a row of cues standing in it
+#declare CueRack = union {
+  box { <0, -0.45, FloorZ + 0.25>, <0.03, 0.45, FloorZ + 0.32> texture { T_DarkWood } }
+  box { <0, -0.45, FloorZ + 1.35>, <0.05, 0.45, FloorZ + 1.42> texture { T_DarkWood } }
+  #for (I, 0, 7)
+    cone { <0.05, -0.38 + I * 0.108, FloorZ + 0.27>, 0.0145, <0.05, -0.38 + I * 0.108, FloorZ + 1.72>, 0.0065
+      pigment { gradient z color_map { [0 srgb 0.03] [0.2 srgb 0.03] [0.2 srgb <0.30, 0.12, 0.05>] [0.5 srgb <0.30, 0.12, 0.05>]
+                                       [0.5 srgb <0.80, 0.66, 0.46>] [1 srgb <0.84, 0.72, 0.52>] }
+                scale 1.45 translate z * (FloorZ + 0.27) }
+      finish { diffuse 0.7 specular 0.4 roughness 0.01 } }
+  #end
+}
+// a brass wall sconce with a warm shade: its own light is shadowless and fades within a metre or two
+#macro Sconce(Y, Z)
+  union {
+    cylinder { <0, Y, Z - 0.02>, <0.12, Y, Z - 0.02>, 0.008 pigment { srgb <0.6, 0.45, 0.2> } finish { specular 0.6 roughness 0.01 metallic } }
+    cone { <0.14, Y, Z - 0.06>, 0.07, <0.14, Y, Z + 0.08>, 0.045 open
+      pigment { srgb <1.0, 0.75, 0.45> } finish { emission 0.9 diffuse 0.3 } no_shadow }
+  }
+#end
+#declare WallDecor = union {
+  Picture(-1.2, FloorZ + 1.65, 0.7, 0.5, <0.3, 1.7, 0>)
+  Picture(1.2, FloorZ + 1.65, 0.7, 0.5, <2.1, 0.4, 0>)
+  Sconce(-2.2, FloorZ + 1.75)
+  Sconce(2.2, FloorZ + 1.75)
+  object { CueRack }
+}
+WallPiece(WallDecor)
+#macro WallLights(P, R)  // the sconces' glow on the wall through P, turned by R: one light between the two
+  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.72, 0.42> * 1.2 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
+#end
+WallLights(x * RoomMin.u, 0)
+WallLights(x * RoomMax.u, 180)
+WallLights(y * RoomMin.v, 90)
+WallLights(y * RoomMax.v, -90)
+
+// ---- the lamp: a long shade, tapered, dark green enamel outside, white inside, a brass rim and
+// two rods to the ceiling; a frosted diffuser glows in its mouth (the lamp the balls mirror).
+#declare ShadeTaper = 0.07;  // m the shade's top is drawn in on each side
+#macro ShadeSolid(Grow, Lift)
+  intersection {
+    box { <-LampHalf.u - Grow, -LampHalf.v - Grow, LampZ + Lift>, <LampHalf.u + Grow, LampHalf.v + Grow, LampTopZ + Lift> }
+    plane { <0, LampTopZ - LampZ, ShadeTaper>, 0 translate <0, LampHalf.v + Grow, LampZ> }
+    plane { <0, -(LampTopZ - LampZ), ShadeTaper>, 0 translate <0, -LampHalf.v - Grow, LampZ> }
+    plane { <LampTopZ - LampZ, 0, ShadeTaper>, 0 translate <LampHalf.u + Grow, 0, LampZ> }
+    plane { <-(LampTopZ - LampZ), 0, ShadeTaper>, 0 translate <-LampHalf.u - Grow, 0, LampZ> }
+  }
+#end
 union {
   difference {
-    box { <-LampHalf.u, -LampHalf.v, LampZ>, <LampHalf.u, LampHalf.v, LampTopZ> }
-    box { <-LampHalf.u + LampWall, -LampHalf.v + LampWall, LampZ - 0.01>, <LampHalf.u - LampWall, LampHalf.v - LampWall, LampTopZ - LampWall> }
+    ShadeSolid(0, 0)
+    object { ShadeSolid(-LampWall / 2, -LampWall) }
+    texture { pigment { srgb <0.03, 0.16, 0.08> } finish { diffuse 0.5 specular 0.6 roughness 0.004 } }
+    interior_texture { pigment { srgb 0.8 } finish { diffuse 0.8 emission 0.15 } }
   }
-  cylinder { <0, 0, LampTopZ>, <0, 0, CeilingZ>, LampCordR }
-  pigment { srgb <0.07, 0.28, 0.14> } finish { diffuse 0.6 specular 0.5 roughness 0.01 }
+  difference {
+    box { <-LampHalf.u - 0.004, -LampHalf.v - 0.004, LampZ - 0.002>, <LampHalf.u + 0.004, LampHalf.v + 0.004, LampZ + 0.016> }
+    box { <-LampHalf.u + 0.01, -LampHalf.v + 0.01, LampZ - 0.01>, <LampHalf.u - 0.01, LampHalf.v - 0.01, LampZ + 0.03> }
+    pigment { srgb <0.75, 0.58, 0.28> } finish { diffuse 0.5 specular 0.7 roughness 0.005 metallic }
+  }
+  cylinder { <-0.6 * LampHalf.u, 0, LampTopZ>, <-0.6 * LampHalf.u, 0, CeilingZ>, LampCordR
+    pigment { srgb <0.6, 0.45, 0.2> } finish { specular 0.6 roughness 0.01 metallic } }
+  cylinder { <0.6 * LampHalf.u, 0, LampTopZ>, <0.6 * LampHalf.u, 0, CeilingZ>, LampCordR
+    pigment { srgb <0.6, 0.45, 0.2> } finish { specular 0.6 roughness 0.01 metallic } }
+  // the diffuser, bright enough that its mirror image on a ball reads as the lamp
+  box { <-LampHalf.u + LampWall, -LampHalf.v + LampWall, LampZ + 0.012>, <LampHalf.u - LampWall, LampHalf.v - LampWall, LampZ + 0.014>
+    pigment { srgb 1 } finish { emission 9 diffuse 0 } }
   no_shadow
-  translate <Middle.u, Middle.v, 0>
-}
-// a brass band round the shade's rim
-difference {
-  box { <-LampHalf.u - 0.004, -LampHalf.v - 0.004, LampZ - 0.002>, <LampHalf.u + 0.004, LampHalf.v + 0.004, LampZ + 0.02> }
-  box { <-LampHalf.u + 0.01, -LampHalf.v + 0.01, LampZ - 0.01>, <LampHalf.u - 0.01, LampHalf.v - 0.01, LampZ + 0.03> }
-  pigment { srgb <0.75, 0.58, 0.28> } finish { diffuse 0.5 specular 0.7 roughness 0.005 metallic reflection 0.2 }
-  no_shadow
-  translate <Middle.u, Middle.v, 0>
-}
-box { <-LampHalf.u + LampWall, -LampHalf.v + LampWall, LampZ + 0.005>, <LampHalf.u - LampWall, LampHalf.v - LampWall, LampZ + 0.01>
-  pigment { srgb 1 } finish { emission 1 diffuse 0 } no_shadow
   translate <Middle.u, Middle.v, 0>
 }
 
-// ---- lights: final has a soft area light without jitter (jitter flickers from frame to frame)
-#declare LampColour = srgb <1.0, 0.96, 0.88>;
+// ---- lights. The lamp: a spotlight cone from the diffuser (the shade cuts it off, so the room
+// outside the cone is not tested for shadows at all) and its light fades with distance squared from
+// 1.2 m. Final: an area light the size of the diffuser, without jitter (jitter flickers from frame to
+// frame); draft: two point lights.
+#declare LampColour = srgb <1.0, 0.92, 0.78>;  // a warm white, about 3500 K
+#declare LampPower = 2.9;
+#macro LampCone()
+  spotlight point_at <Middle.u, Middle.v, 0> radius 24 falloff 60 tightness 0
+  fade_distance 1.2 fade_power 2
+#end
 #if (Final)
-  light_source { <Middle.u, Middle.v, LampZ - 0.01> LampColour * 1.6
-    area_light x * 2 * (LampHalf.u - 0.03), y * 2 * (LampHalf.v - 0.03), 9, 3 adaptive 1
-    fade_distance 1.6 fade_power 2
+  light_source { <Middle.u, Middle.v, LampZ + 0.01> LampColour * LampPower
+    area_light x * 2 * (LampHalf.u - LampWall), y * 2 * (LampHalf.v - LampWall), 7, 3 adaptive 0
+    LampCone()
   }
 #else
-  light_source { <Middle.u - 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.8 fade_distance 1.6 fade_power 2 }
-  light_source { <Middle.u + 0.6 * LampHalf.u, Middle.v, LampZ - 0.01> LampColour * 0.8 fade_distance 1.6 fade_power 2 }
+  light_source { <Middle.u - 0.6 * LampHalf.u, Middle.v, LampZ + 0.01> LampColour * LampPower / 2 LampCone() }
+  light_source { <Middle.u + 0.6 * LampHalf.u, Middle.v, LampZ + 0.01> LampColour * LampPower / 2 LampCone() }
 #end
-// dim room fill, casting no shadows
-light_source { <OuterMin.u - 2, OuterMin.v - 2, 2.4> srgb 0.15 shadowless }
-light_source { <OuterMax.u + 2, OuterMax.v + 2, 2.4> srgb 0.10 shadowless }
+// the cloth's bounce: green light from below the bed, upward, on the balls' undersides, the
+// cushions' faces, the lamp's underside and the ceiling; shadowless, so it costs no shadow rays
+light_source { <Middle.u, Middle.v, -0.35> srgb <0.10, 0.30, 0.16> * 0.55
+  spotlight point_at <Middle.u, Middle.v, 1> radius 60 falloff 88 tightness 0
+  fade_distance 0.8 fade_power 2 shadowless }
+// the dim rest of the room: a faint warm fill from high in two corners
+light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.16 shadowless }
+light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.12 shadowless }
 
 object { Table }
 )pov";

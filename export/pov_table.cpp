@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ball_look.h"
+#include "pocket_fall.h"
 #include "pov_format.h"
 #include "table.h"
 
@@ -125,13 +126,14 @@ void write_ball_colours(std::ostream& out) {
 
 }  // namespace
 
-void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
+void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, Look look) {
   out << "// Billiards Sim: the table, balls, cue stick, room and lights shared by every frame.\n"
          "// Units are metres, z is up, the bed is z = 0 and the table's middle is the origin.\n\n"
          "// ---- from the scene\n";
   out << "#declare Final = " << (quality == Quality::final ? 1 : 0)
       << ";  // area light (final) or point lights (draft)\n";
   out << "#declare BallR = " << pov_number(scene.physics.ball_radius) << ";\n";
+  out << "#declare PocketDepth = " << pov_number(kPocketDepth) << ";  // how far below the bed a pocketed ball rests\n";
 
   std::vector<Point2> ends;
   for (const Rail& rail : scene.rails)
@@ -165,7 +167,7 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
   }
   write_table_description(layout, out);
   write_ball_colours(out);
-  out << "\n" << pov_models_text();
+  out << "\n" << (look == Look::classic ? pov_classic_models_text() : pov_models_text());
 }
 
 }  // namespace bsim

@@ -1,17 +1,21 @@
 // The POV-Ray files: the shared include and a frame match their golden text; balls are placed by
-// their quaternions, dropped balls and the put-away stick leave the picture, the table follows the
-// scene, and POV-Ray itself parses what is written for several tables.
+// their quaternions, dropped balls lie in their pockets (classic: leave the picture), the put-away
+// stick leaves it, fast balls are drawn as blurred copies and slow ones once, the table follows the
+// scene, POV-Ray itself parses what is written for several tables (in both looks), and two renders
+// of one frame are the same picture.
 //
 // After an intended change to the models, regenerate the golden files (with every other) with
 //   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
 #include "files.h"
 #include "frames.h"
 #include "golden.h"
+#include "pocket_fall.h"
 #include "pov_format.h"
 #include "pov_frame.h"
 #include "pov_table.h"
@@ -59,9 +63,9 @@ std::string include_text(const Shot& shot, Quality quality = Quality::draft) {
   return out.str();
 }
 
-std::string frame_text(const Shot& shot, int frame, int fps = 30) {
+std::string frame_text(const Shot& shot, int frame, int fps = 30, Look look = Look::photo) {
   std::ostringstream out;
-  write_pov_frame(shot, frame, fps, out);
+  write_pov_frame(shot, frame, fps, out, look);
   return out.str();
 }
 
@@ -71,11 +75,14 @@ void check_golden(const std::string& name, const std::string& text) {
 
 /// Writes the include and the given frames of `shot` into `dir`, renders them at 32x18 with
 /// POV-Ray (all at once: each process spends most of its time starting), returns the log.
-test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames) {
-  REQUIRE(test::write_file(dir / std::string(kPovIncludeName), include_text(shot, Quality::final)));
+test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames,
+                                Look look = Look::photo) {
+  std::ostringstream include;
+  write_pov_include(shot.scene, Quality::final, include, look);
+  REQUIRE(test::write_file(dir / std::string(kPovIncludeName), include.str()));
   std::string command = "cd '" + dir.string() + "' && status=0; pids=; for f in";
   for (int k : frames) {
-    REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k)));
+    REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k, 30, look)));
     command += " " + frame_name(k);
   }
   command +=
@@ -120,13 +127,16 @@ TEST_SUITE("pov") {
     CHECK(frame.find("angle 55.0") != std::string::npos);
   }
 
-  TEST_CASE("a pocketed ball and the put-away stick are out of the picture") {
+  TEST_CASE("a pocketed ball lies in its pocket (classic: out of the picture); the put-away stick is gone") {
     const auto shot = load(kPocketScene);
     REQUIRE(shot->timeline.pocket_drops().size() == 1);
     const int last = frame_count(shot->timeline.duration(), 30) - 1;
     const std::string first = frame_text(*shot, 0), end = frame_text(*shot, last);
     CHECK(first.find("// ball 0") != std::string::npos);
-    CHECK(end.find("// ball 0") == std::string::npos);
+    // In the pocket's cup, its centre PocketDepth below its height on the bed.
+    const double rest = shot->scene.physics.ball_radius - kPocketDepth;
+    CHECK(end.find(", " + pov_number(rest) + "> }  // ball 0") != std::string::npos);
+    CHECK(frame_text(*shot, last, 30, Look::classic).find("// ball 0") == std::string::npos);
     CHECK(end.find("// ball 1") != std::string::npos);
     CHECK(end.find("CueStick") == std::string::npos);
     bool stick_seen = false;
@@ -159,6 +169,39 @@ TEST_SUITE("pov") {
     CHECK(frame.find("look_at <0.0, 0.0003, 0.0>") != std::string::npos);
   }
 
+  TEST_CASE("a fast ball is drawn as blurred copies along its path, a still frame once") {
+    const auto shot = load(kTinyScene);
+    // Before the strike nothing moves: every ball once, no copies.
+    CHECK(blur_samples(*shot, 0, 30) == 1);
+    CHECK(frame_text(*shot, 0).find("BallBlur") == std::string::npos);
+    // Just after it the cue ball runs at 1.2 m/s: many pixels while the shutter is open.
+    const int after = static_cast<int>(std::ceil(shot->timeline.cue_time() * 30)) + 1;
+    const int copies = blur_samples(*shot, after, 30);
+    CHECK(copies >= 3);
+    const std::string text = frame_text(*shot, after);
+    CHECK(text.find("BallShadow") != std::string::npos);
+    CHECK(text.find("// ball 0, blurred " + std::to_string(copies) + "/" + std::to_string(copies)) !=
+          std::string::npos);
+    CHECK(text.find("object { Ball(3) ") != std::string::npos);  // the balls at rest stay sharp
+    CHECK(frame_text(*shot, after, 30, Look::classic).find("BallBlur") == std::string::npos);
+  }
+
+  TEST_CASE("two renders of one frame are the same picture") {
+    test::require_program("povray");
+    const auto shot = load(kTinyScene);
+    test::TempDir dir;
+    const int after = static_cast<int>(std::ceil(shot->timeline.cue_time() * 30)) + 1;
+    REQUIRE(render_tiny(*shot, dir.path, {after}).exit_code == 0);
+    // Picture files carry the time they were made, so compare the pixels: two renders as binary PPM
+    // (32 x 18 x 3 bytes at the end of each file).
+    const std::string name = frame_name(after);
+    const test::CommandResult r =
+        test::run_command("cd '" + dir.path.string() + "' && for o in a b; do povray -D +FP +WT1 +I" + name +
+                          ".pov +O$o.ppm +W32 +H18 +Q9 +A0.3 2>/dev/null || exit 2; done; "
+                          "tail -c 1728 a.ppm > a.rgb && tail -c 1728 b.ppm > b.rgb && cmp a.rgb b.rgb");
+    CHECK_MESSAGE(r.exit_code == 0, r.out);
+  }
+
   TEST_CASE("POV-Ray parses and renders the frames of three different tables") {
     struct Case {
       const char* text;
@@ -175,5 +218,10 @@ TEST_SUITE("pov") {
       CHECK_MESSAGE(r.exit_code == 0, r.out);
       for (int k : {0, strike - 10, strike + 3, last}) CHECK(fs::file_size(dir.path / (frame_name(k) + ".png")) > 0);
     }
+    // The classic look, kept for the render benchmark, still parses too.
+    const auto shot = load(kPocketScene);
+    test::TempDir dir;
+    const test::CommandResult r = render_tiny(*shot, dir.path, {0}, Look::classic);
+    CHECK_MESSAGE(r.exit_code == 0, r.out);
   }
 }
