@@ -16,9 +16,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-constexpr double kRollLevel = 0.004;      ///< RMS of the rumble at 1 m/s
+constexpr double kRollLevel = 0.0015;     ///< RMS of the rumble at 1 m/s
 constexpr double kRollExponent = 1.2;     ///< the rumble's amplitude grows as speed^1.2
-constexpr double kSlipLevel = 0.0012;     ///< RMS of the slip hiss at 1 m/s of slip
+constexpr double kSlipLevel = 0.0005;     ///< RMS of the slip hiss at 1 m/s of slip
 constexpr double kHissQ = 2.0;            ///< sharpness of the slip hiss's band
 constexpr double kBedMode = 105.0;        ///< Hz, the slate bed's low resonance the rumble rings
 constexpr double kContactPatch = 0.003;   ///< m, radius of the ball's patch on the cloth: slip of a spin about z

@@ -122,10 +122,10 @@ std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsP
   // so the ring is relatively stronger for gentle hits (faster hits sound brighter).
   const double ring = std::pow(tau / 350e-6, 1.5);
   const std::vector<double> pulse = sampled_pulse(tau, sample_rate);
-  add_mode(pulse, jittered({5200, 0.004, 0.06 * ring}, random, 0.04), sample_rate, out);
-  add_mode(pulse, jittered({3400, 0.010, 0.05 * ring}, random, 0.05), sample_rate, out);
-  add_mode(pulse, jittered({2650, 0.016, 0.05 * ring}, random, 0.05), sample_rate, out);
-  add_band_noise(random, 0.022, 1200, 3500, 0.18 * ring, sample_rate, out);
+  add_mode(pulse, jittered({5200, 0.006, 0.12 * ring}, random, 0.04), sample_rate, out);
+  add_mode(pulse, jittered({3400, 0.018, 0.12 * ring}, random, 0.05), sample_rate, out);
+  add_mode(pulse, jittered({2650, 0.030, 0.12 * ring}, random, 0.05), sample_rate, out);
+  add_band_noise(random, 0.033, 1200, 3500, 0.40 * ring, sample_rate, out);
   return out;
 }
 
