@@ -15,13 +15,15 @@
 // Materials: worsted cloth (a woven normal, a sheen at grazing angles by the `aoi` pattern),
 // phenolic balls with a clear coat (fresnel reflection with ior 1.5: 4 % head-on, all at grazing,
 // after Schlick's approximation of the Fresnel equations), lacquered mahogany (the same clear coat).
+#include <string>
+
 #include "pov_table.h"
 
 namespace bsim {
 
 namespace {
 
-constexpr std::string_view kModels = R"pov(// ---- fixed models (the photographic look)
+constexpr std::string_view kModelsHead = R"pov(// ---- fixed models (the photographic look)
 #include "transforms.inc"
 global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 // No ambient: the room's light comes from its lamps and the bounce light below.
@@ -82,7 +84,11 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
   finish { diffuse 0.6 specular 0.7 roughness 0.004 irid { 0.2 thickness 0.4 turbulence 0.3 } }
 }
 
-// ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
+)pov";
+
+// The cushions and the wooden rail: one model for both looks.
+constexpr std::string_view kCushionsAndRails =
+    R"pov(// ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
 // on the right of A->B seen from above, reaching back into the wood; the pockets cut its jaws.
 #macro Cushion(A, B, H)
   #local D = vnormalize(B - A);
@@ -175,7 +181,10 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
   RailPiece(<InnerMin.u, InnerMin.v>, <InnerMin.u, InnerMax.v>, <OuterMin.u, OuterMax.v>, <OuterMin.u, OuterMin.v>, <-1, 0>, T_WoodY)
 }
 
-// ---- pockets: a leather liner lines each opening's throat through the wood and under the bed, and
+)pov";
+
+constexpr std::string_view kModelsTail =
+    R"pov(// ---- pockets: a leather liner lines each opening's throat through the wood and under the bed, and
 // a leather cup closes it PocketDepth below the bed, where the physics leaves a pocketed ball, so a
 // ball is seen to drop in and to lie there. A leather collar edges the opening on the rail's top.
 #declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
@@ -482,6 +491,11 @@ object { Table }
 
 }  // namespace
 
-std::string_view pov_models_text() { return kModels; }
+std::string_view pov_cushions_and_rails_text() { return kCushionsAndRails; }
+
+std::string_view pov_models_text() {
+  static const std::string text = std::string(kModelsHead) + std::string(kCushionsAndRails) + std::string(kModelsTail);
+  return text;
+}
 
 }  // namespace bsim

@@ -6,13 +6,15 @@
 // description (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls'
 // colours (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident
 // faces make POV-Ray pick either surface per ray, which shows as speckled seams.
+#include <string>
+
 #include "pov_table.h"
 
 namespace bsim {
 
 namespace {
 
-constexpr std::string_view kModels = R"pov(// ---- fixed models
+constexpr std::string_view kClassicHead = R"pov(// ---- fixed models
 #include "transforms.inc"
 global_settings { assumed_gamma 1.0 max_trace_level 8 }
 // A little ambient stands in for the light the bright cloth throws back (no radiosity: too slow).
@@ -47,100 +49,10 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 #declare T_Liner = texture { pigment { srgb 0.02 } finish { diffuse 0.6 specular 0.12 roughness 0.05 } }
 #declare T_Sight = texture { pigment { srgb <0.92, 0.90, 0.84> } finish { diffuse 0.6 specular 0.6 roughness 0.01 } }
 
-// ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
-// on the right of A->B seen from above, reaching back into the wood; the pockets cut its jaws.
-#macro Cushion(A, B, H)
-  #local D = vnormalize(B - A);
-  #local L = vlength(B - A);
-  #local N = <-D.v, D.u>;
-  #local Top = CushionTopZ;
-  prism {
-    linear_sweep linear_spline -CushionW, L + CushionW, 11,
-    <CushionUndercut, -Eps>, <0.0055, H * 0.52>, <0.0012, H * 0.85>, <0.0, H>, <0.0006, H + 0.0016>,
-    <0.0035, H + 0.0034>, <0.015, H + 0.35 * (Top - H)>, <CushionW, Top>,
-    <CushionW + 0.012, Top>, <CushionW + 0.012, -Eps>, <CushionUndercut, -Eps>
-    matrix <N.u, N.v, 0, D.u, D.v, 0, 0, 0, 1, A.u, A.v, 0>
-  }
-#end
+)pov";
 
-// ---- pockets: the drop circle, stretched outward along PocketOut so the cut reaches into the rail.
-#macro PocketCut(I, Grow, Z0, Z1)
-  #local C = PocketC[I];
-  #local O = PocketOut[I];
-  #local R = PocketR[I] + Grow;
-  #local S = PocketStretch[I];
-  #local C2 = C + O * S;
-  union {
-    cylinder { <C.u, C.v, Z0>, <C.u, C.v, Z1>, R }
-    #if (S > 0)
-      cylinder { <C2.u, C2.v, Z0>, <C2.u, C2.v, Z1>, R }
-      box { <0, -R, Z0>, <S, R, Z1> matrix <O.u, O.v, 0, -O.v, O.u, 0, 0, 0, 1, C.u, C.v, 0> }
-    #end
-  }
-#end
-// The exact drop circle at the bed; the rails and cushions are cut back under the liner.
-#declare PocketHoles = union {
-  sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketCut(I, 0, -1, 1) #end
-}
-#declare PocketCuts = union {
-  sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketCut(I, LinerT / 2, -1, 1) #end
-}
-// The playing area inside the noses, down to below the slate: the liner shows only outside it.
-#if (PlayHullCount >= 3)
-  #declare PlayArea = prism {
-    linear_sweep linear_spline -1, SlateDepth + Eps, PlayHullCount + 1,
-    #for (I, 0, PlayHullCount - 1) PlayHull[I], #end PlayHull[0]
-    rotate -x * 90
-  }
-#else
-  #declare PlayArea = box { <NoseMin.u, NoseMin.v, -SlateDepth - Eps>, <NoseMax.u, NoseMax.v, 1> }
-#end
-
-#declare InnerMin = NoseMin - <CushionW, CushionW>;
-#declare InnerMax = NoseMax + <CushionW, CushionW>;
-#declare OuterMin = InnerMin - <RailW, RailW>;
-#declare OuterMax = InnerMax + <RailW, RailW>;
-#declare Middle = (NoseMin + NoseMax) / 2;
-
-// ---- the bed: slate under cloth, holed by the pockets
-#declare Bed = difference {
-  box { <InnerMin.u - Eps, InnerMin.v - Eps, -SlateDepth>, <InnerMax.u + Eps, InnerMax.v + Eps, 0> }
-  object { PocketHoles }
-  difference { object { PocketCuts } object { PlayArea } }
-  texture { T_Cloth }
-}
-
-// Each cushion cut on its own, so each keeps a tight bounding box: a ray over the cloth meets none.
-#declare Cushions = union {
-  sphere { Far, Eps }
-  #for (I, 0, RailCount - 1)
-    difference { Cushion(RailA[I], RailB[I], RailH[I]) object { PocketCuts } }
-  #end
-  texture { T_CushionCloth }
-}
-
-// ---- the wooden rails: four mitred pieces (the grain runs along each), bevelled on the outer
-// edge, cut by the pockets. Separate pieces keep tight bounding boxes.
-#declare Bevel = 0.016;
-#macro RailPiece(P0, P1, P2, P3, Out, Tex)
-  difference {
-    prism { linear_sweep linear_spline -RailTopZ, ApronDepth, 5, P0, P1, P2, P3, P0 rotate -x * 90 }
-    // the bevel: a plane through the outer top edge, pulled in by Bevel, leaning out at 45 degrees
-    plane { <Out.u, Out.v, 1>, 0 translate <P2.u - Out.u * Bevel, P2.v - Out.v * Bevel, RailTopZ> inverse }
-    object { PocketCuts }
-    texture { Tex }
-  }
-#end
-#declare Rails = union {
-  RailPiece(<InnerMin.u, InnerMax.v>, <InnerMax.u, InnerMax.v>, <OuterMax.u, OuterMax.v>, <OuterMin.u, OuterMax.v>, <0, 1>, T_Wood)
-  RailPiece(<InnerMax.u, InnerMin.v>, <InnerMin.u, InnerMin.v>, <OuterMin.u, OuterMin.v>, <OuterMax.u, OuterMin.v>, <0, -1>, T_Wood)
-  RailPiece(<InnerMax.u, InnerMax.v>, <InnerMax.u, InnerMin.v>, <OuterMax.u, OuterMin.v>, <OuterMax.u, OuterMax.v>, <1, 0>, T_WoodY)
-  RailPiece(<InnerMin.u, InnerMin.v>, <InnerMin.u, InnerMax.v>, <OuterMin.u, OuterMax.v>, <OuterMin.u, OuterMin.v>, <-1, 0>, T_WoodY)
-}
-
-// ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
+constexpr std::string_view kClassicTail =
+    R"pov(// ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
 // the wood; the cushions' jaws stay cloth, as on a real table.
 #declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
 #declare Liners = union {
@@ -305,6 +217,10 @@ object { Table }
 
 }  // namespace
 
-std::string_view pov_classic_models_text() { return kModels; }
+std::string_view pov_classic_models_text() {
+  static const std::string text =
+      std::string(kClassicHead) + std::string(pov_cushions_and_rails_text()) + std::string(kClassicTail);
+  return text;
+}
 
 }  // namespace bsim
