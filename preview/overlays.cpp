@@ -69,11 +69,9 @@ const Event* latest_event(const Timeline& timeline, double t) {
 
 const CameraShot* camera_shot_at(const Shot& shot, double t) {
   if (!shot.camera) return nullptr;
-  const CameraShot* found = nullptr;
-  for (const CameraSegment& s : shot.camera->segments())
-    if (t + 1e-9 >= s.begin && s.shot >= 0 && s.shot < static_cast<int>(shot.scene.camera.size()))
-      found = &shot.scene.camera[static_cast<std::size_t>(s.shot)];
-  return found;
+  const int i = shot.camera->shot_at(t + 1e-9);  // a frame at a description's event shows that one
+  if (i < 0 || i >= static_cast<int>(shot.scene.camera.size())) return nullptr;
+  return &shot.scene.camera[static_cast<std::size_t>(i)];
 }
 
 // Samples up to time t, then the point at t itself: the part of a path already travelled.

@@ -219,6 +219,12 @@ TEST_SUITE("camera_script") {
     CHECK(script.segments()[0].begin == 0.0);
     CHECK(script.segments()[0].end == 7.25);
     CHECK(script.segments()[1].begin == 7.25);
+    // Which description holds: the first from the start (before its event too), the last from its event.
+    CHECK(script.shot_at(0.0) == 0);
+    CHECK(script.shot_at(1.0) == 0);
+    CHECK(script.shot_at(7.2) == 0);
+    CHECK(script.shot_at(7.25) == 1);
+    CHECK(script.shot_at(100.0) == 1);
   }
 
   TEST_CASE("a script with no description gets a wide hover over the table") {

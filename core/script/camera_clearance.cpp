@@ -56,12 +56,7 @@ class Checker {
         break;
       }
     }
-    if (s.shot < 0) {
-      s.shot = camera_.segments().front().shot;
-      for (const CameraSegment& segment : camera_.segments()) {
-        if (t >= segment.begin) s.shot = segment.shot;
-      }
-    }
+    if (s.shot < 0) s.shot = camera_.shot_at(t);
     s.location = camera_.pose(t).location;
     const double radius = scene_.physics.ball_radius;
     for (int ball = 0; ball < timeline_.ball_count(); ++ball) {

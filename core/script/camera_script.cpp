@@ -228,4 +228,12 @@ CameraPose CameraScript::pose(double t) const {
   return shot_pose(shot, t);
 }
 
+int CameraScript::shot_at(double t) const {
+  if (segments_.empty()) return -1;
+  int shot = segments_.front().shot;
+  for (const CameraSegment& segment : segments_)
+    if (t >= segment.begin) shot = segment.shot;
+  return shot;
+}
+
 }  // namespace bsim

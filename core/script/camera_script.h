@@ -67,6 +67,9 @@ class CameraScript {
   CameraPose shot_pose(int shot, double t) const;
   const std::vector<CameraShot>& shots() const { return shots_; }
   const std::vector<CameraSegment>& segments() const { return segments_; }
+  /// The description that holds at t (index into shots()): the one whose segment t is in, the first
+  /// one before its event; -1 for a script with none.
+  int shot_at(double t) const;
   const std::vector<CameraWindow>& windows() const { return windows_; }
 
  private:
