@@ -299,10 +299,39 @@ constexpr std::string_view kModelsTail =
 #macro Ball(N)
   sphere { 0, BallR texture { BallTexture[N] } interior { ClearCoat } }
 #end
-// One of the sub-frame copies a frame draws of a ball that moves more than a few pixels during
-// the shutter, letting through T of what lies behind, so the copies together read as a streak.
-#macro BallBlur(N, T)
-  sphere { 0, BallR texture { BallPigment(N, T) finish { diffuse 0.78 specular 0.35 roughness 0.002 } } no_shadow }
+// A piece of a fast ball's streak (pov_frame.h): the capsule the ball sweeps from the origin to
+// <L, 0, D>, laid out with x along the piece as the camera sees it and z towards the camera. Its
+// front lets through what the ball does not cover of the shutter's time at that point of the
+// picture, W times the length of its centre line (x from 0 to Lc) within its chord there (half
+// length sqrt(BallR^2 - y^2)); its back lets all through, so each point counts once. The ball's
+// colours are averaged over its surface (it turns too fast to show its number): a number circle
+// is a tenth of a ball's surface, the stripe half of it (zones of a sphere: area by height).
+#declare StreakColour = array[16]
+#for (N, 0, 15)
+  #if (N = 0)
+    #declare StreakColour[N] = BallWhite;
+  #elseif (N <= 8)
+    #declare StreakColour[N] = 0.9 * BallColour[N] + 0.1 * BallWhite;
+  #else
+    #declare StreakColour[N] = 0.4 * BallColour[N] + 0.6 * BallWhite;
+  #end
+#end
+#declare StreakCover = function(X, Y, Lc, W) {
+  min(0.9999, W * max(0, min(X + sqrt(max(BallR * BallR - Y * Y, 0)), Lc) - max(X - sqrt(max(BallR * BallR - Y * Y, 0)), 0)))
+}
+#macro BallStreak(N, L, D, Lc, W)
+  merge {
+    sphere { 0, BallR }
+    sphere { <L, 0, D>, BallR }
+    #if (vlength(<L, 0, D>) > 1e-6) cylinder { 0, <L, 0, D>, BallR } #end
+    texture {
+      pigment { function { StreakCover(x, y, Lc, W) }
+                colour_map { [0 colour StreakColour[N] transmit 1] [1 colour StreakColour[N] transmit 0] } }
+      finish { diffuse 0.78 specular 0.35 roughness 0.002 }
+    }
+    interior_texture { pigment { rgbt 1 } }
+    no_shadow
+  }
 #end
 // The shadow of a blurred ball: one unseen ball at the frame's instant (the soft lamp blurs it anyway;
 // shadows through every transparent copy would cost more than all the rest of the frame).
