@@ -74,10 +74,12 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
   finish { diffuse 0.6 specular 0.2 roughness 0.01 }
 }
 // Leather of the pocket liners and the pocket cups, and mother-of-pearl sights.
+// Pocket leather is near black and hardly glossy: a broad sheen on its grain turns it grey under the
+// lamp.
 #declare T_Leather = texture {
-  pigment { srgb <0.16, 0.09, 0.05> }
-  normal { granite 0.15 scale 0.004 }
-  finish { diffuse 0.6 specular 0.25 roughness 0.03 }
+  pigment { srgb <0.055, 0.032, 0.02> }
+  normal { granite 0.05 scale 0.004 }
+  finish { diffuse 0.65 specular 0.02 roughness 0.02 }
 }
 #declare T_Sight = texture {
   pigment { srgb <0.93, 0.91, 0.86> }
@@ -189,6 +191,9 @@ constexpr std::string_view kModelsTail =
 // ball is seen to drop in and to lie there. A leather collar edges the opening on the rail's top.
 #declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
 #declare CupFloorZ = -PocketDepth - 0.0005;
+#declare CushionSolids = union {
+  #for (I, 0, RailCount - 1) Cushion(RailA[I], RailB[I], RailH[I]) #end
+}
 #declare Liners = union {
   sphere { Far, Eps }
   #for (I, 0, PocketCount - 1)
@@ -197,10 +202,17 @@ constexpr std::string_view kModelsTail =
       PocketCut(I, 0, CupFloorZ, 1)
       difference { object { InsideWood } box { <-100, -100, -100>, <100, 100, -SlateDepth + Eps> } }
     }
+    // the collar: a flat leather ring inlaid in the wood's top round the opening
     difference {
-      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0025)
+      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0006)
       PocketCut(I, LinerT / 2, -1, 1)
       object { InsideWood }
+    }
+    // the jaws' facings: where the opening cuts a cushion, leather half a liner thick in the
+    // cushion's own profile, so the cushion ends in a clean dark edge on the opening's circle
+    intersection {
+      difference { PocketCut(I, LinerT / 2, -1, 1) PocketCut(I, 0, -2, 2) }
+      object { CushionSolids }
     }
   #end
   texture { T_Leather }
