@@ -194,8 +194,15 @@ bool write_streak(const Shot& shot, int i, double t, double shutter, int segment
     const Vec3 y = toward.cross(x);
     const double length = std::max(across_view.norm(), kStreakLeast);
     const double weight = 1.0 / (segments * length);
+    // The ball's orientation and centre half-way through the piece, in the piece's frame.
+    const BallState mid = shot.timeline.state(i, shutter_instant(shot, t, shutter, 2 * k + 1, 2 * segments));
+    Eigen::Matrix3d frame;
+    frame << x, y, toward;
+    const Eigen::Matrix3d turn = frame.transpose() * mid.orientation.normalized().toRotationMatrix();
+    const Vec3 centre = frame.transpose() * (mid.position - at[static_cast<std::size_t>(k)]);
     out << "object { BallStreak(" << number << ", " << pov_number(across_view.norm()) << ", "
-        << pov_number(piece.dot(toward)) << ", " << pov_number(length) << ", " << pov_number(weight) << ") "
+        << pov_number(piece.dot(toward)) << ", " << pov_number(length) << ", " << pov_number(weight) << ", transform { "
+        << pov_matrix(turn.col(0), turn.col(1), turn.col(2), centre) << " }) "
         << pov_matrix(x, y, toward, at[static_cast<std::size_t>(k)]) << " }  // ball " << i << ", streak " << k + 1
         << "/" << segments << "\n";
   }

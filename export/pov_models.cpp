@@ -282,7 +282,7 @@ constexpr std::string_view kModelsTail =
     object {
       cylinder { -2 * BallR * z, 2 * BallR * z, DiscR }
       pigment { Body }
-      #if (T > 0)  // a blurred copy: the number turns too fast to read, a plain disc
+      #if (T > 0)  // a ball's streak: the number turns too fast to read, a plain disc
         pigment { color BallWhite transmit T }
       #else
         pigment { object { Glyphs BallWhite srgb 0.02 } }
@@ -290,7 +290,7 @@ constexpr std::string_view kModelsTail =
     }
   }
 #end
-// T: how much the ball lets through (0, but for the copies of a motion-blurred ball).
+// T: how much the ball lets through (0, but for the streak of a motion-blurred ball).
 #macro BallPigment(N, T)
   #local White = color BallWhite transmit T;
   #local Colour = color BallColour[N] transmit T;
@@ -315,30 +315,24 @@ constexpr std::string_view kModelsTail =
 // <L, 0, D>, laid out with x along the piece as the camera sees it and z towards the camera. Its
 // front lets through what the ball does not cover of the shutter's time at that point of the
 // picture, W times the length of its centre line (x from 0 to Lc) within its chord there (half
-// length sqrt(BallR^2 - y^2)); its back lets all through, so each point counts once. The ball's
-// colours are averaged over its surface (it turns too fast to show its number): a number circle
-// is a tenth of a ball's surface, the stripe half of it (zones of a sphere: area by height).
-#declare StreakColour = array[16]
-#for (N, 0, 15)
-  #if (N = 0)
-    #declare StreakColour[N] = BallWhite;
-  #elseif (N <= 8)
-    #declare StreakColour[N] = 0.9 * BallColour[N] + 0.1 * BallWhite;
-  #else
-    #declare StreakColour[N] = 0.4 * BallColour[N] + 0.6 * BallWhite;
-  #end
-#end
+// length sqrt(BallR^2 - y^2)); its back lets all through, so each point counts once. Its colours
+// are the ball's own, placed by Turn (the ball's orientation and centre half-way along the piece),
+// so a stripe or a number circle is smeared along the way as the shutter sees it; the number itself,
+// turning too fast to read, is left out.
 #declare StreakCover = function(X, Y, Lc, W) {
-  min(0.9999, W * max(0, min(X + sqrt(max(BallR * BallR - Y * Y, 0)), Lc) - max(X - sqrt(max(BallR * BallR - Y * Y, 0)), 0)))
+  min(1, W * max(0, min(X + sqrt(max(BallR * BallR - Y * Y, 0)), Lc) - max(X - sqrt(max(BallR * BallR - Y * Y, 0)), 0)))
 }
-#macro BallStreak(N, L, D, Lc, W)
+#macro BallStreak(N, L, D, Lc, W, Turn)
+  #local Clear = BallPigment(N, 1)
+  #local Clear = pigment { Clear transform { Turn } }
+  #local Solid = BallPigment(N, 0.0001)
+  #local Solid = pigment { Solid transform { Turn } }
   merge {
     sphere { 0, BallR }
     sphere { <L, 0, D>, BallR }
     #if (vlength(<L, 0, D>) > 1e-6) cylinder { 0, <L, 0, D>, BallR } #end
     texture {
-      pigment { function { StreakCover(x, y, Lc, W) }
-                colour_map { [0 colour StreakColour[N] transmit 1] [1 colour StreakColour[N] transmit 0] } }
+      pigment { function { StreakCover(x, y, Lc, W) } pigment_map { [0 Clear] [1 Solid] } }
       finish { diffuse 0.78 specular 0.35 roughness 0.002 }
     }
     interior_texture { pigment { rgbt 1 } }
