@@ -450,8 +450,11 @@ WallPiece(Trim)
   object { CueRack }
 }
 WallPiece(WallDecor)
-#macro WallLights(P, R)  // the sconces' glow on the wall through P, turned by R: one light between the two
-  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.72, 0.42> * 1.2 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
+// The sconces' glow on the wall through P, turned by R: one light between the two. Its light reaches
+// the balls' sides that face the room, so it is a pale warm white, as a photograph balanced for the
+// room shows it: an orange one turned the white cue ball tan.
+#macro WallLights(P, R)
+  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.9, 0.78> * 1.1 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
 #end
 WallLights(x * RoomMin.u, 0)
 WallLights(x * RoomMax.u, 180)
@@ -497,7 +500,8 @@ union {
 // outside the cone is not tested for shadows at all) and its light fades with distance squared from
 // 1.2 m. Final: an area light the size of the diffuser, without jitter (jitter flickers from frame to
 // frame); draft: two point lights.
-#declare LampColour = srgb <1.0, 0.92, 0.78>;  // a warm white, about 3500 K
+// A warm white (about 3500 K) as a photograph balanced for the room shows it: warm, not orange.
+#declare LampColour = srgb <1.0, 0.95, 0.87>;
 #declare LampPower = 2.9;
 #macro LampCone()
   spotlight point_at <Middle.u, Middle.v, 0> radius 24 falloff 60 tightness 0
@@ -517,9 +521,9 @@ union {
 light_source { <Middle.u, Middle.v, -0.35> srgb <0.10, 0.30, 0.16> * 0.55
   spotlight point_at <Middle.u, Middle.v, 1> radius 60 falloff 88 tightness 0
   fade_distance 0.8 fade_power 2 shadowless }
-// the dim rest of the room: a faint warm fill from high in two corners
-light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.16 shadowless }
-light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.12 shadowless }
+// the dim rest of the room: a faint fill, a hair warm, from high in two corners
+light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.96, 0.92> * 0.16 shadowless }
+light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.96, 0.92> * 0.12 shadowless }
 
 object { Table }
 )pov";
