@@ -71,6 +71,11 @@ constexpr int kMaxCopies = 24;
 /// How much of the background the copies together still let through where they all overlap.
 constexpr double kStreakLeak = 0.04;
 
+/// Instant k of `steps` steps across the open shutter of the frame at t, within the shot.
+double shutter_instant(const Shot& shot, double t, double shutter, int k, int steps) {
+  return std::clamp(t + shutter * (static_cast<double>(k) / steps - 0.5), 0.0, shot.timeline.duration());
+}
+
 /// Pixels `point(u)` travels across the picture while the shutter of the frame at t is open, the
 /// camera moving too (u runs over the shutter's sub-frame instants).
 template <class PointAt>
@@ -79,8 +84,7 @@ double picture_travel(const Shot& shot, double t, double shutter, PointAt&& poin
   Eigen::Vector2d last = Eigen::Vector2d::Zero();
   bool seen_last = false;
   for (int k = 0; k <= kMeasureSteps; ++k) {
-    const double u =
-        std::clamp(t + shutter * (static_cast<double>(k) / kMeasureSteps - 0.5), 0.0, shot.timeline.duration());
+    const double u = shutter_instant(shot, t, shutter, k, kMeasureSteps);
     const PictureProjection view(shot.camera->pose(u));
     const Vec3 p = point(u);
     // What is behind the camera or outside the picture does not count.
@@ -93,15 +97,15 @@ double picture_travel(const Shot& shot, double t, double shutter, PointAt&& poin
   return travel;
 }
 
-/// The copies a streak of `travel` pixels needs: close enough (at most `spacing` pixels apart) to
-/// read as one streak; 1 below the threshold.
+/// The copies of the stick a streak of `travel` pixels needs: close enough (at most `spacing` pixels
+/// apart) to read as one streak; 1 below the threshold.
 int copies_for(double travel, double spacing) {
   if (travel < kBlurPixels) return 1;
   return std::clamp(static_cast<int>(std::ceil(travel / std::max(spacing, 1.0))) + 1, 3, kMaxCopies);
 }
 
-/// What each of `copies` lets through so that where `overlap` of them cover a point together they
-/// let through kStreakLeak: 1 - a, with (1 - a)^overlap = kStreakLeak.
+/// What each of `copies` copies of the stick lets through so that where they all cover a point
+/// together they let through kStreakLeak: 1 - a, with (1 - a)^copies = kStreakLeak.
 double copy_transmit(int overlap) { return std::pow(kStreakLeak, 1.0 / std::max(overlap, 1)); }
 
 /// The instant of copy k of `copies`, within the shot.
@@ -124,26 +128,34 @@ StickFrame stick_frame(const CuePose& cue) {
 constexpr double kStickLength = 1.47;  // m, the model's tip to butt
 
 struct FrameBlur {
-  std::vector<int> ball_copies;  ///< per ball, 1: drawn once
-  std::vector<double> ball_overlap;
+  std::vector<int> ball_segments;  ///< per ball, 0: drawn once, else the straight pieces of its streak
   int stick_copies = 1;
 };
+
+/// The straight pieces a ball's path during the open shutter is drawn as: one when the path is
+/// straight (within a tenth of the radius), else kMeasureSteps (a collision within the shutter).
+int streak_segments(const Shot& shot, int ball, double t, double shutter, double radius) {
+  std::vector<Vec3> at;
+  for (int k = 0; k <= kMeasureSteps; ++k)
+    at.push_back(shot.timeline.state(ball, shutter_instant(shot, t, shutter, k, kMeasureSteps)).position);
+  const Vec3 chord = at.back() - at.front();
+  if (chord.norm() < 1e-9) return 1;
+  const Vec3 along = chord.normalized();
+  for (const Vec3& p : at) {
+    const Vec3 d = p - at.front();
+    if ((d - d.dot(along) * along).norm() > 0.1 * radius) return kMeasureSteps;
+  }
+  return 1;
+}
 
 FrameBlur plan_blur(const Shot& shot, double t, int fps) {
   FrameBlur blur;
   const double shutter = kShutter / fps;
-  const PictureProjection view(shot.camera->pose(t));
   const double radius = shot.scene.physics.ball_radius;
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
-    const BallState state = shot.timeline.state(i, t);
     const double travel =
         picture_travel(shot, t, shutter, [&](double u) { return shot.timeline.state(i, u).position; });
-    const double diameter = view.size_at(state.position, 2 * radius);
-    // Copies a fifth of the ball's picture apart; where they overlap, that many cover a point.
-    const double spacing = std::max(1.5, 0.2 * diameter);
-    const int copies = copies_for(travel, spacing);
-    blur.ball_copies.push_back(copies);
-    blur.ball_overlap.push_back(std::min<double>(copies, diameter / std::max(travel / (copies - 1 + 1e-9), 1e-9) + 1));
+    blur.ball_segments.push_back(travel < kBlurPixels ? 0 : streak_segments(shot, i, t, shutter, radius));
   }
   const CuePose cue = shot.cue->pose(t);
   if (cue.visible) {
@@ -160,12 +172,54 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
   return blur;
 }
 
+/// Writes ball i's streak over the open shutter as `segments` straight pieces (BallStreak), each
+/// laid out with its x along the piece as the camera at `eye` sees it and its z towards the camera,
+/// and weighted by the share of the shutter's time it takes over its length; false (nothing
+/// written) when the ball hardly moves in the world (the camera's own motion blurs it, which the
+/// frames do not draw).
+bool write_streak(const Shot& shot, int i, double t, double shutter, int segments, const Vec3& eye, std::ostream& out) {
+  const double radius = shot.scene.physics.ball_radius;
+  std::vector<Vec3> at;
+  for (int k = 0; k <= segments; ++k)
+    at.push_back(shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position);
+  if ((at.back() - at.front()).norm() < 0.05 * radius) return false;
+  const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
+  out << "object { BallShadow translate " << pov_vector(shot.timeline.state(i, t).position) << " }  // ball " << i
+      << "'s shadow\n";
+  for (int k = 0; k < segments; ++k) {
+    const Vec3 piece = at[static_cast<std::size_t>(k) + 1] - at[static_cast<std::size_t>(k)];
+    const Vec3 toward = (eye - at[static_cast<std::size_t>(k)] - 0.5 * piece).normalized();
+    const Vec3 across_view = piece - piece.dot(toward) * toward;
+    Vec3 x = across_view.norm() > 1e-9 ? Vec3(across_view.normalized()) : toward.unitOrthogonal();
+    const Vec3 y = toward.cross(x);
+    const double length = std::max(across_view.norm(), kStreakLeast);
+    const double weight = 1.0 / (segments * length);
+    // The ball's orientation and centre half-way through the piece, in the piece's frame.
+    const BallState mid = shot.timeline.state(i, shutter_instant(shot, t, shutter, 2 * k + 1, 2 * segments));
+    Eigen::Matrix3d frame;
+    frame << x, y, toward;
+    const Eigen::Matrix3d turn = frame.transpose() * mid.orientation.normalized().toRotationMatrix();
+    const Vec3 centre = frame.transpose() * (mid.position - at[static_cast<std::size_t>(k)]);
+    out << "object { BallStreak(" << number << ", " << pov_number(across_view.norm()) << ", "
+        << pov_number(piece.dot(toward)) << ", " << pov_number(length) << ", " << pov_number(weight) << ", transform { "
+        << pov_matrix(turn.col(0), turn.col(1), turn.col(2), centre) << " }) "
+        << pov_matrix(x, y, toward, at[static_cast<std::size_t>(k)]) << " }  // ball " << i << ", streak " << k + 1
+        << "/" << segments << "\n";
+  }
+  return true;
+}
+
 }  // namespace
+
+double streak_cover(double along, double across, double length, double weight, double radius) {
+  const double half = std::sqrt(std::max(radius * radius - across * across, 0.0));
+  return std::clamp(weight * (std::min(along + half, length) - std::max(along - half, 0.0)), 0.0, 1.0);
+}
 
 int blur_samples(const Shot& shot, int frame, int fps) {
   const FrameBlur blur = plan_blur(shot, frame_time(frame, fps), fps);
   int most = blur.stick_copies;
-  for (int c : blur.ball_copies) most = std::max(most, c);
+  for (int c : blur.ball_segments) most = std::max(most, c > 0 ? c + 1 : 1);
   return most;
 }
 
@@ -197,22 +251,12 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
     // Classic: a pocketed ball is out of sight; photographic: it lies in its pocket's cup.
     if (state.motion == Motion::pocketed && !photo) continue;
     const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
-    const int copies = photo ? blur.ball_copies[static_cast<std::size_t>(i)] : 1;
-    if (copies == 1) {
+    const int segments = photo ? blur.ball_segments[static_cast<std::size_t>(i)] : 0;
+    if (segments == 0 || !write_streak(shot, i, t, shutter, segments, camera.location, out)) {
       const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
       out << "object { Ball(" << number << ") " << pov_matrix(r.col(0), r.col(1), r.col(2), state.position)
           << " }  // ball " << i << "\n";
       continue;
-    }
-    const std::string transmit =
-        pov_number(copy_transmit(static_cast<int>(std::lround(blur.ball_overlap[static_cast<std::size_t>(i)]))));
-    out << "object { BallShadow translate " << pov_vector(state.position) << " }  // ball " << i << "'s shadow\n";
-    for (int k = 0; k < copies; ++k) {
-      const BallState sub = shot.timeline.state(i, sub_time(shot, t, shutter, k, copies));
-      const Eigen::Matrix3d r = sub.orientation.normalized().toRotationMatrix();
-      out << "object { BallBlur(" << number << ", " << transmit << ") "
-          << pov_matrix(r.col(0), r.col(1), r.col(2), sub.position) << " }  // ball " << i << ", blurred " << k + 1
-          << "/" << copies << "\n";
     }
   }
 

@@ -5,8 +5,15 @@
 //
 // Motion blur (the photographic look): a ball or the stick that moves more than kBlurPixels across
 // the picture while the shutter is open (half the frame's time, a film camera's 180-degree shutter)
-// is drawn as sub-frame copies that each let some of the background through, so together they read
-// as a streak; everything else is drawn once. The decision is the frame's own, from the timeline and
+// is drawn blurred; everything else is drawn once. A ball is drawn as its streak: the solid its
+// sphere sweeps while the shutter is open (a capsule, or a few for a path that bends), seen from
+// its front only, letting through at each point the share of the shutter's time the ball does not
+// cover it. That is the time average of the ball's picture over the shutter, a box filter in time,
+// as distributed ray tracing takes it with many samples (Cook, Porter & Carpenter 1984,
+// "Distributed ray tracing", SIGGRAPH; Potmesil & Chakravarty 1983, "Modeling motion blur in
+// computer-generated images"), here in closed form for one ray a pixel, so the streak is smooth
+// and costs one object. The stick, thin and moving mostly along itself, is drawn as sub-frame
+// copies that each let some of the background through. The decision is the frame's own, from the timeline and
 // the camera, so a frame with nothing fast in it is exactly the plain frame.
 #include <ostream>
 #include <string>
@@ -26,12 +33,25 @@ inline constexpr double kBlurPixels = 4.0;
 /// The share of a frame's time the shutter is open.
 inline constexpr double kShutter = 0.5;
 
+/// The least length (m) a streak's piece is taken to have, so a ball at rest for part of the shutter
+/// still has its share of it.
+inline constexpr double kStreakLeast = 1e-4;
+
+/// What share of the open shutter a ball of `radius` covers the point of a streak's piece at
+/// (`along`, `across`) (m, in the picture, from the piece's start, along it and across it) when the
+/// piece is `length` long and weighted by `weight` (its share of the shutter's time over its length):
+/// weight times the length of the ball's centre line within the piece that lies within the ball's
+/// chord through the point. Integrated over the picture it is weight x length x pi radius^2: a
+/// streak's pieces together are one full ball. BallStreak in the shared include computes the same.
+double streak_cover(double along, double across, double length, double weight, double radius);
+
 /// Writes frame `frame` of the shot, which shows t = frame / fps. The classic look draws no blur and
 /// leaves pocketed balls out; the photographic one shows them lying in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Look look = Look::photo);
 
-/// How many sub-frame copies frame `frame` draws of its fastest object: 1 when nothing in it moves
-/// more than kBlurPixels while the shutter is open (the frame is rendered once, as it is).
+/// How many sub-frame instants frame `frame` builds its blur from: 1 when nothing in it moves more
+/// than kBlurPixels while the shutter is open (the frame is rendered once, as it is), else the most of
+/// its stick's copies and its balls' streak ends (2 for a straight streak).
 int blur_samples(const Shot& shot, int frame, int fps);
 
 }  // namespace bsim

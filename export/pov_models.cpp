@@ -74,10 +74,12 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
   finish { diffuse 0.6 specular 0.2 roughness 0.01 }
 }
 // Leather of the pocket liners and the pocket cups, and mother-of-pearl sights.
+// Pocket leather is near black and hardly glossy: a broad sheen on its grain turns it grey under the
+// lamp.
 #declare T_Leather = texture {
-  pigment { srgb <0.16, 0.09, 0.05> }
-  normal { granite 0.15 scale 0.004 }
-  finish { diffuse 0.6 specular 0.25 roughness 0.03 }
+  pigment { srgb <0.055, 0.032, 0.02> }
+  normal { granite 0.05 scale 0.004 }
+  finish { diffuse 0.65 specular 0.02 roughness 0.02 }
 }
 #declare T_Sight = texture {
   pigment { srgb <0.93, 0.91, 0.86> }
@@ -189,6 +191,9 @@ constexpr std::string_view kModelsTail =
 // ball is seen to drop in and to lie there. A leather collar edges the opening on the rail's top.
 #declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
 #declare CupFloorZ = -PocketDepth - 0.0005;
+#declare CushionSolids = union {
+  #for (I, 0, RailCount - 1) Cushion(RailA[I], RailB[I], RailH[I]) #end
+}
 #declare Liners = union {
   sphere { Far, Eps }
   #for (I, 0, PocketCount - 1)
@@ -197,10 +202,17 @@ constexpr std::string_view kModelsTail =
       PocketCut(I, 0, CupFloorZ, 1)
       difference { object { InsideWood } box { <-100, -100, -100>, <100, 100, -SlateDepth + Eps> } }
     }
+    // the collar: a flat leather ring inlaid in the wood's top round the opening
     difference {
-      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0025)
+      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0006)
       PocketCut(I, LinerT / 2, -1, 1)
       object { InsideWood }
+    }
+    // the jaws' facings: where the opening cuts a cushion, leather half a liner thick in the
+    // cushion's own profile, so the cushion ends in a clean dark edge on the opening's circle
+    intersection {
+      difference { PocketCut(I, LinerT / 2, -1, 1) PocketCut(I, 0, -2, 2) }
+      object { CushionSolids }
     }
   #end
   texture { T_Leather }
@@ -270,7 +282,7 @@ constexpr std::string_view kModelsTail =
     object {
       cylinder { -2 * BallR * z, 2 * BallR * z, DiscR }
       pigment { Body }
-      #if (T > 0)  // a blurred copy: the number turns too fast to read, a plain disc
+      #if (T > 0)  // a ball's streak: the number turns too fast to read, a plain disc
         pigment { color BallWhite transmit T }
       #else
         pigment { object { Glyphs BallWhite srgb 0.02 } }
@@ -278,7 +290,7 @@ constexpr std::string_view kModelsTail =
     }
   }
 #end
-// T: how much the ball lets through (0, but for the copies of a motion-blurred ball).
+// T: how much the ball lets through (0, but for the streak of a motion-blurred ball).
 #macro BallPigment(N, T)
   #local White = color BallWhite transmit T;
   #local Colour = color BallColour[N] transmit T;
@@ -299,10 +311,33 @@ constexpr std::string_view kModelsTail =
 #macro Ball(N)
   sphere { 0, BallR texture { BallTexture[N] } interior { ClearCoat } }
 #end
-// One of the sub-frame copies a frame draws of a ball that moves more than a few pixels during
-// the shutter, letting through T of what lies behind, so the copies together read as a streak.
-#macro BallBlur(N, T)
-  sphere { 0, BallR texture { BallPigment(N, T) finish { diffuse 0.78 specular 0.35 roughness 0.002 } } no_shadow }
+// A piece of a fast ball's streak (pov_frame.h): the capsule the ball sweeps from the origin to
+// <L, 0, D>, laid out with x along the piece as the camera sees it and z towards the camera. Its
+// front lets through what the ball does not cover of the shutter's time at that point of the
+// picture, W times the length of its centre line (x from 0 to Lc) within its chord there (half
+// length sqrt(BallR^2 - y^2)); its back lets all through, so each point counts once. Its colours
+// are the ball's own, placed by Turn (the ball's orientation and centre half-way along the piece),
+// so a stripe or a number circle is smeared along the way as the shutter sees it; the number itself,
+// turning too fast to read, is left out.
+#declare StreakCover = function(X, Y, Lc, W) {
+  min(1, W * max(0, min(X + sqrt(max(BallR * BallR - Y * Y, 0)), Lc) - max(X - sqrt(max(BallR * BallR - Y * Y, 0)), 0)))
+}
+#macro BallStreak(N, L, D, Lc, W, Turn)
+  #local Clear = BallPigment(N, 1)
+  #local Clear = pigment { Clear transform { Turn } }
+  #local Solid = BallPigment(N, 0.0001)
+  #local Solid = pigment { Solid transform { Turn } }
+  merge {
+    sphere { 0, BallR }
+    sphere { <L, 0, D>, BallR }
+    #if (vlength(<L, 0, D>) > 1e-6) cylinder { 0, <L, 0, D>, BallR } #end
+    texture {
+      pigment { function { StreakCover(x, y, Lc, W) } pigment_map { [0 Clear] [1 Solid] } }
+      finish { diffuse 0.78 specular 0.35 roughness 0.002 }
+    }
+    interior_texture { pigment { rgbt 1 } }
+    no_shadow
+  }
 #end
 // The shadow of a blurred ball: one unseen ball at the frame's instant (the soft lamp blurs it anyway;
 // shadows through every transparent copy would cost more than all the rest of the frame).
@@ -415,8 +450,11 @@ WallPiece(Trim)
   object { CueRack }
 }
 WallPiece(WallDecor)
-#macro WallLights(P, R)  // the sconces' glow on the wall through P, turned by R: one light between the two
-  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.72, 0.42> * 1.2 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
+// The sconces' glow on the wall through P, turned by R: one light between the two. Its light reaches
+// the balls' sides that face the room, so it is a pale warm white, as a photograph balanced for the
+// room shows it: an orange one turned the white cue ball tan.
+#macro WallLights(P, R)
+  light_source { <0.25, 0, FloorZ + 1.8> srgb <1.0, 0.9, 0.78> * 1.1 fade_distance 1.3 fade_power 2 shadowless rotate z * R translate P }
 #end
 WallLights(x * RoomMin.u, 0)
 WallLights(x * RoomMax.u, 180)
@@ -462,7 +500,8 @@ union {
 // outside the cone is not tested for shadows at all) and its light fades with distance squared from
 // 1.2 m. Final: an area light the size of the diffuser, without jitter (jitter flickers from frame to
 // frame); draft: two point lights.
-#declare LampColour = srgb <1.0, 0.92, 0.78>;  // a warm white, about 3500 K
+// A warm white (about 3500 K) as a photograph balanced for the room shows it: warm, not orange.
+#declare LampColour = srgb <1.0, 0.95, 0.87>;
 #declare LampPower = 2.9;
 #macro LampCone()
   spotlight point_at <Middle.u, Middle.v, 0> radius 24 falloff 60 tightness 0
@@ -482,9 +521,9 @@ union {
 light_source { <Middle.u, Middle.v, -0.35> srgb <0.10, 0.30, 0.16> * 0.55
   spotlight point_at <Middle.u, Middle.v, 1> radius 60 falloff 88 tightness 0
   fade_distance 0.8 fade_power 2 shadowless }
-// the dim rest of the room: a faint warm fill from high in two corners
-light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.16 shadowless }
-light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.85, 0.7> * 0.12 shadowless }
+// the dim rest of the room: a faint fill, a hair warm, from high in two corners
+light_source { <RoomMin.u + 0.5, RoomMin.v + 0.5, CeilingZ - 0.3> srgb <1.0, 0.96, 0.92> * 0.16 shadowless }
+light_source { <RoomMax.u - 0.5, RoomMax.v - 0.5, CeilingZ - 0.3> srgb <1.0, 0.96, 0.92> * 0.12 shadowless }
 
 object { Table }
 )pov";

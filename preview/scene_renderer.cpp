@@ -229,8 +229,9 @@ void SceneRenderer::Impl::draw_balls(const Scene& scene, const std::vector<BallS
   const double radius = scene.physics.ball_radius;
   use(Material::ball);
   for (std::size_t i = 0; i < balls.size() && i < scene.balls.size(); ++i) {
+    // A pocketed ball is drawn where the timeline leaves it, in its pocket's cup (pocket_fall.h), as
+    // the POV-Ray frames draw it.
     const BallState& s = balls[i];
-    if (s.motion == Motion::pocketed) continue;
     const int number = scene.balls[i].number;
     Eigen::Affine3d model = Eigen::Translation3d(s.position) * s.orientation.normalized() * Eigen::Scaling(radius);
     set_model(model.matrix().cast<float>());

@@ -69,6 +69,33 @@ TEST_SUITE("preview snapshots") {
     CHECK(require_file(a) == require_file(b));
   }
 
+  TEST_CASE("a pocketed ball is drawn lying in its pocket's cup, where the POV-Ray frames show it") {
+    // Ball 3 (red) rolls into a pocket under a camera looking straight down into it.
+    TempDir dir;
+    const std::string scene = dir.file("pocket.scn",
+                                       "cue 1 0\n"
+                                       "ball 0 -1 0.4 0.028575  0 0 0  1 0 0 0\n"
+                                       "ball 3 -0.3 -0.3 0.028575  2 0 0  1 0 0 0\n"
+                                       "rail -1.5 0.8 0.04   1.5 0.8 0.04\n"
+                                       "rail 1.5 0.8 0.04   1.5 -0.8 0.04\n"
+                                       "rail 1.5 -0.8 0.04   -1.5 -0.8 0.04\n"
+                                       "rail -1.5 -0.8 0.04   -1.5 0.8 0.04\n"
+                                       "pocket 0.2 -0.3 0 0.07\n"
+                                       "camera\nevent 0 0 0 hover 0.2 -0.3 0.5  0.2 -0.3 0\nendcamera\n");
+    const std::string out = (dir.path / "in_pocket.png").string();
+    const auto run = run_command(preview(scene + " --at 3 --size 160x90 -o " + out));
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    const Image image = load_png(out);
+    int red = 0;
+    for (int y = 30; y < 60; ++y)
+      for (int x = 65; x < 95; ++x) {
+        const unsigned char* p = &image.rgb[(static_cast<std::size_t>(y) * image.width + x) * 3];
+        red += p[0] > 120 && p[1] < 70 && p[2] < 70;
+      }
+    CHECK(red > 20);
+  }
+
   TEST_CASE("--at event:N shows the instant of event N, and a missing event is a usage error") {
     TempDir dir;
     const std::string scene = dir.file("cluster.scn", kScene);

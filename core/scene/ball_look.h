@@ -1,7 +1,7 @@
 #pragma once
 // What a pool ball looks like, one description for both front ends: the standard colours (1 yellow,
 // 2 blue, 3 red, 4 purple, 5 orange, 6 green, 7 maroon, 8 black; 9 to 15 are the stripes of 1 to 7
-// on ivory; 0 is the ivory cue ball). The values are sRGB bytes as a painter would pick them off a
+// on white; 0 is the white cue ball). The values are sRGB bytes as a painter would pick them off a
 // standard set (Aramith-style), before any lighting.
 #include <cstdint>
 
@@ -11,10 +11,11 @@ struct SrgbColor {
   std::uint8_t r = 0, g = 0, b = 0;  ///< sRGB-encoded, 0 to 255
 };
 
-/// The ivory of the cue ball, the stripes' ground and the number discs.
-inline constexpr SrgbColor kBallIvory{240, 234, 214};
+/// The white of the cue ball, the stripes' ground and the number discs: a modern set's white, a
+/// hair warm (an old ivory cream reads yellow under the warm lamp).
+inline constexpr SrgbColor kBallIvory{248, 247, 242};
 
-/// The colour of the solids 1 to 8, indexed by number (index 0 is the cue ball's ivory).
+/// The colour of the solids 1 to 8, indexed by number (index 0 is the cue ball's white).
 inline constexpr SrgbColor kSolidColors[9] = {
     kBallIvory,      // 0 cue ball
     {250, 196, 18},  // 1 yellow

@@ -98,7 +98,7 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
   int blurred = 0;
   for (int k = 0; k < frames; ++k) blurred += bsim::blur_samples(shot, k, fps) > 1;
   std::printf(
-      "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with blur copies "
+      "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with motion blur "
       "(%.0f%%)\n",
       width, height, frames, frames - blurred, 100.0 * (frames - blurred) / frames, blurred, 100.0 * blurred / frames);
   const fs::path dir = fs::temp_directory_path() / ("render-bench-looks-" + std::to_string(::getpid()));
@@ -136,8 +136,7 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const int samples = bsim::blur_samples(shot, jobs[i].frame, fps);
     std::printf("%-8d %-7.2f %-10s %14.2f %14.2f\n", jobs[i].frame, jobs[i].frame / double(fps),
-                samples > 1 ? (std::to_string(samples) + " copies").c_str() : "none", runs[0].seconds[i],
-                runs[1].seconds[i]);
+                samples > 1 ? "blurred" : "none", runs[0].seconds[i], runs[1].seconds[i]);
     sum[0] += runs[0].seconds[i];
     sum[1] += runs[1].seconds[i];
   }
@@ -159,7 +158,8 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
     }
     for (std::size_t i = 0; i < count; ++i) filter += "[s" + std::to_string(i) + "]";
     filter += "xstack=inputs=" + std::to_string(count) + ":layout=" + layout;
-    args.insert(args.end(), {"-filter_complex", filter, "-frames:v", "1", "-q:v", "3", sheet});
+    // ffmpeg runs in the scratch directory: the sheet's name as given is relative to ours.
+    args.insert(args.end(), {"-filter_complex", filter, "-frames:v", "1", "-q:v", "3", fs::absolute(sheet).string()});
     std::string error;
     const pid_t pid = bsim::start_process(args, dir.string(), (dir / "ffmpeg.log").string(), error);
     if (pid < 0 || !bsim::wait_for(pid)) {
