@@ -108,10 +108,10 @@ TEST_SUITE("sound") {
                                         {SoundKind::ball_ball, 0.61, 1.0, 0, 2},
                                         {SoundKind::ball_rail, 1.02, 0.5, 0, 3},
                                         {SoundKind::pocket_fall, 1.5, 0.8, 0, 4},
-                                        {SoundKind::pocket_knock, 1.9, 0.8, 0, 5}};
+                                        {SoundKind::pocket_knock, 2.2, 0.8, 0, 5}};
     for (double lead : {0.0, 0.005, 0.03}) {
       CAPTURE(lead);
-      AudioBuffer audio = silence(2.2);
+      AudioBuffer audio = silence(2.6);
       mix_cues(cues, physics, lead, audio);
       for (const SoundCue& cue : cues) {
         CAPTURE(cue.time);

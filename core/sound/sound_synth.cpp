@@ -104,7 +104,8 @@ Mode jittered(Mode mode, SoundRandom& random, double spread) {
 std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsParams& physics, int sample_rate) {
   // Acceleration noise of a small sphere: pressure ~ a blend of the contact acceleration and its rate.
   const double tau = hertz_contact_time(physics, speed);
-  std::vector<double> out(static_cast<std::size_t>(0.12 * sample_rate), 0.0);
+  // Long enough for the ring to die out (about -70 dB) rather than be cut off audibly.
+  std::vector<double> out(static_cast<std::size_t>(0.25 * sample_rate), 0.0);
   constexpr int kSub = 8;
   for (std::size_t i = 0; i < out.size() && static_cast<double>(i) <= tau * sample_rate + 1; ++i) {
     double sum = 0;
@@ -173,7 +174,8 @@ std::vector<double> pocket_fall(double speed, SoundRandom& random, int sample_ra
   // The ball tips over the slate's edge and the jaw's nose: a light knock of the lip, then the
   // ball brushing the jaw's cloth as it goes down (band-passed friction noise).
   const std::vector<double> pulse = sampled_pulse(0.0012, sample_rate);
-  std::vector<double> out(static_cast<std::size_t>(0.12 * sample_rate), 0.0);
+  // Long enough for the slowest brush (80 ms time constant) to die out rather than be cut off.
+  std::vector<double> out(static_cast<std::size_t>(0.5 * sample_rate), 0.0);
   add_mode(pulse, jittered({310, 0.015, 1.0}, random, 0.06), sample_rate, out);
   add_mode(pulse, jittered({820, 0.006, 0.5}, random, 0.06), sample_rate, out);
   const double brush = 0.02 + 0.03 * std::min(speed, 2.0);  // s, longer when it goes over faster
