@@ -54,6 +54,16 @@ constexpr double kCueTarget = 0.72;
 constexpr double kMovingSpeed = 1e-3;
 /// m from the line of action within which a camera counts as on it (neutral).
 constexpr double kOnLine = 0.05;
+
+/// The side of `line` a camera at `previous` stands on, to be kept by the next description: +1 left,
+/// -1 right, 0 when it stands on the line (either side will do).
+double side_to_keep(const LineOfAction& line, const Vec3& previous) {
+  const double side = line.side(previous);
+  return std::abs(side) > kOnLine ? (side > 0 ? 1.0 : -1.0) : 0.0;
+}
+
+/// Whether a camera at `p` is on the `wanted` side of `line` (or on the line).
+bool keeps_side(const LineOfAction& line, double wanted, const Vec3& p) { return wanted * line.side(p) >= -kOnLine; }
 /// Candidates evaluated at most for one description before the best so far is taken.
 constexpr int kMaxTries = 90;
 
@@ -471,8 +481,7 @@ DirectedCamera Director::run() {
     const Vec3 middle = 0.5 * (from + to);
     const Vec3 previous = shots[0].location;
     const LineOfAction& line = lines[1];
-    const double side = line.side(previous);
-    const double wanted = std::abs(side) > kOnLine ? (side > 0 ? 1.0 : -1.0) : 0.0;
+    const double wanted = side_to_keep(line, previous);
     struct Option {
       double cost = 0;
       CameraShot shot;
@@ -480,7 +489,7 @@ DirectedCamera Director::run() {
     std::vector<Option> options;
     const auto add_look = [&](const Vec3& location, double cost) {
       const Vec3 p = mm(location);
-      if (!clear(p, -1) || wanted * line.side(p) < -kOnLine) return;
+      if (!clear(p, -1) || !keeps_side(line, wanted, p)) return;
       CameraShot s;
       s.mode = CameraMode::look;
       s.location = p;
@@ -563,8 +572,7 @@ DirectedCamera Director::run() {
     const std::optional<CameraScript> so_far = CameraScript::build(copy, timeline_, ignored);
     const Vec3 previous = so_far ? so_far->pose(t0).location : shots[w - 1].location;
     const LineOfAction& line = lines[w];
-    const double side = line.side(previous);
-    const double wanted = std::abs(side) > kOnLine ? (side > 0 ? 1.0 : -1.0) : 0.0;
+    const double wanted = side_to_keep(line, previous);
     struct Option {
       double cost = 0;
       CameraShot shot;
@@ -583,7 +591,7 @@ DirectedCamera Director::run() {
           const CameraPose pose{s.location, s.target, false};
           if (!std::all_of(corners.begin(), corners.end(), [&](const Vec3& p) { return in_picture(pose, p, 0.01); }))
             continue;
-          if (clear(s.location, -1) && wanted * line.side(s.location) >= -kOnLine)
+          if (clear(s.location, -1) && keeps_side(line, wanted, s.location))
             options.push_back({(s.location - previous).norm() + 0.3 * distance, s});
           break;
         }
