@@ -88,7 +88,7 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 
 )pov";
 
-// The cushions and the wooden rail: one model for both looks.
+// The cushions, the wooden rail and its sights: one model for both looks.
 constexpr std::string_view kCushionsAndRails =
     R"pov(// ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
 // on the right of A->B seen from above, reaching back into the wood; the pockets cut its jaws.
@@ -183,6 +183,22 @@ constexpr std::string_view kCushionsAndRails =
   RailPiece(<InnerMin.u, InnerMin.v>, <InnerMin.u, InnerMax.v>, <OuterMin.u, OuterMax.v>, <OuterMin.u, OuterMin.v>, <-1, 0>, T_WoodY)
 }
 
+// ---- diamond sights: inlaid in the rails' tops where the table description puts them, the long
+// diagonal along the rail
+#macro SightAt(P, AlongX)
+  #local L = (AlongX ? SightLength : SightWidth) / 2;
+  #local W = (AlongX ? SightWidth : SightLength) / 2;
+  prism {
+    linear_sweep linear_spline -(RailTopZ + 0.0004), -(RailTopZ - 0.002), 5, <L, 0>, <0, W>, <-L, 0>, <0, -W>, <L, 0>
+    rotate -x * 90 translate <P.u, P.v, 0>
+  }
+#end
+#declare Sights = union {
+  sphere { Far, Eps }
+  #for (I, 0, SightCount - 1) SightAt(SightC[I], SightAlongX[I]) #end
+  texture { T_Sight }
+}
+
 )pov";
 
 constexpr std::string_view kModelsTail =
@@ -216,22 +232,6 @@ constexpr std::string_view kModelsTail =
     }
   #end
   texture { T_Leather }
-}
-
-// ---- diamond sights: inlaid in the rails' tops where the table description puts them, the long
-// diagonal along the rail
-#macro SightAt(P, AlongX)
-  #local L = (AlongX ? SightLength : SightWidth) / 2;
-  #local W = (AlongX ? SightWidth : SightLength) / 2;
-  prism {
-    linear_sweep linear_spline -(RailTopZ + 0.0004), -(RailTopZ - 0.002), 5, <L, 0>, <0, W>, <-L, 0>, <0, -W>, <L, 0>
-    rotate -x * 90 translate <P.u, P.v, 0>
-  }
-#end
-#declare Sights = union {
-  sphere { Far, Eps }
-  #for (I, 0, SightCount - 1) SightAt(SightC[I], SightAlongX[I]) #end
-  texture { T_Sight }
 }
 
 // ---- the body under the rails and four turned legs

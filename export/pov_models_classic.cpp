@@ -68,22 +68,6 @@ constexpr std::string_view kClassicTail =
   texture { T_Liner }
 }
 
-// ---- diamond sights: inlaid in the rails' tops where the table description puts them, the long
-// diagonal along the rail
-#macro SightAt(P, AlongX)
-  #local L = (AlongX ? SightLength : SightWidth) / 2;
-  #local W = (AlongX ? SightWidth : SightLength) / 2;
-  prism {
-    linear_sweep linear_spline -(RailTopZ + 0.0004), -(RailTopZ - 0.002), 5, <L, 0>, <0, W>, <-L, 0>, <0, -W>, <L, 0>
-    rotate -x * 90 translate <P.u, P.v, 0>
-  }
-#end
-#declare Sights = union {
-  sphere { Far, Eps }
-  #for (I, 0, SightCount - 1) SightAt(SightC[I], SightAlongX[I]) #end
-  texture { T_Sight }
-}
-
 // ---- the body under the rails and four legs
 #declare TableBody = union {
   box { <OuterMin.u + 0.06, OuterMin.v + 0.06, -ApronDepth - 0.12>, <OuterMax.u - 0.06, OuterMax.v - 0.06, -ApronDepth + Eps> }

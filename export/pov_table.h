@@ -26,7 +26,7 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, L
 std::string_view pov_models_text();
 /// The same for the classic look.
 std::string_view pov_classic_models_text();
-/// The cushions and the wooden rail, which both looks share.
+/// The cushions, the wooden rail and its diamond sights, which both looks share.
 std::string_view pov_cushions_and_rails_text();
 
 }  // namespace bsim
