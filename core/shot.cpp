@@ -14,7 +14,10 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
   shot->timeline = simulate(shot->scene);
-  if (camera == CameraChoice::automatic) shot->scene.camera = direct_camera(shot->scene, shot->timeline).shots;
+  if (camera == CameraChoice::automatic) {
+    shot->directed = direct_camera(shot->scene, shot->timeline);
+    shot->scene.camera = shot->directed->shots;
+  }
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
   if (!shot->camera || has_errors(result.diagnostics)) {
     shot->camera.reset();

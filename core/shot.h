@@ -9,6 +9,7 @@
 #include "camera_script.h"
 #include "cue_script.h"
 #include "diagnostics.h"
+#include "director.h"
 #include "scene.h"
 #include "scene_parse.h"
 #include "timeline.h"
@@ -28,6 +29,9 @@ struct Shot {
   Timeline timeline;
   std::optional<CameraScript> camera;  ///< always set in a loaded shot
   std::optional<CueScript> cue;        ///< always set in a loaded shot
+  /// The automatic director's script (its text, comments and lines of action too) when it films the
+  /// shot (CameraChoice::automatic); its shots are then scene.camera.
+  std::optional<DirectedCamera> directed;
 };
 
 struct ShotResult {

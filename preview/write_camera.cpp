@@ -13,7 +13,9 @@
 namespace bsim {
 
 int run_write_camera(const std::string& path, const Shot& shot) {
-  const std::string text = camera_script_text(direct_camera(shot.scene, shot.timeline), shot.scene.name);
+  // The script the shot was loaded with (--write-camera implies --camera auto), else written now.
+  const std::string text =
+      camera_script_text(shot.directed ? *shot.directed : direct_camera(shot.scene, shot.timeline), shot.scene.name);
   if (path == "-") {
     std::cout << text << std::flush;
     return std::cout ? 0 : 1;
