@@ -95,30 +95,6 @@ bool read_conf(const std::string& dir, FarmConf& c, std::string& error) {
   return true;
 }
 
-/// Writes `text` to `path` under a temporary name, then renames it: a reader never sees half.
-bool write_whole(const std::string& path, const std::string& text, std::string& error) {
-  const std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-      error = "cannot write " + path;
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    error = "cannot write " + path + ": " + ec.message();
-    fs::remove(temp, ec);
-    return false;
-  }
-  return true;
-}
-
 /// `s` in single quotes for /bin/sh.
 std::string sh_quote(const std::string& s) {
   std::string quoted = "'";
@@ -469,9 +445,10 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   for (auto it = fs::directory_iterator(dir_ + "/" + kLogs, ec); !ec && it != fs::directory_iterator();
        it.increment(ec))
     link_or_copy(it->path().string(), stage.path(std::string(kLogs) + "/" + it->path().filename().string()));
-  if (!write_whole(stage.path(kConf), conf_text(conf), error) ||
-      !write_whole(stage.path(kChunks), chunk_lines, error) || !write_whole(stage.path(kTaskScript), task, error) ||
-      !write_whole(stage.path(kMovieScript), movie, error))
+  if (!write_text_file(stage.path(kConf), conf_text(conf), error) ||
+      !write_text_file(stage.path(kChunks), chunk_lines, error) ||
+      !write_text_file(stage.path(kTaskScript), task, error) ||
+      !write_text_file(stage.path(kMovieScript), movie, error))
     return false;
   // The jobs run this very program from DIR: nothing on the nodes but povray and ffmpeg is assumed.
   const std::string self = fs::read_symlink("/proc/self/exe", ec).string();
@@ -536,7 +513,7 @@ int SlurmSubmission::submit(std::string& error) {
   }
   conf.frames_job = frames_job;
   conf.movie_job = movie_job;
-  if (!write_whole(dir_ + "/" + kConf, conf_text(conf), error)) return 1;
+  if (!write_text_file(dir_ + "/" + kConf, conf_text(conf), error)) return 1;
   int largest = 0;
   for (const auto& c : chunks_) largest = std::max(largest, c.second - c.first + 1);
   if (!frames_job.empty())

@@ -1,13 +1,9 @@
 #include "write_camera.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "director.h"
+#include "scene_file.h"
 #include "shot.h"
 
 namespace bsim {
@@ -20,23 +16,9 @@ int run_write_camera(const std::string& path, const Shot& shot) {
     std::cout << text << std::flush;
     return std::cout ? 0 : 1;
   }
-  const std::filesystem::path target(path);
-  const std::filesystem::path temporary = target.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::cerr << "billiards-preview: error: cannot write " << path << ": " << std::strerror(errno) << "\n";
-      std::remove(temporary.c_str());
-      return 1;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, target, ec);
-  if (ec) {
-    std::cerr << "billiards-preview: error: cannot write " << path << ": " << ec.message() << "\n";
-    std::remove(temporary.c_str());
+  std::string error;
+  if (!write_text_file(path, text, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
   }
   std::cerr << "wrote " << path << "\n";
