@@ -391,9 +391,6 @@ plane { -z, -CeilingZ pigment { srgb <0.09, 0.08, 0.07> } finish { diffuse 0.6 }
   }
   scale 3 translate z * FloorZ
 }
-box { <RoomMin.u, RoomMin.v, FloorZ - 0.1>, <RoomMax.u, RoomMax.v, CeilingZ + 0.1> inverse
-  pigment { P_Wall } normal { bumps 0.05 scale 0.01 } finish { diffuse 0.7 }
-}
 #macro WallPiece(Obj)  // an object built against the wall at x = 0 facing +x, placed on each wall
   object { Obj translate x * RoomMin.u }
   object { Obj rotate z * 180 translate x * RoomMax.u }
@@ -435,6 +432,8 @@ WallPiece(Trim)
   #end
 }
 // a brass wall sconce with a warm shade: its own light is shadowless and fades within a metre or two
+#declare SconceY = 2.2;  // m either side of the wall's middle
+#declare SconceZ = FloorZ + 1.75;
 #macro Sconce(Y, Z)
   union {
     cylinder { <0, Y, Z - 0.02>, <0.12, Y, Z - 0.02>, 0.008 pigment { srgb <0.6, 0.45, 0.2> } finish { specular 0.6 roughness 0.01 metallic } }
@@ -445,11 +444,24 @@ WallPiece(Trim)
 #declare WallDecor = union {
   Picture(-1.2, FloorZ + 1.65, 0.7, 0.5, <0.3, 1.7, 0>)
   Picture(1.2, FloorZ + 1.65, 0.7, 0.5, <2.1, 0.4, 0>)
-  Sconce(-2.2, FloorZ + 1.75)
-  Sconce(2.2, FloorZ + 1.75)
+  Sconce(-SconceY, SconceZ)
+  Sconce(SconceY, SconceZ)
   object { CueRack }
 }
-WallPiece(WallDecor)
+// The walls with what hangs on them, in a light group with the sconces' own light: each sconce
+// washes the wall round it in a warm scallop, as a wall light does in a photograph of a dim room (a
+// point light close to the wall, fading within a few tens of centimetres), and lights nothing else;
+// the lamp and the fill light the walls too.
+#macro SconceWash(Y, Z)
+  light_source { <0.16, Y, Z> srgb <1.0, 0.78, 0.52> * 2.5 fade_distance 0.4 fade_power 2 shadowless }
+#end
+light_group {
+  box { <RoomMin.u, RoomMin.v, FloorZ - 0.1>, <RoomMax.u, RoomMax.v, CeilingZ + 0.1> inverse
+    pigment { P_Wall } normal { bumps 0.05 scale 0.01 } finish { diffuse 0.7 }
+  }
+  WallPiece(union { object { WallDecor } SconceWash(-SconceY, SconceZ) SconceWash(SconceY, SconceZ) })
+  global_lights on
+}
 // The sconces' glow on the wall through P, turned by R: one light between the two. Its light reaches
 // the balls' sides that face the room, so it is a pale warm white, as a photograph balanced for the
 // room shows it: an orange one turned the white cue ball tan.
@@ -509,7 +521,7 @@ union {
 #end
 #if (Final)
   light_source { <Middle.u, Middle.v, LampZ + 0.01> LampColour * LampPower
-    area_light x * 2 * (LampHalf.u - LampWall), y * 2 * (LampHalf.v - LampWall), 7, 3 adaptive 0
+    area_light x * 2 * (LampHalf.u - LampWall), y * 2 * (LampHalf.v - LampWall), 9, 5 adaptive 0
     LampCone()
   }
 #else
