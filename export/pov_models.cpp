@@ -38,15 +38,22 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 
 // ---- materials
 // Worsted wool cloth: the weave's fine grain as a low bump noise (a regular weave of threads 0.5 mm
-// apart aliased into moire rings at 1280x720), a faint mottle, and the fibres' sheen where the cloth
+// apart aliased into moire rings at 1280x720), a faint mottle of the felt's nap (broad patches and a
+// finer grain, as in a close photograph of worn cloth), and the fibres' sheen where the cloth
 // is seen at a grazing angle (aoi is 1 head-on, 0.5 at grazing).
 #declare ClothGreen = srgb <0.035, 0.33, 0.16>;
 #declare N_Weave = normal { bumps 0.05 scale 0.0012 }
+#declare P_ClothFelt = pigment {
+  average pigment_map {
+    [2 bozo turbulence 0.5 color_map { [0 srgb <0.032, 0.315, 0.152>] [1 srgb <0.04, 0.345, 0.168>] } scale 0.12]
+    [1 granite color_map { [0 srgb <0.029, 0.29, 0.14>] [1 srgb <0.043, 0.36, 0.175>] } scale 0.05]
+  }
+}
 #declare P_Cloth = pigment {
   aoi pigment_map {
     [0.5 srgb <0.16, 0.44, 0.28>]
-    [0.62 bozo turbulence 0.5 color_map { [0 srgb <0.032, 0.315, 0.152>] [1 srgb <0.04, 0.345, 0.168>] } scale 0.12]
-    [1.0 bozo turbulence 0.5 color_map { [0 srgb <0.032, 0.315, 0.152>] [1 srgb <0.04, 0.345, 0.168>] } scale 0.12]
+    [0.62 P_ClothFelt]
+    [1.0 P_ClothFelt]
   }
 }
 #declare T_Cloth = texture {
@@ -473,23 +480,33 @@ WallLights(x * RoomMax.u, 180)
 WallLights(y * RoomMin.v, 90)
 WallLights(y * RoomMax.v, -90)
 
-// ---- the lamp: a long shade, tapered, dark green enamel outside, white inside, a brass rim and
+// ---- the lamp: a long shade, tapered sides under a hipped roof, dark green enamel outside, white inside, a brass rim and
 // two rods to the ceiling; a frosted diffuser glows in its mouth (the lamp the balls mirror).
-#declare ShadeTaper = 0.07;  // m the shade's top is drawn in on each side
+#declare ShadeTaper = 0.07;  // m the shade's sides are drawn in on each side, rim to eaves
+#declare RoofPitch = 28;     // deg: from the eaves a hipped roof rises to a ridge along the lamp
+#declare EavesZ = LampTopZ - (LampHalf.v - ShadeTaper) * tan(radians(RoofPitch));
 #macro ShadeSolid(Grow, Lift)
+  #local TopY = LampHalf.v + Grow - ShadeTaper;
+  #local TopX = LampHalf.u + Grow - ShadeTaper;
+  #local Roof = <0, sin(radians(RoofPitch)), cos(radians(RoofPitch))>;
   intersection {
     box { <-LampHalf.u - Grow, -LampHalf.v - Grow, LampZ + Lift>, <LampHalf.u + Grow, LampHalf.v + Grow, LampTopZ + Lift> }
-    plane { <0, LampTopZ - LampZ, ShadeTaper>, 0 translate <0, LampHalf.v + Grow, LampZ> }
-    plane { <0, -(LampTopZ - LampZ), ShadeTaper>, 0 translate <0, -LampHalf.v - Grow, LampZ> }
-    plane { <LampTopZ - LampZ, 0, ShadeTaper>, 0 translate <LampHalf.u + Grow, 0, LampZ> }
-    plane { <-(LampTopZ - LampZ), 0, ShadeTaper>, 0 translate <-LampHalf.u - Grow, 0, LampZ> }
+    plane { <0, EavesZ - LampZ, ShadeTaper>, 0 translate <0, LampHalf.v + Grow, LampZ> }
+    plane { <0, -(EavesZ - LampZ), ShadeTaper>, 0 translate <0, -LampHalf.v - Grow, LampZ> }
+    plane { <EavesZ - LampZ, 0, ShadeTaper>, 0 translate <LampHalf.u + Grow, 0, LampZ> }
+    plane { <-(EavesZ - LampZ), 0, ShadeTaper>, 0 translate <-LampHalf.u - Grow, 0, LampZ> }
+    plane { Roof, 0 translate <0, TopY, EavesZ + Lift> }
+    plane { Roof * <1, -1, 1>, 0 translate <0, -TopY, EavesZ + Lift> }
+    plane { <Roof.y, 0, Roof.z>, 0 translate <TopX, 0, EavesZ + Lift> }
+    plane { <-Roof.y, 0, Roof.z>, 0 translate <-TopX, 0, EavesZ + Lift> }
   }
 #end
 union {
   difference {
     ShadeSolid(0, 0)
     object { ShadeSolid(-LampWall / 2, -LampWall) }
-    texture { pigment { srgb <0.03, 0.16, 0.08> } finish { diffuse 0.5 specular 0.6 roughness 0.004 } }
+    texture { pigment { srgb <0.05, 0.24, 0.12> } finish { diffuse 0.6 specular 0.5 roughness 0.02 reflection { 0.02, 0.3 fresnel } conserve_energy } }
+    interior { ior 1.5 }
     interior_texture { pigment { srgb 0.8 } finish { diffuse 0.8 emission 0.15 } }
   }
   difference {

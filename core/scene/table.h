@@ -130,7 +130,7 @@ inline constexpr RoomSpec kRoom{
             // Its rim 1.05 m above the bed (about 1.8 m above the floor): low enough to light the
             // cloth evenly, high enough to see under from a player's eye.
             .bottom = 1.05,
-            .height = 0.14,
+            .height = 0.2,  // the sides and the hipped roof over them
             .half_width = 0.22,
             .length_share = 0.3,
             .min_half_length = 0.3,
