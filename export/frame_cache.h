@@ -1,6 +1,6 @@
 #pragma once
 // Rendered frames kept for the next run: a store of PNG pictures named by a hash of everything that
-// made them (the frame's .pov text, the shared include, size and quality). A run copies a stored
+// made them (the frame's .pov text, the shared include, size, quality and how it is developed). A run copies a stored
 // picture instead of rendering it again, so a re-run renders only the frames whose inputs changed, a
 // run that failed or was interrupted loses none of the frames it finished, and two frames with the
 // same inputs in one run (balls at rest under a still camera) are rendered once.
