@@ -123,6 +123,16 @@ TEST_SUITE("develop") {
     CHECK(image.rgb[3 * (36 * 128 + 66) + 1] - 0.1f < 0.01f * near);
     // Energy kept: what left the point lies round it (the halo stays well inside the picture).
     CHECK(total(image) == doctest::Approx(total(before)).epsilon(1e-3));
+
+    // Odd and tiny sizes (a padded --size, CI's drafts) work the same way.
+    for (const auto& [w, h] : {std::pair{33, 19}, std::pair{3, 1}, std::pair{1, 1}}) {
+      HdrImage odd = uniform(w, h, 0.1f);
+      red(odd, w / 2, h / 2) = 50.0f;
+      const double light = total(odd);
+      add_glare(odd);
+      CHECK(total(odd) <= light * (1.0 + 1e-5));
+      CHECK(total(odd) > 0.8 * light);
+    }
   }
 
   TEST_CASE("developing is deterministic: the same .hdr gives the same PNG bytes") {
