@@ -1,9 +1,9 @@
 #pragma once
 // Rendered frames kept for the next run: a store of PNG pictures named by a hash of everything that
-// made them (the frame's .pov text, the shared include, size and quality). A run copies a stored
-// picture instead of rendering it again, so a re-run renders only the frames whose inputs changed, a
-// run that failed or was interrupted loses none of the frames it finished, and two frames with the
-// same inputs in one run (balls at rest under a still camera) are rendered once.
+// made them (the frame's .pov text, the shared include, size, quality and how it is developed). A run
+// copies a stored picture instead of rendering it again, so a re-run renders only the frames whose
+// inputs changed, a run that failed or was interrupted loses none of the frames it finished, and two
+// frames with the same inputs in one run (balls at rest under a still camera) are rendered once.
 //
 // The store lives outside every output directory (BSIM_CACHE_DIR, else $XDG_CACHE_HOME/billiards-sim,
 // else ~/.cache/billiards-sim), so it is never mistaken for finished output; it is trimmed to

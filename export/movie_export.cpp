@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "child_process.h"
+#include "develop.h"
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
 #include "frames.h"
@@ -115,9 +116,10 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
 }  // namespace
 
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
-  // What every picture depends on besides its own .pov text; "v2" names the store's key format.
-  const std::string settings = "v2 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                               quality_name(options.quality);
+  // What every picture depends on besides its own .pov text: the size, the quality and how the
+  // picture is developed; "v3" names the store's key format.
+  const std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                               quality_name(options.quality) + " " + develop_signature();
   const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
   std::vector<std::uint64_t> keys;
   for (int k = 0; k < frames; ++k)

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "child_process.h"
+#include "develop.h"
 #include "pov_frame.h"
 #include "progress_reporter.h"
 #include "scene_file.h"
@@ -18,6 +19,8 @@ namespace bsim {
 
 namespace {
 
+/// POV-Ray's linear picture, and the PNG developed from it, while the frame is not yet whole.
+std::string temp_hdr(int frame) { return "." + frame_name(frame) + ".tmp.hdr"; }
 std::string temp_png(int frame) { return "." + frame_name(frame) + ".tmp.png"; }
 std::string log_name(int frame) { return "." + frame_name(frame) + ".log"; }
 
@@ -84,12 +87,14 @@ std::optional<PovParseError> find_parse_error(const std::string& log_text) {
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame) {
   // -D: no display (with one asked for and none there, POV-Ray draws ASCII art on stdout).
   // +WT1: one render thread a process; parallelism comes from running several processes.
+  // +FH: linear light, unclipped, in a Radiance .hdr (the include sets assumed_gamma 1), which the
+  // develop stage turns into the PNG (develop.h).
   std::vector<std::string> args = {settings.povray,
                                    "-D",
-                                   "+FN",
+                                   "+FH",
                                    "+WT1",
                                    "+I" + frame_name(frame) + ".pov",
-                                   "+O" + temp_png(frame),
+                                   "+O" + temp_hdr(frame),
                                    "+W" + std::to_string(settings.width),
                                    "+H" + std::to_string(settings.height)};
   if (settings.quality == Quality::final) {
@@ -111,6 +116,7 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
   const std::string dir = frames_dir + "/";
 
   auto cleanup = [&](int frame) {
+    remove_quietly(dir + temp_hdr(frame));
     remove_quietly(dir + temp_png(frame));
     remove_quietly(dir + log_name(frame));
   };
@@ -163,9 +169,22 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
     const int frame = attempt.job.frame;
     const std::string png = frame_name(frame) + ".png";
     std::error_code ec;
-    const auto size = std::filesystem::file_size(dir + temp_png(frame), ec);
+    const auto size = std::filesystem::file_size(dir + temp_hdr(frame), ec);
     const bool picture_there = !ec;
-    if (success && picture_there && size > 0) {
+    // POV-Ray's picture, read back whole: one it wrote but that cannot be read is a failed attempt.
+    HdrImage image;
+    std::string unreadable, develop_error;
+    if (success && picture_there && size > 0 && !read_hdr(dir + temp_hdr(frame), image, unreadable)) {
+      const std::string named = "cannot read " + dir + temp_hdr(frame) + ": ";
+      if (unreadable.rfind(named, 0) == 0) unreadable.erase(0, named.size());
+      unreadable = "wrote a picture that cannot be read: " + unreadable;
+    }
+    if (success && picture_there && size > 0 && unreadable.empty()) {
+      if (!develop_to_png(std::move(image), dir + temp_png(frame), develop_error)) {
+        fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
+        continue;
+      }
+      remove_quietly(dir + temp_hdr(frame));
       std::filesystem::rename(dir + temp_png(frame), dir + png, ec);
       if (ec) {
         fail(frame, "cannot write " + dir + png + ": " + ec.message());
@@ -198,7 +217,8 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
       fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
       continue;
     }
-    const std::string reason = failure_reason(success, signal, picture_there, log_text);
+    const std::string reason =
+        unreadable.empty() ? failure_reason(success, signal, picture_there, log_text) : unreadable;
     if (outcome == RunOutcome::done && attempt.number < kRenderAttempts) {
       cleanup(frame);
       progress.message("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +

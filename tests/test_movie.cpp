@@ -170,7 +170,9 @@ TEST_SUITE("movie") {
         fake_povray(dir,
                     "if [ \"$in\" = frame_00003.pov ]; then\n"
                     "  echo \"File 'frame_00003.pov' line 7: Parse Error: No matrix here\" >&2; exit 1\n"
-                    "fi\necho picture > \"$out\"");
+                    "fi\n"
+                    // The other frames get a one-pixel Radiance picture.
+                    "printf '#?RADIANCE\\nFORMAT=32-bit_rle_rgbe\\n\\n-Y 1 +X 1\\n\\200\\200\\200\\200' > \"$out\"");
     const test::CommandResult r =
         run_export(path, dir.path / "out", "--size 32x18 --fps 2 --jobs 1", "PATH=" + quoted(fake) + ":\"$PATH\"");
     CHECK(r.exit_code == 1);

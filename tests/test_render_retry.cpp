@@ -142,7 +142,7 @@ TEST_SUITE("render retry") {
   TEST_CASE("a frame that fails for a reason outside the scene is rendered again, with a warning") {
     for (const char* tool : {"povray", "ffmpeg"}) test::require_program(tool);
     test::TempDir dir;
-    // The first attempt at each of frames 0 to 3 fails, each in its own way; every other attempt
+    // The first attempt at each of frames 0 to 4 fails, each in its own way; every other attempt
     // is the real POV-Ray's.
     const std::string path = stand_in(dir,
                                       "if [ ! -e \"$marks/$in\" ]; then\n"
@@ -154,6 +154,7 @@ TEST_SUITE("render retry") {
                                           "    frame_00001.pov) kill -KILL $$;;\n"
                                           "    frame_00002.pov) exit 0;;\n"
                                           "    frame_00003.pov) : > \"$out\"; exit 0;;\n"
+                                          "    frame_00004.pov) echo garbage > \"$out\"; exit 0;;\n"
                                           "  esac\n"
                                           "fi\n"
                                           "exec " +
@@ -162,7 +163,7 @@ TEST_SUITE("render retry") {
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     const fs::path out = dir.path / "out";
     const int frames = povs(out / "frames");
-    REQUIRE(frames >= 5);
+    REQUIRE(frames >= 6);
     CHECK(pictures(out / "frames") == frames);
     CHECK(fs::file_size(out / "movie.mp4") > 0);
     CHECK(test::leftovers(out).empty());
@@ -178,7 +179,10 @@ TEST_SUITE("render retry") {
     CHECK(r.err.find("billiards-export: warning: frame 3 (frames/frame_00003.pov): povray failed (wrote an empty "
                      "picture)" +
                      retry) != std::string::npos);
-    CHECK(occurrences(r.err, "warning:") == 4);
+    CHECK(r.err.find("billiards-export: warning: frame 4 (frames/frame_00004.pov): povray failed (wrote a picture "
+                     "that cannot be read: not a Radiance .hdr picture)" +
+                     retry) != std::string::npos);
+    CHECK(occurrences(r.err, "warning:") == 5);
     CHECK(r.err.find("error") == std::string::npos);
 
     const std::map<std::string, int> count = attempts(dir);
@@ -187,7 +191,7 @@ TEST_SUITE("render retry") {
       const std::string& pov = entry.first;  // a plain name: CAPTURE cannot take a binding
       const int n = entry.second;
       CAPTURE(pov);
-      const int expected = pov < std::string("frame_00004.pov") ? 2 : 1;
+      const int expected = pov < std::string("frame_00005.pov") ? 2 : 1;
       CHECK(n == expected);
     }
   }
@@ -263,7 +267,7 @@ TEST_SUITE("render retry") {
                                 " --jobs 2 & pid=$!; i=0; "
                                 "while [ -z \"$(find " +
                                 quoted(dir.path.string()) +
-                                " -name '*.tmp.png' 2>/dev/null)\" ] && [ $i -lt 600 ]; do "
+                                " -name '*.tmp.hdr' 2>/dev/null)\" ] && [ $i -lt 600 ]; do "
                                 "sleep 0.05; i=$((i+1)); done; kill -INT -$pid; wait $pid; echo \"status $?\"";
     const test::CommandResult r = test::run_command(command);
     CHECK(r.out.find("status 0") == std::string::npos);

@@ -149,7 +149,7 @@ TEST_SUITE("a run is all or nothing") {
              "touch \"$out\"; exec sleep 60");
     const bsim::test::CommandResult r =
         w.interrupt_when("PATH=" + quoted((w.dir.path / "bin").string()) + ":\"$PATH\"",
-                         "[ -n \"$(find " + quoted(w.out.string()) + " -name '*.tmp.png' 2>/dev/null)\" ]");
+                         "[ -n \"$(find " + quoted(w.out.string()) + " -name '*.tmp.hdr' 2>/dev/null)\" ]");
     CHECK(r.out.find("status 130") != std::string::npos);  // 128 + SIGINT
     CHECK(snapshot(w.out) == before);
     CHECK(staging_left(w.dir.path).empty());
