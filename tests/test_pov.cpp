@@ -8,6 +8,7 @@
 //   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -289,6 +290,57 @@ TEST_SUITE("pov") {
       for (const StickTravel& piece : pieces) shares += piece.share;
       CHECK(sum == doctest::Approx(shares * length).epsilon(1e-3));
     }
+  }
+
+  TEST_CASE("POV-Ray's StickCover of a swept stick is the C++ stick_cover of its pieces") {
+    test::require_program("povray");
+    const auto shot = load(kTinyScene);
+    const int strike = static_cast<int>(std::lround(shot->timeline.cue_time() * 30));
+    const std::string text = frame_text(*shot, strike);
+    const std::size_t start = text.find("#declare StickCover");
+    REQUIRE(start != std::string::npos);
+    const std::string cover = text.substr(start, text.find('\n', start) - start);
+    // The pieces as the frame writes them (to the micrometre).
+    std::vector<StickTravel> pieces;
+    for (std::size_t at = cover.find("StickPiece(X, "); at != std::string::npos;
+         at = cover.find("StickPiece(X, ", at + 1)) {
+      std::istringstream terms(cover.substr(at + std::string("StickPiece(X, ").size()));
+      StickTravel piece;
+      char comma = 0;
+      terms >> piece.from >> comma >> piece.to >> comma >> piece.share;
+      pieces.push_back(piece);
+    }
+    REQUIRE(pieces.size() >= 2);  // the tip meets the ball in this frame: not an even stroke
+    double front = 0, back = 0;
+    for (const StickTravel& piece : pieces) {
+      front = std::min({front, piece.from, piece.to});
+      back = std::max({back, piece.from, piece.to});
+    }
+    std::vector<double> xs;
+    for (int i = 0; i <= 40; ++i) xs.push_back(front - 0.01 + (back - front + 0.02) * i / 40);
+    for (int i = 0; i <= 40; ++i) xs.push_back(kCueLength + front - 0.01 + (back - front + 0.02) * i / 40);
+    test::TempDir dir;
+    std::ostringstream include;
+    write_pov_include(shot->scene, Quality::draft, include);
+    REQUIRE(test::write_file(dir.path / std::string(kPovIncludeName), include.str()));
+    std::string probe = "#version 3.7;\n#include \"" + std::string(kPovIncludeName) + "\"\n" + cover + "\n";
+    for (double x : xs) probe += "#debug concat(\"cover \", str(StickCover(" + pov_number(x) + "), 0, 9), \"\\n\")\n";
+    REQUIRE(test::write_file(dir.path / "probe.pov", probe));
+    const test::CommandResult r =
+        test::run_command("cd '" + dir.path.string() + "' && povray -D +FN +WT1 +Iprobe.pov +Oprobe.png +W1 +H1");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    std::istringstream lines(r.err);
+    std::size_t i = 0, fading = 0;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("cover ", 0) != 0) continue;
+      REQUIRE(i < xs.size());
+      const double expected = stick_cover(std::stod(pov_number(xs[i])), pieces, kCueLength);
+      CHECK(std::stod(line.substr(6)) == doctest::Approx(expected).epsilon(1e-6));
+      fading += expected > 0.05 && expected < 0.95;
+      ++i;
+    }
+    CHECK(i == xs.size());
+    CHECK(fading > 20);  // the probes lie along both ends' fades
   }
 
   TEST_CASE("two renders of one frame are the same picture") {
