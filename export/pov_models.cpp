@@ -438,7 +438,7 @@ constexpr std::string_view kModelsTail =
 #macro CueSweep(Front, Back)
   #local Clear = pigment { CueSmear(1) }
   #local Solid = pigment { CueSmear(0) }
-  #local Cover = pigment { function { StickCover(x) } pigment_map { [0 Clear] [1 Solid] } }
+  #local Cover = pigment { function { min(max(StickCover(x), 0), 1) } pigment_map { [0 Clear] [1 Solid] } }
   merge {
     #for (I, 0, CueParts - 1)
       object { CuePart(I) translate Front * x }
