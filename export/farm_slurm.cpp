@@ -3,9 +3,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -32,6 +34,7 @@ namespace {
 
 constexpr const char* kConf = "farm/farm.conf";
 constexpr const char* kChunks = "farm/chunks.txt";
+constexpr const char* kCopies = "farm/copies.txt";
 constexpr const char* kProgram = "farm/billiards-export";
 constexpr const char* kTaskScript = "farm/task.sh";
 constexpr const char* kMovieScript = "farm/movie.sh";
@@ -102,13 +105,15 @@ std::string sh_quote(const std::string& s) {
   return quoted + "'";
 }
 
-/// Runs argv (argv[0] a full path), its standard output and error together in `output`; true when it
-/// exited with status 0.
+/// Runs argv (argv[0] a full path), its standard output and error together in `output` (by way of a
+/// file in $TMPDIR, else /tmp); true when it exited with status 0.
 bool run_captured(const std::vector<std::string>& argv, std::string& output, std::string& error) {
-  char log[] = "/tmp/billiards-export-XXXXXX";
-  const int fd = ::mkstemp(log);
+  const char* tmpdir = std::getenv("TMPDIR");
+  const std::string folder = tmpdir && *tmpdir ? tmpdir : "/tmp";
+  std::string log = folder + "/billiards-export-XXXXXX";
+  const int fd = ::mkstemp(log.data());
   if (fd < 0) {
-    error = "cannot create a temporary file in /tmp";
+    error = "cannot create a temporary file in " + folder + ": " + std::strerror(errno);
     return false;
   }
   ::close(fd);
@@ -127,10 +132,66 @@ bool picture_there(const std::string& dir, int frame) {
   return !ec && size > 0;
 }
 
-std::vector<int> missing_frames(const std::string& dir, int frames) {
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec)) return false;
+  return read_text_file(a) == read_text_file(b);
+}
+
+/// Hard-links `from` to `to` (one shared file system), copying when a link cannot be made.
+bool link_or_copy(const std::string& from, const std::string& to) {
+  std::error_code ec;
+  fs::create_hard_link(from, to, ec);
+  if (ec) fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
+  return !ec;
+}
+
+/// Frames whose .pov text is an earlier frame's (balls at rest under a still camera): the same
+/// picture, rendered once and copied (farm/copies.txt, `FRAME SOURCE` lines).
+struct FrameCopies {
+  std::map<int, int> source;               ///< copy -> the frame it copies
+  std::map<int, std::vector<int>> copies;  ///< rendered frame -> its copies
+  bool is_copy(int frame) const { return source.count(frame) > 0; }
+  void add(int frame, int from) {
+    source[frame] = from;
+    copies[from].push_back(frame);
+  }
+};
+
+FrameCopies read_copies(const std::string& dir) {
+  FrameCopies c;
+  std::ifstream in(dir + "/" + kCopies);
+  for (int frame, from; in >> frame >> from;) c.add(frame, from);
+  return c;
+}
+
+std::string copies_text(const FrameCopies& c) {
+  std::string text;
+  for (const auto& [frame, from] : c.source) text += std::to_string(frame) + " " + std::to_string(from) + "\n";
+  return text;
+}
+
+/// Copies frame `from`'s picture to each of its copies that has none yet; false when one cannot be.
+bool copy_picture(const std::string& frames_dir, const FrameCopies& c, int from) {
+  const auto it = c.copies.find(from);
+  if (it == c.copies.end()) return true;
+  bool ok = true;
+  for (int frame : it->second) {
+    std::error_code ec;
+    const std::string to = frames_dir + "/" + frame_name(frame) + ".png";
+    if (fs::file_size(to, ec) > 0 && !ec) continue;
+    ok = link_or_copy(frames_dir + "/" + frame_name(from) + ".png", to) && ok;
+  }
+  return ok;
+}
+
+/// Frames with no picture, a copy counting as there when the frame it copies is.
+std::vector<int> missing_frames(const std::string& dir, int frames, const FrameCopies& c) {
   std::vector<int> missing;
-  for (int k = 0; k < frames; ++k)
-    if (!picture_there(dir, k)) missing.push_back(k);
+  for (int k = 0; k < frames; ++k) {
+    const auto it = c.source.find(k);
+    if (!picture_there(dir, k) && (it == c.source.end() || !picture_there(dir, it->second))) missing.push_back(k);
+  }
   return missing;
 }
 
@@ -160,20 +221,6 @@ std::string job_id(const std::string& output) {
   return line;
 }
 
-bool same_file(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec)) return false;
-  return read_text_file(a) == read_text_file(b);
-}
-
-/// Hard-links `from` to `to` (one shared file system), copying when a link cannot be made.
-bool link_or_copy(const std::string& from, const std::string& to) {
-  std::error_code ec;
-  fs::create_hard_link(from, to, ec);
-  if (ec) fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
-  return !ec;
-}
-
 /// "frame 7 (frames/frame_00007.png)".
 std::string shown_picture(int frame) {
   return "frame " + std::to_string(frame) + " (frames/" + frame_name(frame) + ".png)";
@@ -186,7 +233,7 @@ int farm_status(const std::string& dir) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  const int missing = static_cast<int>(missing_frames(dir, conf.frames).size());
+  const int missing = static_cast<int>(missing_frames(dir, conf.frames, read_copies(dir)).size());
   std::error_code ec;
   const bool movie = fs::is_regular_file(dir + "/movie.mp4", ec);
   std::cout << dir << ": " << conf.frames - missing << " of " << conf.frames << " frames rendered (" << conf.width
@@ -229,19 +276,29 @@ int farm_render(const ExportOptions& options, const std::string& dir) {
   }
   InterruptGuard guard;  // scancel's SIGTERM stops POV-Ray and removes its half-written picture
   FrameCache no_store("", dir + "/frames");
+  const FrameCopies copies = read_copies(dir);
   const int last = options.last_frame < 0 ? conf.frames - 1 : std::min(options.last_frame, conf.frames - 1);
   int rendered = 0;
   std::vector<int> failed;
   for (int k = options.first_frame; k <= last && !InterruptGuard::interrupted(); ++k) {
-    if (picture_there(dir, k)) continue;
-    error.clear();
-    if (render_frames(dir + "/frames", {{k, 0}}, 1, render, no_store, error) == RunOutcome::done) {
-      ++rendered;
-      std::cerr << "billiards-export: frame " << k << " rendered\n";
-    } else if (!InterruptGuard::interrupted()) {
-      std::cerr << "billiards-export: error: " << error << "\n";
-      failed.push_back(k);  // the others of the chunk are still worth rendering
+    if (copies.is_copy(k)) continue;  // the task of the frame it copies copies it
+    if (!picture_there(dir, k)) {
+      error.clear();
+      if (render_frames(dir + "/frames", {{k, 0}}, 1, render, no_store, error) == RunOutcome::done) {
+        ++rendered;
+        std::cerr << "billiards-export: frame " << k << " rendered\n";
+      } else {
+        if (!InterruptGuard::interrupted()) {
+          std::cerr << "billiards-export: error: " << error << "\n";
+          failed.push_back(k);  // the others of the chunk are still worth rendering
+        }
+        continue;
+      }
     }
+    // Its copies are the same picture: the movie job would copy them too, but --farm status counts
+    // them done from now on.
+    if (!copy_picture(dir + "/frames", copies, k))
+      std::cerr << "billiards-export: warning: cannot copy frame " << k << " to its copies; the movie job will\n";
   }
   if (InterruptGuard::interrupted()) {
     std::cerr << "billiards-export: error: interrupted\n";
@@ -255,6 +312,8 @@ int farm_render(const ExportOptions& options, const std::string& dir) {
 
 /// The log of the array task that rendered (or failed) `frame`, as a path inside DIR.
 std::string task_log(const std::string& dir, const FarmConf& conf, int frame) {
+  const auto copied = read_copies(dir).source;
+  if (const auto it = copied.find(frame); it != copied.end()) frame = it->second;
   std::ifstream in(dir + "/" + kChunks);
   int index = 0;
   for (std::string line; std::getline(in, line); ++index) {
@@ -272,14 +331,27 @@ int farm_assemble(const ExportOptions& options, const std::string& dir) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  const std::vector<int> missing = missing_frames(dir, conf.frames);
+  // Frames the same as an earlier one are that one's picture, copied.
+  const FrameCopies copies = read_copies(dir);
+  for (const auto& entry : copies.copies) {
+    if (picture_there(dir, entry.first) && !copy_picture(dir + "/frames", copies, entry.first)) {
+      std::cerr << "billiards-export: error: cannot copy " << shown_picture(entry.first) << " to its copies\n";
+      return 1;
+    }
+  }
+  const std::vector<int> missing = missing_frames(dir, conf.frames, copies);
   if (!missing.empty()) {
+    // The frames to render are named; their copies are only counted.
     constexpr std::size_t kNamed = 10;
-    for (std::size_t i = 0; i < missing.size() && i < kNamed; ++i)
+    std::size_t named = 0;
+    for (std::size_t i = 0; i < missing.size() && named < kNamed; ++i) {
+      if (copies.is_copy(missing[i])) continue;
       std::cerr << "billiards-export: error: " << shown_picture(missing[i]) << " was not rendered; see its task's log, "
                 << task_log(dir, conf, missing[i]) << "\n";
-    if (missing.size() > kNamed)
-      std::cerr << "billiards-export: error: and " << missing.size() - kNamed << " more frames\n";
+      ++named;
+    }
+    if (missing.size() > named)
+      std::cerr << "billiards-export: error: and " << missing.size() - named << " more frames\n";
     std::cerr << "billiards-export: error: no movie: " << missing.size() << " of " << conf.frames
               << " frames are missing; the frames done are kept, and submitting the same command again renders "
                  "only the missing ones\n";
@@ -396,13 +468,28 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   // The others may be in this machine's frame store, from a local run or an earlier farm run.
   const FrameCache store(default_frame_cache_dir(), stage.path("frames"));
   const std::vector<std::uint64_t> keys = frame_store_keys(stage.path("frames"), frames_, options);
+  // A frame whose inputs are an earlier frame's is that frame's picture: rendered once, then copied
+  // by the task that renders it (and by the movie job, whatever happened to the task).
+  FrameCopies copies;
+  std::map<std::uint64_t, int> first;
+  for (int k = 0; k < frames_; ++k) {
+    const auto found = first.emplace(keys[static_cast<std::size_t>(k)], k);
+    if (!found.second) copies.add(k, found.first->second);
+  }
   std::vector<int> missing;
+  copies_ = 0;
   for (int k = 0; k < frames_; ++k) {
     const std::string pov = "frames/" + frame_name(k) + ".pov", png = "frames/" + frame_name(k) + ".png";
     if (comparable && picture_there(dir_, k) && same_file(dir_ + "/" + pov, stage.path(pov)) &&
         link_or_copy(dir_ + "/" + png, stage.path(png)))
       continue;
-    if (store.fetch(frame_name(k) + ".png", keys[k])) continue;
+    if (const auto it = copies.source.find(k); it != copies.source.end()) {
+      const std::string from = stage.path("frames/" + frame_name(it->second) + ".png");
+      std::error_code ec;
+      if (!(fs::file_size(from, ec) > 0 && !ec && link_or_copy(from, stage.path(png)))) ++copies_;
+      continue;
+    }
+    if (store.fetch(frame_name(k) + ".png", keys[static_cast<std::size_t>(k)])) continue;
     missing.push_back(k);
   }
   missing_ = static_cast<int>(missing.size());
@@ -447,6 +534,7 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
     link_or_copy(it->path().string(), stage.path(std::string(kLogs) + "/" + it->path().filename().string()));
   if (!write_text_file(stage.path(kConf), conf_text(conf), error) ||
       !write_text_file(stage.path(kChunks), chunk_lines, error) ||
+      !write_text_file(stage.path(kCopies), copies_text(copies), error) ||
       !write_text_file(stage.path(kTaskScript), task, error) ||
       !write_text_file(stage.path(kMovieScript), movie, error))
     return false;
@@ -473,7 +561,8 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   test.push_back(stage.path(kMovieScript));
   std::string output;
   if (!run_captured(test, output, error)) {
-    error = "sbatch would not take the jobs: " + (output.empty() ? error : output);
+    // `error` alone when sbatch could not be run at all (no temporary file, no process).
+    if (!output.empty() || error.empty()) error = "sbatch would not take the jobs: " + output;
     return false;
   }
   return true;
@@ -518,7 +607,12 @@ int SlurmSubmission::submit(std::string& error) {
   for (const auto& c : chunks_) largest = std::max(largest, c.second - c.first + 1);
   if (!frames_job.empty())
     std::cout << "submitted job " << frames_job << ": " << chunks_.size() << (chunks_.size() == 1 ? " task" : " tasks")
-              << " render " << missing_ << " of " << frames_ << " frames, up to " << largest << " a task\n";
+              << " render " << missing_ << " of " << frames_ << " frames, up to " << largest << " a task"
+              << (copies_ == 0 ? ""
+                  : copies_ == 1
+                      ? "; 1 more frame is the same as one of them and is copied"
+                      : "; " + std::to_string(copies_) + " more frames are the same as some of them and are copied")
+              << "\n";
   else
     std::cout << "all " << frames_ << " frames are rendered already\n";
   std::cout << "submitted job " << movie_job << ": checks every frame and writes " << dir_

@@ -4,9 +4,14 @@
 // contiguous chunks, and a job that waits for the whole array checks every frame and encodes the
 // movie with the same ffmpeg command line as a local run, so the movie is byte for byte the same.
 //
+// Frames whose .pov text is the same (balls at rest under a still camera) are rendered once: only
+// the first of them goes into a chunk, and its task copies its picture to the others (the movie job
+// too, for any a task left).
+//
 // DIR/farm/ holds what the jobs need besides povray and ffmpeg on PATH: farm.conf (the settings and
-// the job ids), chunks.txt (one FIRST-LAST line per array task), task.sh and movie.sh (the job
-// scripts), a copy of billiards-export and the jobs' logs (logs/).
+// the job ids), chunks.txt (one FIRST-LAST line per array task), copies.txt (`FRAME SOURCE`: a frame
+// that is the same as an earlier one), task.sh and movie.sh (the job scripts), a copy of
+// billiards-export and the jobs' logs (logs/).
 #include <string>
 #include <vector>
 
@@ -51,7 +56,7 @@ class SlurmSubmission {
   std::string dir_;   ///< absolute
   std::string name_;  ///< of the jobs
   std::vector<std::pair<int, int>> chunks_;
-  int frames_ = 0, missing_ = 0, chunk_ = 0;
+  int frames_ = 0, missing_ = 0, copies_ = 0, chunk_ = 0;
   std::vector<std::string> user_options_;
 };
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera_interpolation.h"
+#include "cue_pose.h"
 #include "frames.h"
 #include "pov_format.h"
 #include "pov_table.h"
@@ -125,12 +126,70 @@ StickFrame stick_frame(const CuePose& cue) {
   return {along, side, along.cross(side)};
 }
 
-constexpr double kStickLength = 1.47;  // m, the model's tip to butt
+constexpr double kStickLength = kCueLength;  // m, the model's tip to butt
+/// Sub-frame instants the stick's way along its axis is measured at across the open shutter.
+constexpr int kStickSteps = 16;
+
+/// How the stick is drawn: once (copies 1, no way), swept along its axis (its way), or as copies.
+struct StickBlur {
+  int copies = 1;
+  std::vector<StickTravel> travel;  ///< the pieces of its way; empty: not swept
+  std::vector<double> along;        ///< its tip's place along its axis at each seen instant
+  double front = 0, back = 0;       ///< the least and the most of `along`
+};
 
 struct FrameBlur {
   std::vector<int> ball_segments;  ///< per ball, 0: drawn once, else the straight pieces of its streak
-  int stick_copies = 1;
+  StickBlur stick;
 };
+
+/// The stick's way along its axis over the open shutter, when it goes (nearly) along its axis: where
+/// the stick at each of kStickSteps + 1 instants lies, along the axis of the stick `cue` at the
+/// frame's instant; nothing (copies instead) when its tip or butt strays more than kStickSidePixels
+/// from that line in the picture.
+StickBlur sweep_stick(const Shot& shot, double t, double shutter, const CuePose& cue) {
+  StickBlur blur;
+  const PictureProjection view(shot.camera->pose(t));
+  const Vec3 axis = cue.axis.normalized(), butt = cue.tip + kStickLength * axis;
+  std::vector<double> along;
+  std::vector<bool> seen;
+  for (int k = 0; k <= kStickSteps; ++k) {
+    const CuePose p = shot.cue->pose(shutter_instant(shot, t, shutter, k, kStickSteps));
+    seen.push_back(p.visible);
+    const Vec3 tip = p.tip - cue.tip, end = p.tip + kStickLength * p.axis.normalized() - butt;
+    const double s = tip.dot(axis);
+    along.push_back(s);
+    if (!p.visible) continue;
+    const double side = std::max(view.size_at(cue.tip, (tip - s * axis).norm()),
+                                 view.size_at(butt, (end - end.dot(axis) * axis).norm()));
+    if (side > kStickSidePixels) return blur;
+  }
+  // The pieces between instants where the stick is seen; the others are time it is not there.
+  std::vector<double> run;
+  auto close_run = [&] {
+    if (run.size() >= 2) {
+      const double share = static_cast<double>(run.size() - 1) / kStickSteps;
+      for (StickTravel piece : stick_travel(run)) {
+        piece.share *= share;
+        blur.travel.push_back(piece);
+      }
+    }
+    run.clear();
+  };
+  for (int k = 0; k <= kStickSteps; ++k) {
+    if (seen[static_cast<std::size_t>(k)]) {
+      run.push_back(along[static_cast<std::size_t>(k)]);
+      blur.along.push_back(along[static_cast<std::size_t>(k)]);
+    } else {
+      close_run();
+    }
+  }
+  close_run();
+  if (blur.travel.empty()) return {};
+  blur.front = *std::min_element(blur.along.begin(), blur.along.end());
+  blur.back = *std::max_element(blur.along.begin(), blur.along.end());
+  return blur;
+}
 
 /// The straight pieces a ball's path during the open shutter is drawn as: one when the path is
 /// straight (within a tenth of the radius), else kMeasureSteps (a collision within the shutter).
@@ -167,9 +226,35 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
                           return Vec3(p.tip + along * p.axis.normalized());
                         }));
     }
-    blur.stick_copies = copies_for(travel, 4.0);
+    if (travel >= kBlurPixels) blur.stick = sweep_stick(shot, t, shutter, cue);
+    if (blur.stick.travel.empty()) blur.stick.copies = copies_for(travel, 4.0);
   }
   return blur;
+}
+
+/// Writes the stick `cue` (at the frame's instant) swept along its axis over `blur`'s way (CueSweep),
+/// and its shadow as one unseen stick at the frame's instant.
+void write_stick_sweep(const CuePose& cue, const StickBlur& blur, std::ostream& out) {
+  const StickFrame f = stick_frame(cue);
+  const std::string place = pov_matrix(f.along, f.side, f.up, cue.tip);
+  out << "#declare StickCover = function(X) {";
+  for (std::size_t i = 0; i < blur.travel.size(); ++i) {
+    const StickTravel& piece = blur.travel[i];
+    out << (i ? " +" : "") << " StickPiece(X, " << pov_number(piece.from) << ", " << pov_number(piece.to) << ", "
+        << pov_number(piece.share) << ")";
+  }
+  out << " }\n";
+  // The colours are averaged over the instants, the first and last counting half (the trapezoid rule).
+  const std::size_t n = blur.along.size();
+  out << "#declare StickShift = array[" << n << "] {";
+  for (std::size_t k = 0; k < n; ++k) out << (k ? ", " : " ") << pov_number(blur.along[k]);
+  out << " }\n#declare StickShiftWeight = array[" << n << "] {";
+  for (std::size_t k = 0; k < n; ++k) out << (k ? ", " : " ") << (k == 0 || k + 1 == n ? "0.5" : "1.0");
+  out << " }\n";
+  out << "object { CueSweep(" << pov_number(blur.front) << ", " << pov_number(blur.back) << ") " << place
+      << " }  // blurred: swept along its axis, " << blur.travel.size()
+      << (blur.travel.size() == 1 ? " piece" : " pieces") << "\n";
+  out << "object { CueShadow " << place << " }  // the stick's shadow\n";
 }
 
 /// Writes ball i's streak over the open shutter as `segments` straight pieces (BallStreak), each
@@ -211,6 +296,36 @@ bool write_streak(const Shot& shot, int i, double t, double shutter, int segment
 
 }  // namespace
 
+std::vector<StickTravel> stick_travel(const std::vector<double>& along) {
+  std::vector<StickTravel> pieces;
+  if (along.size() < 2) return pieces;
+  const double share = 1.0 / static_cast<double>(along.size() - 1);
+  for (std::size_t k = 0; k + 1 < along.size(); ++k) {
+    const double step = along[k + 1] - along[k];
+    if (!pieces.empty()) {
+      StickTravel& last = pieces.back();
+      const double speed = (last.to - last.from) / last.share * share;  // its way a step
+      if (std::abs(step - speed) <= 0.03 * std::abs(speed) + 1e-9) {
+        last.to = along[k + 1];
+        last.share += share;
+        continue;
+      }
+    }
+    pieces.push_back({along[k], along[k + 1], share});
+  }
+  return pieces;
+}
+
+double stick_cover(double along, const std::vector<StickTravel>& pieces, double length) {
+  double cover = 0;
+  for (const StickTravel& piece : pieces) {
+    const double low = std::min(piece.from, piece.to),
+                 high = std::max(std::max(piece.from, piece.to), low + kStreakLeast);
+    cover += piece.share * std::max(0.0, std::min(high, along) - std::max(low, along - length)) / (high - low);
+  }
+  return std::clamp(cover, 0.0, 1.0);
+}
+
 double streak_cover(double along, double across, double length, double weight, double radius) {
   const double half = std::sqrt(std::max(radius * radius - across * across, 0.0));
   return std::clamp(weight * (std::min(along + half, length) - std::max(along - half, 0.0)), 0.0, 1.0);
@@ -218,7 +333,7 @@ double streak_cover(double along, double across, double length, double weight, d
 
 int blur_samples(const Shot& shot, int frame, int fps) {
   const FrameBlur blur = plan_blur(shot, frame_time(frame, fps), fps);
-  int most = blur.stick_copies;
+  int most = blur.stick.travel.empty() ? blur.stick.copies : static_cast<int>(blur.stick.travel.size()) + 1;
   for (int c : blur.ball_segments) most = std::max(most, c > 0 ? c + 1 : 1);
   return most;
 }
@@ -260,7 +375,11 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
     }
   }
 
-  const int stick_copies = photo ? blur.stick_copies : 1;
+  if (photo && !blur.stick.travel.empty()) {
+    write_stick_sweep(shot.cue->pose(t), blur.stick, out);
+    return;
+  }
+  const int stick_copies = photo ? blur.stick.copies : 1;
   if (stick_copies == 1) {
     const CuePose cue = shot.cue->pose(t);
     if (cue.visible) {

@@ -12,11 +12,17 @@
 // as distributed ray tracing takes it with many samples (Cook, Porter & Carpenter 1984,
 // "Distributed ray tracing", SIGGRAPH; Potmesil & Chakravarty 1983, "Modeling motion blur in
 // computer-generated images"), here in closed form for one ray a pixel, so the streak is smooth
-// and costs one object. The stick, thin and moving mostly along itself, is drawn as sub-frame
-// copies that each let some of the background through. The decision is the frame's own, from the timeline and
+// and costs one object. The stick, moving along its own axis in a stroke, is drawn the same way: one
+// stick stretched over the way its tip goes while the shutter is open, letting through at each point
+// the share of the shutter's time the stick does not cover it (solid where it is all the time, its
+// two ends fading over their travel, a tip that stops or turns back within the shutter left where it
+// rested as long); its colours are averaged over the shutter's instants. Only a stick that also
+// moves sideways (swung up or down) by more than kStickSidePixels is drawn as sub-frame copies that
+// each let some of the background through. The decision is the frame's own, from the timeline and
 // the camera, so a frame with nothing fast in it is exactly the plain frame.
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "pov_table.h"
 
@@ -45,13 +51,36 @@ inline constexpr double kStreakLeast = 1e-4;
 /// streak's pieces together are one full ball. BallStreak in the shared include computes the same.
 double streak_cover(double along, double across, double length, double weight, double radius);
 
+/// Pixels the stick may move across its own axis while the shutter is open and still be drawn swept
+/// along it; beyond that it is drawn as copies.
+inline constexpr double kStickSidePixels = 1.0;
+
+/// A piece of the stick's way along its own axis while the shutter is open: its tip goes from `from`
+/// to `to` (m along the axis from the tip at the frame's instant, + towards the butt) at an even
+/// speed during `share` of the shutter's time.
+struct StickTravel {
+  double from = 0, to = 0, share = 1;
+};
+
+/// The stick's way as pieces, from its tip's places `along` (m, as in StickTravel) at evenly spaced
+/// instants across the open shutter: one piece between each two, and consecutive pieces of the same
+/// speed (within 3 %) joined into one.
+std::vector<StickTravel> stick_travel(const std::vector<double>& along);
+
+/// What share of the open shutter a stick `length` long that goes its way in `pieces` covers the
+/// point `along` m along its axis (as in StickTravel): for each piece, its share times the part of
+/// its way during which the point lies between the tip and the butt (the tip within [along - length,
+/// along]), a piece shorter than kStreakLeast taken as that long. CueSweep in the shared include
+/// computes the same.
+double stick_cover(double along, const std::vector<StickTravel>& pieces, double length);
+
 /// Writes frame `frame` of the shot, which shows t = frame / fps. The classic look draws no blur and
 /// leaves pocketed balls out; the photographic one shows them lying in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Look look = Look::photo);
 
 /// How many sub-frame instants frame `frame` builds its blur from: 1 when nothing in it moves more
 /// than kBlurPixels while the shutter is open (the frame is rendered once, as it is), else the most of
-/// its stick's copies and its balls' streak ends (2 for a straight streak).
+/// its stick's copies or travel's ends and its balls' streak ends (2 for a straight streak).
 int blur_samples(const Shot& shot, int frame, int fps);
 
 }  // namespace bsim

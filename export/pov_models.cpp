@@ -350,24 +350,122 @@ constexpr std::string_view kModelsTail =
 // shadows through every transparent copy would cost more than all the rest of the frame).
 #declare BallShadow = sphere { 0, BallR no_image no_reflection pigment { srgb 0 } }
 
-// ---- cue stick of cones and cylinders: the tip's face at the origin, the butt along +x. T lets
-// light through for the sub-frame copies of a fast stroke (0: the solid stick).
+// ---- cue stick of cones and cylinders: the tip's face at the origin, the butt along +x. Its parts,
+// tip first, each from CuePartStart to CuePartEnd (m from the tip's face), its radius going from
+// CuePartR0 to CuePartR1: the leather tip, the ferrule, the maple shaft, the joint's ring, the
+// forearm, the wrap, the butt sleeve and the butt cap.
+#declare CueLength = 1.47;
+#declare CueParts = 8;
+#declare CuePartStart = array[8] { -0.0005, 0.011, 0.035, 0.74, 0.755, 1.0, 1.26, 1.455 }
+#declare CuePartEnd = array[8] { 0.011, 0.035, 0.74, 0.755, 1.0, 1.26, 1.455, 1.47 }
+#declare CuePartR0 = array[8] { 0.0064, 0.0065, 0.0065, 0.0106, 0.0107, 0.0122, 0.0137, 0.0145 }
+#declare CuePartR1 = array[8] { 0.0064, 0.0065, 0.0105, 0.0107, 0.0122, 0.0137, 0.0144, 0.0145 }
+#macro CuePart(I)
+  #local A = <CuePartStart[I], 0, 0>;
+  #if (CuePartR0[I] = CuePartR1[I])
+    cylinder { A, <CuePartEnd[I], 0, 0>, CuePartR0[I] }
+  #else
+    cone { A, CuePartR0[I], <CuePartEnd[I], 0, 0>, CuePartR1[I] }
+  #end
+#end
+// Part I's colours as a pigment's body, letting T through.
+#macro CueColour(I, T)
+  #switch (I)
+    #case (0) srgbt <0.18, 0.30, 0.55, T> #break
+    #case (1) srgbt <0.95, 0.94, 0.90, T> #break
+    #case (2)
+      wood turbulence 0.02 scale <1, 0.004, 0.004> rotate z * 90
+      color_map { [0 srgbt <0.86, 0.74, 0.55, T>] [1 srgbt <0.80, 0.66, 0.46, T>] }
+      #break
+    #case (3) srgbt <0.85, 0.85, 0.82, T> #break
+    #case (5) srgbt <0.04, 0.04, 0.04, T> #break
+    #case (7) srgbt <0.03, 0.03, 0.03, T> #break
+    #else srgbt <0.25, 0.09, 0.04, T>
+  #end
+#end
+// Part I's finish (and the wrap's grip).
+#macro CueFinish(I)
+  #switch (I)
+    #case (0) finish { diffuse 0.8 } #break
+    #case (1) finish { diffuse 0.7 specular 0.4 roughness 0.01 } #break
+    #case (2) finish { diffuse 0.7 specular 0.5 roughness 0.006 } #break
+    #case (3) finish { specular 0.8 roughness 0.003 metallic } #break
+    #case (5) normal { bumps 0.3 scale 0.0008 } finish { diffuse 0.8 } #break
+    #case (7) finish { diffuse 0.8 specular 0.2 } #break
+    #else finish { diffuse 0.6 specular 0.5 roughness 0.004 }
+  #end
+#end
+// T lets light through for the sub-frame copies of a stick that turns while the shutter is open
+// (0: the solid stick).
 #macro CueStickT(T)
   union {
-    cylinder { <-0.0005, 0, 0>, <0.011, 0, 0>, 0.0064 pigment { srgb <0.18, 0.30, 0.55> transmit T } finish { diffuse 0.8 } }
-    cylinder { <0.011, 0, 0>, <0.035, 0, 0>, 0.0065 pigment { srgb <0.95, 0.94, 0.90> transmit T } finish { diffuse 0.7 specular 0.4 roughness 0.01 } }
-    cone { <0.035, 0, 0>, 0.0065, <0.74, 0, 0>, 0.0105
-      pigment { wood turbulence 0.02 scale <1, 0.004, 0.004> rotate z * 90
-                color_map { [0 srgbt <0.86, 0.74, 0.55, T>] [1 srgbt <0.80, 0.66, 0.46, T>] } }
-      finish { diffuse 0.7 specular 0.5 roughness 0.006 } }
-    cone { <0.74, 0, 0>, 0.0106, <0.755, 0, 0>, 0.0107 pigment { srgb <0.85, 0.85, 0.82> transmit T } finish { specular 0.8 roughness 0.003 metallic } }
-    cone { <0.755, 0, 0>, 0.0107, <1.0, 0, 0>, 0.0122 pigment { srgb <0.25, 0.09, 0.04> transmit T } finish { diffuse 0.6 specular 0.5 roughness 0.004 } }
-    cone { <1.0, 0, 0>, 0.0122, <1.26, 0, 0>, 0.0137 pigment { srgb 0.04 transmit T } normal { bumps 0.3 scale 0.0008 } finish { diffuse 0.8 } }
-    cone { <1.26, 0, 0>, 0.0137, <1.455, 0, 0>, 0.0144 pigment { srgb <0.25, 0.09, 0.04> transmit T } finish { diffuse 0.6 specular 0.5 roughness 0.004 } }
-    cylinder { <1.455, 0, 0>, <1.47, 0, 0>, 0.0145 pigment { srgb 0.03 transmit T } finish { diffuse 0.8 specular 0.2 } }
+    #for (I, 0, CueParts - 1)
+      object { CuePart(I) pigment { CueColour(I, T) } CueFinish(I) }
+    #end
   }
 #end
 #declare CueStick = CueStickT(0)
+// The shadow of a blurred stick: one unseen stick at the frame's instant, as for a ball.
+#declare CueShadow = object { CueStick no_image no_reflection }
+
+// A fast stroke's stick (pov_frame.h): one stick stretched over the way its tip goes along its axis
+// while the shutter is open, from Front to Back (m along x from the tip at the frame's instant). Its
+// front lets through what the stick does not cover of the shutter's time at that point of its axis,
+// StickCover(x), which the frame declares as a sum of StickPiece terms: a piece of the way from A
+// to B taking share S of the shutter, of which the point is covered while the tip lies in
+// [x - CueLength, x] (a piece shorter than kStreakLeast, a tip at rest, taken as that long). Its
+// back lets all through, so each point counts once. Its shape is the stick at Front with the butt
+// drawn on to Back: the union of the stick's places, as the stick widens towards the butt. Its
+// colours are the stick's averaged over the instants StickShift (weights StickShiftWeight), so the
+// ferrule and the joint smear along the way as the shutter sees them; beyond its ends the stick's
+// colours are its ends' own (they show only where it is mostly clear). Its finishes are its parts'
+// at the frame's instant.
+#declare StickPiece = function(X, A, B, S) {
+  S * max(0, min(max(max(A, B), min(A, B) + 1e-4), X) - max(min(A, B), X - CueLength))
+    / (max(max(A, B), min(A, B) + 1e-4) - min(A, B))
+}
+// The stick's colours along x as a pigment's body, letting T through.
+#macro CueColours(T)
+  function { min(max(x / CueLength, 0), 1) }
+  pigment_map {
+    #for (I, 0, CueParts - 1)
+      [max(CuePartStart[I], 0) / CueLength CueColour(I, T)]
+      [CuePartEnd[I] / CueLength CueColour(I, T)]
+    #end
+  }
+#end
+#macro CueSmear(T)
+  average
+  pigment_map {
+    #for (K, 0, dimension_size(StickShift, 1) - 1)
+      [StickShiftWeight[K] CueColours(T) translate StickShift[K] * x]
+    #end
+  }
+#end
+#macro CueSweep(Front, Back)
+  #local Clear = pigment { CueSmear(1) }
+  #local Solid = pigment { CueSmear(0) }
+  #local Cover = pigment { function { min(max(StickCover(x), 0), 1) } pigment_map { [0 Clear] [1 Solid] } }
+  merge {
+    #for (I, 0, CueParts - 1)
+      object { CuePart(I) translate Front * x }
+    #end
+    #if (Back > Front + 1e-6)
+      cylinder { <CueLength + Front, 0, 0>, <CueLength + Back, 0, 0>, CuePartR1[CueParts - 1] }
+    #end
+    texture {
+      function { min(max(x / CueLength, 0), 1) }
+      texture_map {
+        #for (I, 0, CueParts - 1)
+          [max(CuePartStart[I], 0) / CueLength pigment { Cover } CueFinish(I)]
+          [CuePartEnd[I] / CueLength pigment { Cover } CueFinish(I)]
+        #end
+      }
+    }
+    interior_texture { pigment { rgbt 1 } }
+    no_shadow
+  }
+#end
 
 // ---- the room: wide dark oak boards, walls panelled in dark wood to a chair rail with deep red
 // paper above, a dark ceiling; on the walls framed pictures, a cue rack and brass sconces.

@@ -18,12 +18,13 @@ namespace {
 
 std::string sh(const std::string& s) { return bsim::test::quoted(s); }
 
-/// A 6-second shot: 6 frames at 1 fps, 32x18, draft.
+/// A 5-second shot: 10 frames at 2 fps, 32x18, draft; the ball rests from frame 8 on, under a still
+/// camera, so frame 9 is the same as frame 8.
 const char* const kScene =
     "cue 0 0\n"
-    "ball 0 -0.3 0 0.028575  0.4 0 0  1 0 0 0\n"
+    "ball 0 -0.3 0 0.028575  0.15 0 0  1 0 0 0\n"
     "camera\nevent 0 0 0 hover -1.5 -1.2 1.2  0 0 0\nendcamera\n";
-const char* const kOptions = " --size 32x18 --fps 1 --quality draft --quiet";
+const char* const kOptions = " --size 32x18 --fps 2 --quality draft --quiet";
 
 /// A directory with the scene and a stand-in sbatch that records its arguments in sbatch.args and
 /// hands out job ids 41, 42, ...; `refuse` makes it turn every job down.
@@ -41,10 +42,13 @@ struct Farm {
                                         sh((dir.path / "sbatch.args").string()) + ")\necho $((40 + n))\n"));
     fs::permissions(sbatch, fs::perms::owner_all);
   }
-  std::string store = "off";  ///< BSIM_CACHE_DIR
+  std::string store = "off";        ///< BSIM_CACHE_DIR
+  fs::path tmp = dir.path / "tmp";  ///< TMPDIR, where the captured output of sbatch goes
   bsim::test::CommandResult run(const std::string& arguments, bool with_sbatch = true) const {
+    std::error_code ignored;
+    fs::create_directories(tmp, ignored);
     const std::string path = with_sbatch ? "PATH=" + sh((dir.path / "bin").string()) + ":\"$PATH\" " : "";
-    return bsim::test::run_command(path + "BSIM_CACHE_DIR=" + sh(store) + " " +
+    return bsim::test::run_command(path + "BSIM_CACHE_DIR=" + sh(store) + " TMPDIR=" + sh(tmp.string()) + " " +
                                    sh(bsim::test::bin("billiards-export")) + " " + arguments);
   }
   bsim::test::CommandResult submit(const std::string& extra = "") const {
@@ -118,43 +122,63 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(has(refusing.sbatch_args(), "--partition=nowhere"));
     CHECK_FALSE(fs::exists(refusing.out));
     CHECK(bsim::test::leftovers(refusing.dir.path).empty());
+
+    // sbatch's output is captured in $TMPDIR: one that cannot be written is named.
+    Farm no_tmp;
+    no_tmp.tmp = no_tmp.dir.path / "tmp-file";
+    REQUIRE(bsim::test::write_file(no_tmp.tmp, "not a directory"));
+    const bsim::test::CommandResult unwritable =
+        no_tmp.run("--farm slurm -o " + sh(no_tmp.out.string()) + " " + sh(no_tmp.scene) + kOptions);
+    CHECK(unwritable.exit_code == 1);
+    CHECK(has(unwritable.err, "cannot create a temporary file in " + no_tmp.tmp.string()));
+    CHECK_FALSE(fs::exists(no_tmp.out));
   }
 
   TEST_CASE("submitted, the tasks and the movie job run by hand make the local render's movie") {
     for (const char* tool : {"povray", "ffmpeg"}) bsim::test::require_program(tool);
     Farm farm;
-    const bsim::test::CommandResult submitted = farm.submit(" --chunk 2 --sbatch-option=--time=5");
+    const bsim::test::CommandResult submitted = farm.submit(" --chunk 3 --sbatch-option=--time=5");
     REQUIRE_MESSAGE(submitted.exit_code == 0, submitted.err);
-    CHECK(has(submitted.out, "submitted job 41: 3 tasks render 6 of 6 frames, up to 2 a task"));
+    // Frame 9 is frame 8's picture: rendered once.
+    CHECK(has(submitted.out,
+              "submitted job 41: 3 tasks render 9 of 10 frames, up to 3 a task; 1 more frame is the same as one of "
+              "them and is copied"));
     CHECK(has(submitted.out, "submitted job 42: checks every frame"));
     const std::string args = farm.sbatch_args();
     CHECK(has(args, "--array=0-2"));
     CHECK(has(args, "--dependency=afterany:41"));
     CHECK(has(args, "--time=5"));
-    for (const char* file : {"farm/farm.conf", "farm/chunks.txt", "farm/task.sh", "farm/movie.sh",
+    for (const char* file : {"farm/farm.conf", "farm/chunks.txt", "farm/copies.txt", "farm/task.sh", "farm/movie.sh",
                              "farm/billiards-export", "frames/frame_00002.pov", "soundtrack.wav"})
       CHECK_MESSAGE(fs::exists(farm.out / file), file);
-    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "0-1\n2-3\n4-5\n");
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "0-2\n3-5\n6-8\n");
+    CHECK(bsim::test::read_file(farm.out / "farm/copies.txt") == "9 8\n");
     CHECK(has(bsim::test::read_file(farm.out / "farm/farm.conf").value_or(""), "frames_job=41\nmovie_job=42\n"));
 
     const std::string dir = sh(farm.out.string());
-    const bsim::test::CommandResult task = farm.run(dir + " --farm render --frames 0-3", false);
+    const bsim::test::CommandResult task = farm.run(dir + " --farm render --frames 0-5", false);
     CHECK_MESSAGE(task.exit_code == 0, task.err);
     const bsim::test::CommandResult early = farm.run(dir + " --farm assemble", false);
     CHECK(early.exit_code == 1);
     CHECK(has(early.err,
-              "frame 4 (frames/frame_00004.png) was not rendered; see its task's log, "
+              "frame 6 (frames/frame_00006.png) was not rendered; see its task's log, "
               "farm/logs/frames-41_2.log"));
+    CHECK_FALSE(has(early.err, "frame 9 (frames/frame_00009.png)"));  // a copy: counted, not named
+    CHECK(has(early.err, "no movie: 4 of 10 frames are missing"));
     CHECK_FALSE(fs::exists(farm.out / "movie.mp4"));
     const bsim::test::CommandResult status = farm.run(dir + " --farm status", false);
-    CHECK(has(status.out, "4 of 6 frames rendered"));
+    CHECK(has(status.out, "6 of 10 frames rendered"));
 
-    // Submitted again, only the missing frames are rendered.
+    // Submitted again, only the missing frames are rendered; the task that renders frame 8 copies it
+    // to frame 9.
     const bsim::test::CommandResult again = farm.submit();
     REQUIRE_MESSAGE(again.exit_code == 0, again.err);
-    CHECK(has(again.out, "1 task render 2 of 6 frames"));
-    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "4-5\n");
-    CHECK(farm.run(dir + " --farm render --frames 4-5", false).exit_code == 0);
+    CHECK(has(again.out, "1 task render 3 of 10 frames"));
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "6-8\n");
+    CHECK(farm.run(dir + " --farm render --frames 6-8", false).exit_code == 0);
+    CHECK(bsim::test::require_file(farm.out / "frames/frame_00009.png") ==
+          bsim::test::require_file(farm.out / "frames/frame_00008.png"));
+    CHECK(has(farm.run(dir + " --farm status", false).out, "10 of 10 frames rendered"));
     const bsim::test::CommandResult movie = farm.run(dir + " --farm assemble", false);
     REQUIRE_MESSAGE(movie.exit_code == 0, movie.err);
 
@@ -164,6 +188,14 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(bsim::test::require_file(farm.out / "movie.mp4") ==
           bsim::test::require_file(farm.dir.path / "local/movie.mp4"));
     CHECK(bsim::test::leftovers(farm.out).empty());
+    CHECK(fs::is_empty(farm.tmp));
+
+    // A copy gone, its frame there: nothing to render, the copy is made again at once.
+    fs::remove(farm.out / "frames/frame_00009.png");
+    const bsim::test::CommandResult copy = farm.submit();
+    REQUIRE_MESSAGE(copy.exit_code == 0, copy.err);
+    CHECK(has(copy.out, "all 10 frames are rendered already"));
+    CHECK(fs::exists(farm.out / "frames/frame_00009.png"));
 
     // The movie job keeps the frames in the frame store, and a submission takes what the store has.
     farm.store = (farm.dir.path / "store").string();
@@ -171,7 +203,7 @@ TEST_SUITE("rendering on a Slurm cluster") {
     farm.out = farm.dir.path / "elsewhere";
     const bsim::test::CommandResult stored = farm.submit();
     REQUIRE_MESSAGE(stored.exit_code == 0, stored.err);
-    CHECK(has(stored.out, "all 6 frames are rendered already"));
-    CHECK(fs::exists(farm.out / "frames/frame_00005.png"));
+    CHECK(has(stored.out, "all 10 frames are rendered already"));
+    CHECK(fs::exists(farm.out / "frames/frame_00009.png"));
   }
 }

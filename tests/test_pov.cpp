@@ -1,18 +1,20 @@
 // The POV-Ray files: the shared include and a frame match their golden text; balls are placed by
 // their quaternions, dropped balls lie in their pockets (classic: leave the picture), the put-away
-// stick leaves it, fast balls are drawn as blurred copies and slow ones once, the table follows the
-// scene, POV-Ray itself parses what is written for several tables (in both looks), and two renders
-// of one frame are the same picture.
+// stick leaves it, fast balls are drawn as their streaks and slow ones once, a fast stroke's stick is
+// swept along its axis, the table follows the scene, POV-Ray itself parses what is written for
+// several tables (in both looks), and two renders of one frame are the same picture.
 //
 // After an intended change to the models, regenerate the golden files (with every other) with
 //   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <sstream>
 
+#include "cue_pose.h"
 #include "files.h"
 #include "frames.h"
 #include "golden.h"
@@ -217,6 +219,130 @@ TEST_SUITE("pov") {
     CHECK(streak_cover(0, 0, kStreakLeast, 0.25 / kStreakLeast, r) == doctest::Approx(0.25));
   }
 
+  TEST_CASE("a fast stroke's stick is one stick swept along its axis, with an unseen stick for its shadow") {
+    const auto shot = load(kTinyScene);
+    const int strike = static_cast<int>(std::lround(shot->timeline.cue_time() * 30));
+    int swept = -1;
+    for (int k = strike - 3; k <= strike + 1 && swept < 0; ++k)
+      if (frame_text(*shot, k).find("CueSweep(") != std::string::npos) swept = k;
+    REQUIRE(swept >= 0);
+    const std::string text = frame_text(*shot, swept);
+    CHECK(text.find("#declare StickCover = function(X) { StickPiece(X, ") != std::string::npos);
+    CHECK(text.find("object { CueShadow matrix <") != std::string::npos);
+    CHECK(text.find("// blurred: swept along its axis") != std::string::npos);
+    CHECK(text.find("CueStickT") == std::string::npos);  // no copies
+    CHECK(blur_samples(*shot, swept, 30) >= 2);
+    // The classic look draws the stick once, as it is at the frame's instant.
+    const std::string classic = frame_text(*shot, swept, 30, Look::classic);
+    CHECK(classic.find("CueSweep") == std::string::npos);
+    CHECK(classic.find("object { CueStick matrix") != std::string::npos);
+  }
+
+  TEST_CASE("a swept stick lets through what a box filter over the shutter would") {
+    const double length = kCueLength;
+    // An even stroke 0.1 m forward (towards -x along the axis): one piece; solid between the ends'
+    // travels, each end fading linearly over its 0.1 m.
+    std::vector<double> even;
+    for (int k = 0; k <= 16; ++k) even.push_back(0.05 - 0.1 * k / 16);
+    const std::vector<StickTravel> stroke = stick_travel(even);
+    REQUIRE(stroke.size() == 1);
+    CHECK(stroke[0].share == doctest::Approx(1));
+    CHECK(stick_cover(-0.051, stroke, length) == 0);
+    CHECK(stick_cover(-0.025, stroke, length) == doctest::Approx(0.25));
+    CHECK(stick_cover(0.0, stroke, length) == doctest::Approx(0.5));
+    CHECK(stick_cover(0.04, stroke, length) == doctest::Approx(0.9));
+    for (double a : {0.051, 0.7, length - 0.051}) CHECK(stick_cover(a, stroke, length) == doctest::Approx(1));
+    CHECK(stick_cover(length - 0.025, stroke, length) == doctest::Approx(0.75));
+    CHECK(stick_cover(length + 0.025, stroke, length) == doctest::Approx(0.25));
+    CHECK(stick_cover(length + 0.051, stroke, length) == 0);
+
+    // The tip comes forward 0.08 m in the first half of the shutter and rests on the ball in the
+    // second: the tip's resting place is covered half the time, and ahead of it nothing.
+    const std::vector<StickTravel> stop = stick_travel({0.08, 0.06, 0.04, 0.02, 0.0, 0.0, 0.0, 0.0, 0.0});
+    REQUIRE(stop.size() == 2);
+    CHECK(stick_cover(-0.001, stop, length) == 0);
+    CHECK(stick_cover(0.0005, stop, length) == doctest::Approx(0.5 + 0.5 * 0.0005 / 0.08));
+    CHECK(stick_cover(0.04, stop, length) == doctest::Approx(0.75));
+    CHECK(stick_cover(0.09, stop, length) == doctest::Approx(1));
+    // Forward and back again: the front-most place is passed twice, briefly.
+    const std::vector<StickTravel> back = stick_travel({0.04, 0.02, 0.0, 0.02, 0.04});
+    REQUIRE(back.size() == 2);
+    CHECK(stick_cover(0.01, back, length) == doctest::Approx(0.25));
+    CHECK(stick_cover(length + 0.03, back, length) == doctest::Approx(0.25));
+
+    // At rest: the plain stick, solid from its tip to its butt.
+    const std::vector<StickTravel> still = stick_travel(std::vector<double>(17, 0.0));
+    REQUIRE(still.size() == 1);
+    CHECK(stick_cover(-1e-3, still, length) == 0);
+    CHECK(stick_cover(2 * kStreakLeast, still, length) == 1);
+    CHECK(stick_cover(length - 1e-3, still, length) == 1);
+    CHECK(stick_cover(length + 2 * kStreakLeast, still, length) == 0);
+
+    // However it moves, its opacity along the axis adds up to one stick's length: as much stick as a
+    // still one, spread along its way.
+    const std::vector<double> accelerating = {0.1, 0.098, 0.092, 0.082, 0.068, 0.05, 0.028, 0.002, -0.028};
+    for (const std::vector<StickTravel>& pieces :
+         {stroke, stop, back, still, stick_travel(accelerating), std::vector<StickTravel>{{0.02, -0.03, 0.5}}}) {
+      const double step = 1e-4;
+      double sum = 0;
+      for (double a = -0.2; a < length + 0.2; a += step) sum += stick_cover(a + step / 2, pieces, length) * step;
+      double shares = 0;
+      for (const StickTravel& piece : pieces) shares += piece.share;
+      CHECK(sum == doctest::Approx(shares * length).epsilon(1e-3));
+    }
+  }
+
+  TEST_CASE("POV-Ray's StickCover of a swept stick is the C++ stick_cover of its pieces") {
+    test::require_program("povray");
+    const auto shot = load(kTinyScene);
+    const int strike = static_cast<int>(std::lround(shot->timeline.cue_time() * 30));
+    const std::string text = frame_text(*shot, strike);
+    const std::size_t start = text.find("#declare StickCover");
+    REQUIRE(start != std::string::npos);
+    const std::string cover = text.substr(start, text.find('\n', start) - start);
+    // The pieces as the frame writes them (to the micrometre).
+    std::vector<StickTravel> pieces;
+    for (std::size_t at = cover.find("StickPiece(X, "); at != std::string::npos;
+         at = cover.find("StickPiece(X, ", at + 1)) {
+      std::istringstream terms(cover.substr(at + std::string("StickPiece(X, ").size()));
+      StickTravel piece;
+      char comma = 0;
+      terms >> piece.from >> comma >> piece.to >> comma >> piece.share;
+      pieces.push_back(piece);
+    }
+    REQUIRE(pieces.size() >= 2);  // the tip meets the ball in this frame: not an even stroke
+    double front = 0, back = 0;
+    for (const StickTravel& piece : pieces) {
+      front = std::min({front, piece.from, piece.to});
+      back = std::max({back, piece.from, piece.to});
+    }
+    std::vector<double> xs;
+    for (int i = 0; i <= 40; ++i) xs.push_back(front - 0.01 + (back - front + 0.02) * i / 40);
+    for (int i = 0; i <= 40; ++i) xs.push_back(kCueLength + front - 0.01 + (back - front + 0.02) * i / 40);
+    test::TempDir dir;
+    std::ostringstream include;
+    write_pov_include(shot->scene, Quality::draft, include);
+    REQUIRE(test::write_file(dir.path / std::string(kPovIncludeName), include.str()));
+    std::string probe = "#version 3.7;\n#include \"" + std::string(kPovIncludeName) + "\"\n" + cover + "\n";
+    for (double x : xs) probe += "#debug concat(\"cover \", str(StickCover(" + pov_number(x) + "), 0, 9), \"\\n\")\n";
+    REQUIRE(test::write_file(dir.path / "probe.pov", probe));
+    const test::CommandResult r =
+        test::run_command("cd '" + dir.path.string() + "' && povray -D +FN +WT1 +Iprobe.pov +Oprobe.png +W1 +H1");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    std::istringstream lines(r.err);
+    std::size_t i = 0, fading = 0;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("cover ", 0) != 0) continue;
+      REQUIRE(i < xs.size());
+      const double expected = stick_cover(std::stod(pov_number(xs[i])), pieces, kCueLength);
+      CHECK(std::stod(line.substr(6)) == doctest::Approx(expected).epsilon(1e-6));
+      fading += expected > 0.05 && expected < 0.95;
+      ++i;
+    }
+    CHECK(i == xs.size());
+    CHECK(fading > 20);  // the probes lie along both ends' fades
+  }
+
   TEST_CASE("two renders of one frame are the same picture") {
     test::require_program("povray");
     const auto shot = load(kTinyScene);
@@ -248,6 +374,16 @@ TEST_SUITE("pov") {
       const test::CommandResult r = render_tiny(*shot, dir.path, {0, strike - 10, strike + 3, last});
       CHECK_MESSAGE(r.exit_code == 0, r.out);
       for (int k : {0, strike - 10, strike + 3, last}) CHECK(fs::file_size(dir.path / (frame_name(k) + ".png")) > 0);
+    }
+    // A fast stroke's swept stick parses and renders.
+    {
+      const auto shot = load(kTinyScene);
+      const int strike = static_cast<int>(std::lround(shot->timeline.cue_time() * 30));
+      test::TempDir dir;
+      const test::CommandResult r = render_tiny(*shot, dir.path, {strike - 1, strike});
+      CHECK_MESSAGE(r.exit_code == 0, r.out);
+      CHECK(test::read_file(dir.path / (frame_name(strike) + ".pov")).value_or("").find("CueSweep(") !=
+            std::string::npos);
     }
     // The classic look, kept for the render benchmark, still parses too.
     const auto shot = load(kPocketScene);

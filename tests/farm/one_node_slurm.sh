@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `billiards-export --farm slurm` on a real Slurm: starts a one-node cluster on this machine (munged,
 # slurmctld and slurmd in the background with a config in a temporary directory, no systemd), renders
-# a tiny movie through it and compares it byte for byte with a local render; then resubmits after
-# frames went missing, and checks that a frame failing its retries fails the movie job with a message
+# a tiny movie through it (a frame the same as the one before rendered once and copied) and compares
+# it byte for byte with a local render; then resubmits after frames went missing, and checks that a frame failing its retries fails the movie job with a message
 # naming the frame while the frames done are kept. The daemons it started are stopped by their process
 # ids however the test ends.
 #   bash tests/farm/one_node_slurm.sh BILLIARDS_EXPORT
@@ -182,10 +182,10 @@ done
 [ "$state" = idle ] || fail "the Slurm node did not become idle in 5 minutes (state: '$state')"
 [ "$mode" = start ] && exit 0
 
-# A short shot (6 s): 12 tiny frames at 2 fps.
+# A short shot (5 s): 10 tiny frames at 2 fps; the balls rest from frame 8 on, so frame 9 is frame 8.
 cat >"$t/shot.scn" <<'EOF'
 cue 0 0
-ball 0 -0.3 0 0.028575  0.4 0 0  1 0 0 0
+ball 0 -0.3 0 0.028575  0.15 0 0  1 0 0 0
 ball 9  0.2 0.05 0.028575  0 0 0  1 0 0 0
 camera
 event 0 0 0 hover -1.5 -1.2 1.2  0 0 0
@@ -215,19 +215,23 @@ same_movie() {
   cmp "$t/local/movie.mp4" "$t/farm/movie.mp4" || fail "$1: the farm's movie differs from the local render"
 }
 
-echo "1. the whole movie on the farm, in chunks of 4 frames"
-movie=$(submit --chunk 4 --sbatch-option=--time=10)
+echo "1. the whole movie on the farm, in chunks of 3 frames, frame 9 copied from frame 8"
+movie=$(submit --chunk 3 --sbatch-option=--time=10 2>"$t/submit.txt")
 [ -n "$movie" ] || fail "no movie job id printed"
-[ "$(wc -l <"$t/farm/farm/chunks.txt")" -eq 3 ] || fail "12 frames in chunks of 4 should be 3 tasks"
+grep -q "render 9 of 10 frames, up to 3 a task; 1 more frame is the same" "$t/submit.txt" ||
+  fail "frame 9, the same as frame 8, should not be rendered"
+[ "$(wc -l <"$t/farm/farm/chunks.txt")" -eq 3 ] || fail "9 frames in chunks of 3 should be 3 tasks"
 [ "$(finish "$movie")" = COMPLETED ] || fail "the movie job did not complete"
 same_movie "first submission"
 "$export_bin" "$t/farm" --farm status | tee "$t/status.txt"
-grep -q "12 of 12 frames rendered" "$t/status.txt" || fail "status does not count the frames"
+grep -q "10 of 10 frames rendered" "$t/status.txt" || fail "status does not count the frames"
+[ "$(cat "$t"/farm/farm/logs/frames-*.log | grep -c "frame 8 rendered")" -eq 1 ] || fail "frame 8 was not rendered once"
+! grep -q "frame 9 rendered" "$t"/farm/farm/logs/frames-*.log || fail "frame 9, a copy, was rendered"
 
-echo "2. two frames gone: the same command renders only those"
-rm "$t/farm/frames/frame_00005.png" "$t/farm/frames/frame_00006.png"
+echo "2. three frames gone: the same command renders only frames 5 and 8, and copies 8 to 9"
+rm "$t/farm/frames/frame_00005.png" "$t/farm/frames/frame_00008.png" "$t/farm/frames/frame_00009.png"
 movie=$(submit 2>"$t/submit.txt")
-grep -q "render 2 of 12 frames" "$t/submit.txt" || fail "the resubmission does not render just the 2 missing frames"
+grep -q "render 2 of 10 frames" "$t/submit.txt" || fail "the resubmission does not render just the 2 missing frames"
 [ "$(finish "$movie")" = COMPLETED ] || fail "the second movie job did not complete"
 same_movie "resubmission"
 
@@ -248,7 +252,7 @@ grep -q "attempt 3 of 3" "$t"/farm/farm/logs/frames-*.log || fail "the task did 
 [ -s "$t/farm/frames/frame_00007.png" ] || fail "frame 7, in the failed frame's chunk, was not rendered"
 [ ! -e "$t/farm/movie.mp4" ] || fail "a movie is there without all its frames"
 movie=$(submit 2>"$t/submit.txt")
-grep -q "render 1 of 12 frames" "$t/submit.txt" || fail "the next submission should render only frame 3"
+grep -q "render 1 of 10 frames" "$t/submit.txt" || fail "the next submission should render only frame 3"
 [ "$(finish "$movie")" = COMPLETED ] || fail "the movie job after the repair did not complete"
 same_movie "after the failed frame"
 
