@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   }
   if (!loaded.shot) return 1;
   if (options.write_camera) {
-    const int status = bsim::run_write_camera(*options.write_camera, *loaded.shot);
+    const int status = bsim::run_write_camera(*options.write_camera, *loaded.shot, options.quiet);
     if (status != 0 || !pictures) return status;
   }
   if (!options.at.empty()) return bsim::run_snapshot(options, *loaded.shot);

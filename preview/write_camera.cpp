@@ -8,7 +8,7 @@
 
 namespace bsim {
 
-int run_write_camera(const std::string& path, const Shot& shot) {
+int run_write_camera(const std::string& path, const Shot& shot, bool quiet) {
   // The script the shot was loaded with (--write-camera implies --camera auto), else written now.
   const std::string text =
       camera_script_text(shot.directed ? *shot.directed : direct_camera(shot.scene, shot.timeline), shot.scene.name);
@@ -21,7 +21,7 @@ int run_write_camera(const std::string& path, const Shot& shot) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
   }
-  std::cerr << "wrote " << path << "\n";
+  if (!quiet) std::cerr << "wrote " << path << "\n";
   return 0;
 }
 

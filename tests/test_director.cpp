@@ -327,6 +327,11 @@ TEST_SUITE("director") {
     CHECK(written.err == "wrote " + file + "\n");
     CHECK(test::require_file(file) == out.out);
     CHECK(test::leftovers(tmp.path).empty());
+    // --quiet: the file, and no closing line.
+    const test::CommandResult quiet = test::run_command(preview + " --quiet --write-camera " + quoted(file));
+    CHECK(quiet.exit_code == 0);
+    CHECK(quiet.err.empty());
+    CHECK(test::require_file(file) == out.out);
     // With a picture: the script first, then the timeline of the director's camera.
     const std::string both = (tmp.path / "both.txt").string(), picture = (tmp.path / "timeline.png").string();
     const test::CommandResult timeline =
