@@ -54,7 +54,7 @@ bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& opti
           stage, "camera.csv", [&](std::ostream& o) { bsim::write_camera_csv(shot, options.fps, o); }, error))
     return RunOutcome::failed;
   if (options.events_only) return RunOutcome::done;
-  if (!bsim::write_frames_and_sound(shot, options, stage, error)) return RunOutcome::failed;
+  if (!bsim::write_frames_and_sound(shot, options, stage, summary, error)) return RunOutcome::failed;
   summary.writing = bsim::seconds_since(start);
   if (bsim::InterruptGuard::interrupted()) return RunOutcome::interrupted;
   summary.frames_total = bsim::frame_count(shot.timeline.duration(), options.fps);

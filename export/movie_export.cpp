@@ -16,6 +16,7 @@
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
 #include "frames.h"
+#include "loudness.h"
 #include "output_stage.h"
 #include "pov_frame.h"
 #include "pov_table.h"
@@ -128,7 +129,7 @@ std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int f
 }
 
 bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
-                            std::string& error) {
+                            RunSummary& summary, std::string& error) {
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(stage.path("frames/x")).parent_path(), ec);
   if (ec) {
@@ -154,6 +155,8 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
                       {.lead = options.audio_lead, .music_path = options.music_path, .loudness = options.loudness},
                       samples, audio, error))
     return false;
+  summary.loudness_lufs = integrated_loudness(audio);
+  summary.true_peak_dbtp = to_db(true_peak(audio));
   return write_wav(stage.path("soundtrack.wav"), audio, error);
 }
 

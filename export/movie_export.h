@@ -7,12 +7,12 @@
 
 #include "export_options.h"
 #include "render_jobs.h"
+#include "run_summary.h"
 
 namespace bsim {
 
 struct Shot;
 class OutputStage;
-struct RunSummary;
 
 /// The programs a run needs, found on PATH before any work starts.
 struct RunPrograms {
@@ -25,8 +25,9 @@ struct RunPrograms {
 bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std::string& error);
 
 /// Writes frames/*.pov (and the shared include) and soundtrack.wav into the stage.
+/// `summary` gets the sound track's measured loudness.
 bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
-                            std::string& error);
+                            RunSummary& summary, std::string& error);
 
 /// The frame store's key (frame_cache.h) of each of the `frames` frames written into `frames_dir`
 /// (their .pov text without comments, the shared include, the size and the quality).

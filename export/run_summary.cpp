@@ -40,6 +40,13 @@ std::string seconds(double s) {
   return text;
 }
 
+/// Decibels to a hundredth.
+std::string decibels(double db) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", db);
+  return text;
+}
+
 /// Every top-level file with its size; each folder as its count of files and their bytes.
 std::string files_json(const std::string& dir) {
   struct Item {
@@ -119,6 +126,8 @@ bool write_run_summary(const RunSummary& s, const ExportOptions& o, const std::s
       << "  \"seconds\": {\"simulating\": " << seconds(s.simulating) << ", \"writing\": " << seconds(s.writing)
       << ", \"rendering\": " << seconds(s.rendering) << ", \"encoding\": " << seconds(s.encoding)
       << ", \"total\": " << seconds(total) << "},\n"
+      << "  \"sound\": {\"loudness_lufs\": " << (s.loudness_lufs ? decibels(*s.loudness_lufs) : std::string("null"))
+      << ", \"true_peak_dbtp\": " << decibels(s.true_peak_dbtp) << "},\n"
       << "  \"tools\": {\"povray\": " << json_string(s.povray_version)
       << ", \"ffmpeg\": " << json_string(s.ffmpeg_version) << "},\n"
       << "  \"files\": " << files_json(staged_dir) << "\n"

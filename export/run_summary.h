@@ -3,6 +3,7 @@
 // directory later: the scene and options, how many frames were rendered and how many reused, where
 // the time went, which POV-Ray and ffmpeg made the pictures and the movie, and every file written.
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "export_options.h"
@@ -16,12 +17,16 @@ struct RunSummary {
   std::string scene;   ///< the scene's path as given, or "<built-in break.scn>"
   std::string output;  ///< the output directory as given
   int frames_total = 0;
-  int frames_rendered = 0;     ///< by POV-Ray in this run
-  int frames_reused = 0;       ///< copied from the frame store or from an identical frame of this run
-  double simulating = 0;       ///< s: reading the scene, simulating, scripting the camera and stick
-  double writing = 0;          ///< s: the data files, the frames' .pov files and the sound track
-  double rendering = 0;        ///< s inside POV-Ray (wall time)
-  double encoding = 0;         ///< s inside ffmpeg (wall time)
+  int frames_rendered = 0;  ///< by POV-Ray in this run
+  int frames_reused = 0;    ///< copied from the frame store or from an identical frame of this run
+  double simulating = 0;    ///< s: reading the scene, simulating, scripting the camera and stick
+  double writing = 0;       ///< s: the data files, the frames' .pov files and the sound track
+  double rendering = 0;     ///< s inside POV-Ray (wall time)
+  double encoding = 0;      ///< s inside ffmpeg (wall time)
+  /// The sound track as written, measured (ITU-R BS.1770-4): integrated loudness in LUFS (none for a
+  /// track too quiet to gate) and true peak in dBTP.
+  std::optional<double> loudness_lufs;
+  double true_peak_dbtp = 0;
   std::string povray_version;  ///< first line of `povray --version`; empty when not rendering
   std::string ffmpeg_version;  ///< first line of `ffmpeg -version`
 };

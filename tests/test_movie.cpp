@@ -99,6 +99,12 @@ TEST_SUITE("movie") {
     CHECK(json_number(summary, "total") == frames);
     CHECK(rendered + json_number(summary, "reused") == frames);
     CHECK(rendered < frames);
+    // The sound track as measured: at the default target loudness, under the limiter's ceiling.
+    std::smatch sound;
+    REQUIRE(std::regex_search(
+        summary, sound, std::regex(R"("sound": \{"loudness_lufs": (-?[0-9.]+), "true_peak_dbtp": (-?[0-9.]+)\})")));
+    CHECK(std::stod(sound[1]) == doctest::Approx(-16.0).epsilon(0.02));
+    CHECK(std::stod(sound[2]) <= -1.0);
 
     // The same again: nothing to render, every picture from the store, the same bytes.
     const std::string first_picture = test::require_file(out / "frames" / "frame_00000.png");

@@ -207,7 +207,8 @@ int main(int argc, char** argv) {
   bsim::OutputStage stage;
   std::string error;
   start = Clock::now();
-  if (!stage.open(dir.string(), error) || !bsim::write_frames_and_sound(*loaded.shot, options, stage, error) ||
+  bsim::RunSummary written;
+  if (!stage.open(dir.string(), error) || !bsim::write_frames_and_sound(*loaded.shot, options, stage, written, error) ||
       !stage.commit(error)) {
     std::fprintf(stderr, "render_bench: %s\n", error.c_str());
     return 1;
