@@ -197,8 +197,8 @@ constexpr std::string_view kCushionsAndRails =
   #end
 }
 // The leather lining pocket I: the throat through the wood, and below the slate the cup with its
-// floor at FloorZ; where the throat leaves the wood's top the leather rolls over the edge in a round
-// bead (PocketRoll), the wood's rounded cut.
+// floor at FloorZ (PocketLiner); where the throat leaves the wood's top the leather rolls over the
+// edge in a round bead (PocketRoll), the wood's rounded cut.
 #declare RollR = 0.004;  // m, the bead's radius; it stands 1.5 mm proud of the wood
 #macro PocketRoll(I)
   #local Z = RailTopZ + 0.0015 - RollR;
@@ -236,7 +236,6 @@ constexpr std::string_view kCushionsAndRails =
     Hole(I, 0, FloorZ, -SlateDepth + Eps / 2)
     object { InsideWood }
   }
-  PocketRoll(I)
 #end
 
 #declare OuterMin = InnerMin - <RailW, RailW>;
@@ -299,16 +298,24 @@ constexpr std::string_view kCushionsAndRails =
 constexpr std::string_view kModelsTail =
     R"pov(// ---- pockets: a leather liner lines each throat through the wood, and below the slate a leather cup
 // (a drop pocket) holds the pocketed balls PocketDepth below the bed, where the physics leaves them,
-// so a ball is seen to drop in and to lie there. The cup's leather is a warm brown with a soft sheen,
-// so the lamp's light that falls into the hole shows its inside.
+// so a ball is seen to drop in and to lie there. Pocket leather is near black with a faint grain; the
+// bead it rolls over the wood's edge is polished by hands and balls, so its highlight outlines the
+// opening.
 #declare T_PocketLeather = texture {
-  pigment { srgb <0.16, 0.085, 0.045> }
-  normal { granite 0.08 scale 0.006 }
-  finish { diffuse 0.7 specular 0.08 roughness 0.03 }
+  pigment { srgb <0.065, 0.038, 0.024> }
+  normal { granite 0.06 scale 0.006 }
+  finish { diffuse 0.7 specular 0.05 roughness 0.03 }
+}
+#declare T_PocketBead = texture {
+  pigment { srgb <0.075, 0.044, 0.028> }
+  finish { diffuse 0.65 specular 0.35 roughness 0.006 }
 }
 #declare Liners = union {
   sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketLiner(I, CupFloorZ) #end
+  #for (I, 0, PocketCount - 1)
+    PocketLiner(I, CupFloorZ)
+    object { PocketRoll(I) texture { T_PocketBead } }
+  #end
   texture { T_PocketLeather }
 }
 

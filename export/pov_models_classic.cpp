@@ -58,7 +58,7 @@ constexpr std::string_view kClassicTail =
 // (the same pockets as the photographic look's); the cushions' jaws stay cloth, as on a real table.
 #declare Liners = union {
   sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketLiner(I, CupFloorZ) #end
+  #for (I, 0, PocketCount - 1) PocketLiner(I, CupFloorZ) PocketRoll(I) #end
   texture { T_Liner }
 }
 

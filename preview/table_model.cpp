@@ -25,7 +25,7 @@ Vec3 wood_color() { return srgb(96, 42, 18); }
 Vec3 apron_color() { return srgb(70, 30, 14); }
 Vec3 liner_color() { return srgb(22, 18, 16); }
 Vec3 hole_color() { return srgb(6, 6, 6); }
-Vec3 pocket_color() { return srgb(41, 22, 11); }  // the cup's brown leather, as POV-Ray's
+Vec3 pocket_color() { return srgb(17, 10, 6); }  // the near-black pocket leather, as POV-Ray's
 Vec3 sight_color() { return srgb(236, 228, 206); }
 
 using Bounds = TableRect;
