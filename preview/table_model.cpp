@@ -139,11 +139,19 @@ void add_pocket(MeshData& mesh, const PocketMouth& m, const Bounds& wood_inner, 
       const Vec3& p = outline[k];
       const Vec3& q = outline[(k + 1) % outline.size()];
       const Vec3 mid = (p + q) / 2;
-      if (throat ? (mid - m.centre).norm() < m.drop_radius - 1e-9 : m.in_throat(mid, -1e-9)) continue;
       if (throat && m.jawed() && k + 1 == outline.size()) continue;  // the mouth: open
+      // Below the bed only the outline of throat and drop circle together; above it the throat's
+      // liner, where it runs through the wood. A piece is left out only when it lies well inside the
+      // other shape: where the two outlines touch, both are drawn.
+      constexpr double kWell = 0.001;  // m
+      if (!throat && m.in_throat(p, -kWell) && m.in_throat(q, -kWell)) continue;
+      const bool in_circle =
+          (p - m.centre).norm() < m.drop_radius - kWell && (q - m.centre).norm() < m.drop_radius - kWell;
+      const double low = throat && in_circle ? 0 : -kPocketDepth;
       const double high = throat && !inside_wood(mid) ? top : 0;
-      mesh.add_quad(p + Vec3(0, 0, -kPocketDepth), q + Vec3(0, 0, -kPocketDepth), q + Vec3(0, 0, high),
-                    p + Vec3(0, 0, high), pocket_color());
+      if (high <= low) continue;
+      mesh.add_quad(p + Vec3(0, 0, low), q + Vec3(0, 0, low), q + Vec3(0, 0, high), p + Vec3(0, 0, high),
+                    pocket_color());
     }
   };
   walls(throat_outline(m, 0, 0), true);
