@@ -298,13 +298,17 @@ constexpr std::string_view kCushionsAndRails =
 constexpr std::string_view kModelsTail =
     R"pov(// ---- pockets: a leather liner lines each throat through the wood, and below the slate a leather cup
 // (a drop pocket) holds the pocketed balls PocketDepth below the bed, where the physics leaves them,
-// so a ball is seen to drop in and to lie there. Pocket leather is near black with a faint grain; the
-// bead it rolls over the wood's edge is polished by hands and balls, so its highlight outlines the
-// opening.
+// so a ball is seen to drop in and to lie there. The liner is near-black leather with a faint grain,
+// so the opening reads dark from across the room; the cup below the slate is a warmer brown, so the
+// lamp's light that falls through the hole shows its inside and a ball lying in it. The bead the
+// liner rolls over the wood's edge is polished by hands and balls: its highlight outlines the opening.
 #declare T_PocketLeather = texture {
-  pigment { srgb <0.065, 0.038, 0.024> }
-  normal { granite 0.06 scale 0.006 }
-  finish { diffuse 0.7 specular 0.05 roughness 0.03 }
+  gradient z
+  texture_map {
+    [0.5 pigment { srgb <0.18, 0.09, 0.04> } normal { granite 0.03 scale 0.006 } finish { diffuse 0.7 specular 0.04 roughness 0.04 }]
+    [0.5 pigment { srgb <0.065, 0.038, 0.024> } normal { granite 0.06 scale 0.006 } finish { diffuse 0.7 specular 0.05 roughness 0.03 }]
+  }
+  translate -z * (0.5 + SlateDepth)  // the cup's brown below the slate's underside, the liner's black above
 }
 #declare T_PocketBead = texture {
   pigment { srgb <0.075, 0.044, 0.028> }
