@@ -1,7 +1,9 @@
 // The fixed POV-Ray models of the shared include, the photographic look. They read the numbers
-// write_pov_include puts before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/
-// PocketOut/PocketStretch, NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW,
-// CushionUndercut, CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX),
+// write_pov_include puts before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR,
+// NoseMin/NoseMax, Final), from the table description (CushionW, CushionUndercut, CushionTopZ, RailW,
+// RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX; the pockets' jaws, throats and liner:
+// RailSlantA/RailSlantB, PocketJawed, JawNose0/1, JawIn0/1, PocketAxis, ThroatC/ThroatR/ThroatT0/1,
+// PocketLinerT, PocketLipR),
 // from the physics (PocketDepth: how deep a pocketed ball rests), from the room description
 // (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls' colours
 // (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident faces make POV-Ray pick
@@ -98,14 +100,19 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 // The cushions, the wooden rail and its sights: one model for both looks.
 constexpr std::string_view kCushionsAndRails =
     R"pov(// ---- cushions: a nose profile (K-66-like, nose at the rail's height) swept along each nose line,
-// on the right of A->B seen from above, reaching back into the wood; the pockets cut its jaws.
-#macro Cushion(A, B, H)
-  #local D = vnormalize(B - A);
-  #local L = vlength(B - A);
+// on the right of A->B seen from above, reaching back into the wood and on past each nose end: a
+// square end by its width (mitred by the next cushion), a jaw as far as its facing runs on (RailSlantA/
+// RailSlantB per metre behind the nose) before CushionCuts cut it.
+#macro CushionExt(Slant) (Slant < 0 ? CushionW : Slant * (CushionW + 0.012) + 0.005) #end
+#macro Cushion(I)
+  #local A = RailA[I];
+  #local H = RailH[I];
+  #local D = vnormalize(RailB[I] - A);
+  #local L = vlength(RailB[I] - A);
   #local N = <-D.v, D.u>;
   #local Top = CushionTopZ;
   prism {
-    linear_sweep linear_spline -CushionW, L + CushionW, 11,
+    linear_sweep linear_spline -CushionExt(RailSlantA[I]), L + CushionExt(RailSlantB[I]), 11,
     <CushionUndercut, -Eps>, <0.0055, H * 0.52>, <0.0012, H * 0.85>, <0.0, H>, <0.0006, H + 0.0016>,
     <0.0035, H + 0.0034>, <0.015, H + 0.35 * (Top - H)>, <CushionW, Top>,
     <CushionW + 0.012, Top>, <CushionW + 0.012, -Eps>, <CushionUndercut, -Eps>
@@ -113,43 +120,131 @@ constexpr std::string_view kCushionsAndRails =
   }
 #end
 
-// ---- pockets: the drop circle, stretched outward along PocketOut so the cut reaches into the rail.
-#macro PocketCut(I, Grow, Z0, Z1)
-  #local C = PocketC[I];
-  #local O = PocketOut[I];
-  #local R = PocketR[I] + Grow;
-  #local S = PocketStretch[I];
-  #local C2 = C + O * S;
+// ---- pockets, from the table description's pocket mouths: each jawed pocket's two cushions end
+// at their nose ends (JawNose0/1) and are cut, with the wood behind them, along facings at the WPA
+// angle (JawIn0/1: each facing's normal into the opening); the throat between the facings closes in
+// a round back (ThroatC, ThroatR, touching the facings at ThroatT0/1). A bare pocket (no jaws) opens
+// on its drop circle. Throat(I, Grow, Z0, Z1): that opening grown by Grow, from Z0 up to Z1.
+#macro Throat(I, Grow, Z0, Z1)
+  #if (PocketJawed[I])
+    #local F0 = ThroatT0[I] - JawNose0[I];
+    #local F1 = ThroatT1[I] - JawNose1[I];
+    #local N0 = JawNose0[I] - JawIn0[I] * Grow - F0 * (Grow / vlength(F0));
+    #local N1 = JawNose1[I] - JawIn1[I] * Grow - F1 * (Grow / vlength(F1));
+    #local T0 = ThroatT0[I] - JawIn0[I] * Grow;
+    #local T1 = ThroatT1[I] - JawIn1[I] * Grow;
+    union {
+      cylinder { <ThroatC[I].u, ThroatC[I].v, Z0>, <ThroatC[I].u, ThroatC[I].v, Z1>, ThroatR[I] + Grow }
+      prism { linear_sweep linear_spline -Z1, -Z0, 5, N0, T0, T1, N1, N0 rotate -x * 90 }
+    }
+  #else
+    cylinder { <PocketC[I].u, PocketC[I].v, Z0>, <PocketC[I].u, PocketC[I].v, Z1>, PocketR[I] + Grow }
+  #end
+#end
+// The hole through the slate and the cup below: the throat and the physics' drop circle together.
+#macro Hole(I, Grow, Z0, Z1)
   union {
-    cylinder { <C.u, C.v, Z0>, <C.u, C.v, Z1>, R }
-    #if (S > 0)
-      cylinder { <C2.u, C2.v, Z0>, <C2.u, C2.v, Z1>, R }
-      box { <0, -R, Z0>, <S, R, Z1> matrix <O.u, O.v, 0, -O.v, O.u, 0, 0, 0, 1, C.u, C.v, 0> }
-    #end
+    Throat(I, Grow, Z0, Z1)
+    cylinder { <PocketC[I].u, PocketC[I].v, Z0>, <PocketC[I].u, PocketC[I].v, Z1>, PocketR[I] + Grow }
   }
 #end
-// The exact drop circle at the bed; the rails and cushions are cut back under the liner.
-#declare PocketHoles = union {
-  sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketCut(I, 0, -1, 1) #end
-}
-#declare PocketCuts = union {
-  sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1) PocketCut(I, LinerT / 2, -1, 1) #end
-}
-// The playing area inside the noses, down to below the slate: the liner shows only outside it.
-#if (PlayHullCount >= 3)
-  #declare PlayArea = prism {
-    linear_sweep linear_spline -1, SlateDepth + Eps, PlayHullCount + 1,
-    #for (I, 0, PlayHullCount - 1) PlayHull[I], #end PlayHull[0]
-    rotate -x * 90
-  }
-#else
-  #declare PlayArea = box { <NoseMin.u, NoseMin.v, -SlateDepth - Eps>, <NoseMax.u, NoseMax.v, 1> }
+// A box round all of pocket I's opening, grown by Grow, from Z0 to Z1: each pocket's cutter is
+// bounded by it, so a ray far from a pocket tests one box instead of the pocket's shapes (POV-Ray
+// bounds no object inside a CSG by itself).
+#macro PocketBound(I, Grow, Z0, Z1)
+  #local C = PocketC[I];
+  #local D = max(PocketR[I], vlength(ThroatC[I] - C) + ThroatR[I]);
+  #if (PocketJawed[I])
+    #local D = max(D, vlength(JawNose0[I] - C), vlength(JawNose1[I] - C));
+  #end
+  #local D = D + Grow + 0.01;
+  bounded_by { box { <C.u - D, C.v - D, Z0 - Eps>, <C.u + D, C.v + D, Z1 + Eps> } }
 #end
-
 #declare InnerMin = NoseMin - <CushionW, CushionW>;
 #declare InnerMax = NoseMax + <CushionW, CushionW>;
+// Inside the wood, above the slate's underside: where no liner lies (the facings there are cloth).
+#declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth + Eps>, <InnerMax.u, InnerMax.v, 1> }
+#declare OutsideWood = box { <InnerMin.u, InnerMin.v, -2>, <InnerMax.u, InnerMax.v, 2> inverse }
+// A pocketed ball rests PocketDepth below the bed on the cup's leather floor.
+#declare CupFloorZ = -PocketDepth - 0.0005;
+// The slate: the hole, its edge rounded (PocketLipR) where the cloth wraps over it into the drop.
+#declare PocketHoles = union {
+  sphere { Far, Eps }
+  #for (I, 0, PocketCount - 1)
+    union {
+      Hole(I, 0, -1, 1)
+      difference {
+        cylinder { <PocketC[I].u, PocketC[I].v, -PocketLipR - Eps>, <PocketC[I].u, PocketC[I].v, Eps>, PocketR[I] + PocketLipR }
+        torus { PocketR[I] + PocketLipR, PocketLipR rotate x * 90 translate <PocketC[I].u, PocketC[I].v, -PocketLipR> }
+      }
+      PocketBound(I, PocketLipR, -1, 1)
+    }
+  #end
+}
+// The cushions: cut along the facings; in the wood, where the liner lies, back behind it.
+#declare CushionCuts = union {
+  sphere { Far, Eps }
+  #for (I, 0, PocketCount - 1)
+    union {
+      Throat(I, 0, -1, 1)
+      intersection { Throat(I, PocketLinerT + Eps, -1, 1) object { OutsideWood } }
+      PocketBound(I, PocketLinerT, -1, 1)
+    }
+  #end
+}
+// The wood: the throat and its liner, and below the slate the cup and its leather.
+#declare PocketCuts = union {
+  sphere { Far, Eps }
+  #for (I, 0, PocketCount - 1)
+    union {
+      Throat(I, PocketLinerT, -SlateDepth - Eps, 1)
+      Hole(I, PocketLinerT, CupFloorZ - PocketLinerT - Eps, -SlateDepth)
+      PocketBound(I, PocketLinerT, CupFloorZ - PocketLinerT - Eps, 1)
+    }
+  #end
+}
+// The leather lining pocket I: the throat through the wood, and below the slate the cup with its
+// floor at FloorZ (PocketLiner); where the throat leaves the wood's top the leather rolls over the
+// edge in a round bead (PocketRoll), the wood's rounded cut.
+#declare RollR = 0.004;  // m, the bead's radius; it stands 1.5 mm proud of the wood
+#macro PocketRoll(I)
+  #local Z = RailTopZ + 0.0015 - RollR;
+  #if (PocketJawed[I])
+    #local A = PocketAxis[I];
+    #local M = (ThroatT0[I] + ThroatT1[I]) / 2;
+    intersection {
+      union {
+        intersection {
+          torus { ThroatR[I] + RollR, RollR rotate x * 90 translate <ThroatC[I].u, ThroatC[I].v, Z> }
+          plane { -<A.u, A.v, 0>, -vdot(A, M) }
+        }
+        #for (K, 0, 1)
+          #local N = (K = 0 ? JawNose0[I] - JawIn0[I] * RollR : JawNose1[I] - JawIn1[I] * RollR);
+          #local T = (K = 0 ? ThroatT0[I] - JawIn0[I] * RollR : ThroatT1[I] - JawIn1[I] * RollR);
+          cylinder { <N.u, N.v, Z>, <T.u, T.v, Z>, RollR }
+        #end
+      }
+      object { OutsideWood }
+    }
+  #else
+    intersection {
+      torus { PocketR[I] + RollR, RollR rotate x * 90 translate <PocketC[I].u, PocketC[I].v, Z> }
+      object { OutsideWood }
+    }
+  #end
+#end
+#macro PocketLiner(I, FloorZ)
+  difference {
+    union {
+      Throat(I, PocketLinerT, -SlateDepth - Eps / 2, RailTopZ - Eps)
+      Hole(I, PocketLinerT, FloorZ - PocketLinerT, -SlateDepth)
+    }
+    Throat(I, 0, -SlateDepth - Eps, 1)
+    Hole(I, 0, FloorZ, -SlateDepth + Eps / 2)
+    object { InsideWood }
+  }
+#end
+
 #declare OuterMin = InnerMin - <RailW, RailW>;
 #declare OuterMax = InnerMax + <RailW, RailW>;
 #declare Middle = (NoseMin + NoseMax) / 2;
@@ -158,7 +253,6 @@ constexpr std::string_view kCushionsAndRails =
 #declare Bed = difference {
   box { <InnerMin.u - Eps, InnerMin.v - Eps, -SlateDepth>, <InnerMax.u + Eps, InnerMax.v + Eps, 0> }
   object { PocketHoles }
-  difference { object { PocketCuts } object { PlayArea } }
   texture { T_Cloth }
 }
 
@@ -166,7 +260,7 @@ constexpr std::string_view kCushionsAndRails =
 #declare Cushions = union {
   sphere { Far, Eps }
   #for (I, 0, RailCount - 1)
-    difference { Cushion(RailA[I], RailB[I], RailH[I]) object { PocketCuts } }
+    difference { Cushion(I) object { CushionCuts } }
   #end
   texture { T_CushionCloth }
 }
@@ -209,36 +303,31 @@ constexpr std::string_view kCushionsAndRails =
 )pov";
 
 constexpr std::string_view kModelsTail =
-    R"pov(// ---- pockets: a leather liner lines each opening's throat through the wood and under the bed, and
-// a leather cup closes it PocketDepth below the bed, where the physics leaves a pocketed ball, so a
-// ball is seen to drop in and to lie there. A leather collar edges the opening on the rail's top.
-#declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
-#declare CupFloorZ = -PocketDepth - 0.0005;
-#declare CushionSolids = union {
-  #for (I, 0, RailCount - 1) Cushion(RailA[I], RailB[I], RailH[I]) #end
+    R"pov(// ---- pockets: a leather liner lines each throat through the wood, and below the slate a leather cup
+// (a drop pocket) holds the pocketed balls PocketDepth below the bed, where the physics leaves them,
+// so a ball is seen to drop in and to lie there. The liner is near-black leather with a faint grain,
+// so the opening reads dark from across the room; the cup below the slate is a warmer brown, so the
+// lamp's light that falls through the hole shows its inside and a ball lying in it. The bead the
+// liner rolls over the wood's edge is polished by hands and balls: its highlight outlines the opening.
+#declare T_PocketLeather = texture {
+  gradient z
+  texture_map {
+    [0.5 pigment { srgb <0.18, 0.09, 0.04> } normal { granite 0.03 scale 0.006 } finish { diffuse 0.7 specular 0.04 roughness 0.04 }]
+    [0.5 pigment { srgb <0.065, 0.038, 0.024> } normal { granite 0.06 scale 0.006 } finish { diffuse 0.7 specular 0.05 roughness 0.03 }]
+  }
+  translate -z * (0.5 + SlateDepth)  // the cup's brown below the slate's underside, the liner's black above
+}
+#declare T_PocketBead = texture {
+  pigment { srgb <0.075, 0.044, 0.028> }
+  finish { diffuse 0.65 specular 0.35 roughness 0.006 }
 }
 #declare Liners = union {
   sphere { Far, Eps }
   #for (I, 0, PocketCount - 1)
-    difference {
-      PocketCut(I, LinerT, CupFloorZ - LinerT, RailTopZ + 0.0008)
-      PocketCut(I, 0, CupFloorZ, 1)
-      difference { object { InsideWood } box { <-100, -100, -100>, <100, 100, -SlateDepth + Eps> } }
-    }
-    // the collar: a flat leather ring inlaid in the wood's top round the opening
-    difference {
-      PocketCut(I, LinerT + 0.014, RailTopZ - 0.004, RailTopZ + 0.0006)
-      PocketCut(I, LinerT / 2, -1, 1)
-      object { InsideWood }
-    }
-    // the jaws' facings: where the opening cuts a cushion, leather half a liner thick in the
-    // cushion's own profile, so the cushion ends in a clean dark edge on the opening's circle
-    intersection {
-      difference { PocketCut(I, LinerT / 2, -1, 1) PocketCut(I, 0, -2, 2) }
-      object { CushionSolids }
-    }
+    PocketLiner(I, CupFloorZ)
+    object { PocketRoll(I) texture { T_PocketBead } }
   #end
-  texture { T_Leather }
+  texture { T_PocketLeather }
 }
 
 // ---- the body under the rails and four turned legs

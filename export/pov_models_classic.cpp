@@ -1,8 +1,10 @@
 // The classic look's fixed POV-Ray models (the look before the photographic one, kept so the render
 // benchmark can set the two side by side: `Look::classic`). They read the numbers write_pov_include puts
-// before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR/PocketOut/PocketStretch,
-// NoseMin/NoseMax, PlayHull, Final), from the table description (CushionW, CushionUndercut,
-// CushionTopZ, RailW, RailTopZ, FloorZ, SightLength/SightWidth, SightC/SightAlongX), from the room
+// before them: from the scene (BallR, RailA/RailB/RailH, PocketC/PocketR, NoseMin/NoseMax, Final),
+// from the table description (CushionW, CushionUndercut, CushionTopZ, RailW, RailTopZ, FloorZ,
+// SightLength/SightWidth, SightC/SightAlongX, the pockets' jaws, throats and liner: RailSlantA/
+// RailSlantB, PocketJawed, JawNose0/1, JawIn0/1, PocketAxis, ThroatC/ThroatR/ThroatT0/1, PocketLinerT,
+// PocketLipR), from the physics (PocketDepth), from the room
 // description (CeilingZ, RoomMargin, LampZ, LampTopZ, LampHalf, LampWall, LampCordR) and the balls'
 // colours (BallSrgb). Every CSG cutter overshoots the faces it cuts by Eps: coincident
 // faces make POV-Ray pick either surface per ray, which shows as speckled seams.
@@ -52,19 +54,11 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 )pov";
 
 constexpr std::string_view kClassicTail =
-    R"pov(// ---- pocket liners: dark rubber lining each opening's throat under the bed and its cut through
-// the wood; the cushions' jaws stay cloth, as on a real table.
-#declare InsideWood = box { <InnerMin.u, InnerMin.v, -SlateDepth - Eps>, <InnerMax.u, InnerMax.v, 1> }
+    R"pov(// ---- pocket liners: dark rubber lining each throat through the wood and the cup below the slate
+// (the same pockets as the photographic look's); the cushions' jaws stay cloth, as on a real table.
 #declare Liners = union {
   sphere { Far, Eps }
-  #for (I, 0, PocketCount - 1)
-    difference {
-      PocketCut(I, LinerT, -0.16, RailTopZ + 0.0008)
-      PocketCut(I, 0, -1, 1)
-      object { InsideWood }
-    }
-    PocketCut(I, LinerT, -0.17, -0.16)
-  #end
+  #for (I, 0, PocketCount - 1) PocketLiner(I, CupFloorZ) PocketRoll(I) #end
   texture { T_Liner }
 }
 

@@ -13,65 +13,6 @@ namespace bsim {
 
 namespace {
 
-struct Point2 {
-  double x = 0, y = 0;
-};
-
-double cross(const Point2& o, const Point2& a, const Point2& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-/// Counter-clockwise convex hull (Andrew's monotone chain): the playing area inside the noses.
-std::vector<Point2> convex_hull(std::vector<Point2> points) {
-  std::sort(points.begin(), points.end(),
-            [](const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end(),
-                           [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }),
-               points.end());
-  if (points.size() < 3) return points;
-  std::vector<Point2> hull(2 * points.size());
-  std::size_t k = 0;
-  for (const Point2& p : points) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
-    hull[k++] = p;
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
-/// The direction a pocket opens away from the bed: the mean outward normal of the cushions that
-/// end at it; a pocket no cushion ends at opens away from the table's middle, and is not stretched.
-struct PocketOpening {
-  Point2 out{1, 0};
-  double stretch = 0;  ///< m the opening reaches back into the rail
-};
-
-PocketOpening pocket_opening(const Pocket& pocket, const std::vector<Rail>& rails, const Point2& middle) {
-  constexpr double kNearEnd = 0.01;  // m beyond the pocket's radius that still counts as a jaw
-  constexpr double kStretch = 0.45;  // of the radius: how far the cut reaches under the rail
-  Vec3 sum(0, 0, 0);
-  for (const Rail& rail : rails) {
-    const Vec3 d = rail.b - rail.a;
-    const Vec3 outward = Vec3(-d.y(), d.x(), 0).normalized();
-    auto near = [&](const Vec3& p) {
-      return (Vec3(p.x(), p.y(), 0) - Vec3(pocket.center.x(), pocket.center.y(), 0)).norm() <= pocket.radius + kNearEnd;
-    };
-    if (d.norm() > 1e-9 && (near(rail.a) || near(rail.b))) sum += outward;
-  }
-  if (sum.norm() > 1e-9) {
-    sum.normalize();
-    return {{sum.x(), sum.y()}, kStretch * pocket.radius};
-  }
-  const Point2 away{pocket.center.x() - middle.x, pocket.center.y() - middle.y};
-  const double length = std::hypot(away.x, away.y);
-  if (length < 1e-9) return {};
-  return {{away.x / length, away.y / length}, 0.0};
-}
-
 template <class T, class F>
 void write_array(std::ostream& out, const char* name, const std::vector<T>& items, F&& text) {
   out << "#declare " << name << " = array[" << items.size() << "] {";
@@ -105,6 +46,9 @@ void write_table_description(const TableLayout& layout, std::ostream& out) {
       << ";  // half the shade seen from above, over Middle\n";
   out << "#declare LampWall = " << pov_number(lamp.wall) << ";\n";
   out << "#declare LampCordR = " << pov_number(lamp.cord_radius) << ";\n";
+  out << "#declare PocketLinerT = " << pov_number(spec.jaws.liner) << ";  // the pockets' leather liner\n";
+  out << "#declare PocketLipR = " << pov_number(spec.jaws.lip_round)
+      << ";  // the slate's rounded edge under the cloth, round the drop circle\n";
   out << "#declare SightLength = " << pov_number(spec.sights.length) << ";  // the diamond's diagonal along the rail\n";
   out << "#declare SightWidth = " << pov_number(spec.sights.width) << ";  // and across it\n";
   out << "#declare SightCount = " << layout.sights.size() << ";\n";
@@ -135,13 +79,9 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, L
   out << "#declare BallR = " << pov_number(scene.physics.ball_radius) << ";\n";
   out << "#declare PocketDepth = " << pov_number(kPocketDepth) << ";  // how far below the bed a pocketed ball rests\n";
 
-  std::vector<Point2> ends;
-  for (const Rail& rail : scene.rails)
-    for (const Vec3& p : {rail.a, rail.b}) ends.push_back({p.x(), p.y()});
   // Without cushions the layout is the standard bed: a bare bed around the pockets.
   const TableLayout layout = table_layout(scene);
   const TableRect& noses = layout.noses;
-  const Point2 middle{(noses.x0 + noses.x1) / 2, (noses.y0 + noses.y1) / 2};
 
   out << "#declare NoseMin = " << pov_vector2(noses.x0, noses.y0) << ";\n";
   out << "#declare NoseMax = " << pov_vector2(noses.x1, noses.y1) << ";\n";
@@ -150,20 +90,28 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, L
     write_array(out, "RailA", scene.rails, [](const Rail& r) { return pov_vector2(r.a.x(), r.a.y()); });
     write_array(out, "RailB", scene.rails, [](const Rail& r) { return pov_vector2(r.b.x(), r.b.y()); });
     write_array(out, "RailH", scene.rails, [](const Rail& r) { return pov_number(r.a.z()); });
+    // How each cushion end is cut: -1 square, else how far its jaw's facing runs on past the nose
+    // end per metre behind the nose.
+    const auto slant = [](const CushionEnd& e) { return pov_number(e.pocket < 0 ? -1.0 : e.slant); };
+    write_array(out, "RailSlantA", layout.ends_a, slant);
+    write_array(out, "RailSlantB", layout.ends_b, slant);
   }
   out << "#declare PocketCount = " << scene.pockets.size() << ";\n";
   if (!scene.pockets.empty()) {
-    std::vector<PocketOpening> openings;
-    for (const Pocket& p : scene.pockets) openings.push_back(pocket_opening(p, scene.rails, middle));
+    const std::vector<PocketMouth>& m = layout.pockets;
+    const auto v2 = [](const Vec3& p) { return pov_vector2(p.x(), p.y()); };
     write_array(out, "PocketC", scene.pockets, [](const Pocket& p) { return pov_vector2(p.center.x(), p.center.y()); });
     write_array(out, "PocketR", scene.pockets, [](const Pocket& p) { return pov_number(p.radius); });
-    write_array(out, "PocketOut", openings, [](const PocketOpening& o) { return pov_vector2(o.out.x, o.out.y); });
-    write_array(out, "PocketStretch", openings, [](const PocketOpening& o) { return pov_number(o.stretch); });
-  }
-  const std::vector<Point2> hull = convex_hull(ends);
-  out << "#declare PlayHullCount = " << hull.size() << ";\n";
-  if (hull.size() >= 3) {
-    write_array(out, "PlayHull", hull, [](const Point2& p) { return pov_vector2(p.x, p.y); });
+    write_array(out, "PocketJawed", m, [](const PocketMouth& p) { return p.jawed() ? "1" : "0"; });
+    write_array(out, "JawNose0", m, [&](const PocketMouth& p) { return v2(p.nose[0]); });
+    write_array(out, "JawNose1", m, [&](const PocketMouth& p) { return v2(p.nose[1]); });
+    write_array(out, "JawIn0", m, [&](const PocketMouth& p) { return v2(p.inward[0]); });
+    write_array(out, "JawIn1", m, [&](const PocketMouth& p) { return v2(p.inward[1]); });
+    write_array(out, "PocketAxis", m, [&](const PocketMouth& p) { return v2(p.axis); });
+    write_array(out, "ThroatC", m, [&](const PocketMouth& p) { return v2(p.throat_centre); });
+    write_array(out, "ThroatR", m, [](const PocketMouth& p) { return pov_number(p.throat_radius); });
+    write_array(out, "ThroatT0", m, [&](const PocketMouth& p) { return v2(p.tangent[0]); });
+    write_array(out, "ThroatT1", m, [&](const PocketMouth& p) { return v2(p.tangent[1]); });
   }
   write_table_description(layout, out);
   write_ball_colours(out);

@@ -1,7 +1,7 @@
 #pragma once
 // The table as meshes, built from the scene's cushions and pockets and the table description
 // (table.h: the cushion profile, the wood, the sights): cloth, cushions at nose height, the wooden
-// frame with its sights, the pocket holes, and a floor and legs for context.
+// frame with its sights, the pockets (table.h's PocketMouth: jaws, throat, cup), and a floor and legs for context.
 #include <vector>
 
 #include "mesh.h"
@@ -11,11 +11,11 @@ namespace bsim {
 
 struct TableModel {
   MeshData cloth;         ///< the bed, z = 0 (pocket holes are cut out of it with the stencil)
-  MeshData tops;          ///< the frame's top faces at top_height and the cushions' just below (holes cut likewise)
-  MeshData body;          ///< cushion faces, frame sides, legs, floor
-  MeshData pockets;       ///< inside of each pocket: its wall and bottom, seen through the holes
-  MeshData bed_holes;     ///< pocket circles on the bed plane (stencil masks)
-  MeshData top_holes;     ///< pocket circles at the frame's top height (stencil masks)
+  MeshData tops;          ///< the frame's top faces at top_height (the throats cut out likewise)
+  MeshData body;          ///< cushions (ending on their jaws' facings), frame sides, legs, floor
+  MeshData pockets;       ///< inside of each pocket: liner, slate edge, cup floor, seen through the holes
+  MeshData bed_holes;     ///< each pocket's drop circle and throat on the bed plane (stencil masks)
+  MeshData top_holes;     ///< each throat, grown by its liner, at the frame's top height (stencil masks)
   double top_height = 0;  ///< m, the frame's (the wood's) top above the bed
 };
 

@@ -148,19 +148,21 @@ TEST_SUITE("pov") {
     CHECK(stick_seen);
   }
 
-  TEST_CASE("the table is the scene's: its cushions, pockets and the way each pocket opens") {
+  TEST_CASE("the table is the scene's: its cushions, pockets and each pocket's jaws") {
     const std::string standard = include_text(*load(kTinyScene));
     CHECK(standard.find("#declare RailCount = 6;") != std::string::npos);
     CHECK(standard.find("#declare PocketCount = 6;") != std::string::npos);
-    // corner pockets open diagonally, side pockets straight out
-    CHECK(standard.find("#declare PocketOut = array[6] { <-0.707107, 0.707107>, <0.0, 1.0>, <0.707107, 0.707107>") !=
-          std::string::npos);
+    // every pocket opens between two jaws; each cushion end is cut along its jaw's facing: the corner
+    // pockets' by cot(38 deg), the side pockets' by cot(76 deg)
+    CHECK(standard.find("#declare PocketJawed = array[6] { 1, 1, 1, 1, 1, 1 }") != std::string::npos);
+    CHECK(standard.find("#declare RailSlantA = array[6] { 1.279942, 0.249328,") != std::string::npos);
 
     const std::string box = include_text(*load(kBoxScene));
     CHECK(box.find("#declare RailCount = 4;") != std::string::npos);
     CHECK(box.find("#declare RailH = array[4] { 0.04, 0.04, 0.04, 0.04 }") != std::string::npos);
     CHECK(box.find("#declare PocketC = array[1] { <0.2, -0.3> }") != std::string::npos);
-    CHECK(box.find("#declare PocketStretch = array[1] { 0.0 }") != std::string::npos);  // no cushion near it
+    CHECK(box.find("#declare PocketJawed = array[1] { 0 }") != std::string::npos);  // no cushion near it
+    CHECK(box.find("#declare RailSlantA = array[4] { -1.0, -1.0, -1.0, -1.0 }") != std::string::npos);
     CHECK(box.find("#declare NoseMin = <-1.5, -0.8>;") != std::string::npos);
     CHECK(box.find("#declare Final = 0;") != std::string::npos);
     CHECK(include_text(*load(kBoxScene), Quality::final).find("#declare Final = 1;") != std::string::npos);

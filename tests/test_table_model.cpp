@@ -59,6 +59,16 @@ Extent extent(const MeshData& mesh) {
 
 constexpr double kFloat = 1e-6;  // m, the meshes hold floats
 
+double degrees(double radians) { return radians * 180 / 3.14159265358979323846; }
+
+/// The direction along pocket jaw i's cushion, away from the pocket.
+Vec3 along_cushion(const Scene& scene, const PocketMouth& m, int i) {
+  const Rail& r = scene.rails[static_cast<std::size_t>(m.rail[i])];
+  Vec3 d = m.at_b[i] ? Vec3(r.a - r.b) : Vec3(r.b - r.a);
+  d.z() = 0;
+  return d.normalized();
+}
+
 }  // namespace
 
 TEST_SUITE("table model") {
@@ -186,5 +196,112 @@ TEST_SUITE("table model") {
     // Just beyond the table's outer edge only the bed's plane is left to clear.
     CHECK(stick_clearance(stick_at(t.rail_reach() + 0.005), scene, {}, 0.028575) ==
           doctest::Approx(z - kCueButtRadius));
+  }
+
+  TEST_CASE("pockets: corner and side jaws from the nose lines, cut along facings at the WPA's 142 and 104 degrees") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    REQUIRE(layout.pockets.size() == 6);
+    const PocketKind kinds[] = {PocketKind::corner, PocketKind::side, PocketKind::corner,
+                                PocketKind::corner, PocketKind::side, PocketKind::corner};
+    for (std::size_t k = 0; k < 6; ++k) {
+      const PocketMouth& m = layout.pockets[k];
+      CAPTURE(k);
+      REQUIRE(m.kind == kinds[k]);
+      const double want = m.kind == PocketKind::corner ? 142.0 : 104.0;
+      CHECK(m.facing_deg == want);
+      for (int i = 0; i < 2; ++i) {
+        const Rail& r = scene.rails[static_cast<std::size_t>(m.rail[i])];
+        // The facing starts at the nose end, the end of the scene's rail segment at the pocket...
+        const Vec3 end = m.at_b[i] ? r.b : r.a;
+        CHECK((m.nose[i] - Vec3(end.x(), end.y(), 0)).norm() < 1e-12);
+        // ...and turns from the nose by the WPA angle, into the cushion (away from the bed).
+        CHECK(degrees(std::acos(along_cushion(scene, m, i).dot(m.facing[i]))) == doctest::Approx(want));
+        CHECK(m.facing[i].dot(m.axis) > 0);
+        CHECK(m.facing[i].dot(m.inward[i]) == doctest::Approx(0).epsilon(1e-12));
+        // The cushion end's slant is the facing's: it runs on past the nose end by cot(180 - angle).
+        const CushionEnd& cut = (m.at_b[i] ? layout.ends_b : layout.ends_a)[static_cast<std::size_t>(m.rail[i])];
+        CHECK(cut.pocket == static_cast<int>(k));
+        CHECK(degrees(std::atan(1 / cut.slant)) == doctest::Approx(180 - want));
+      }
+      // The throat closes in behind the mouth, and is still wider than a ball where it meets the wood.
+      CHECK(m.width_behind(0) == doctest::Approx(m.mouth()));
+      CHECK(m.width_behind(0.03) < m.mouth());
+      CHECK(m.width_behind(0.05) > 2 * 0.028575 + 0.02);
+    }
+    // WPA mouths: corner 4.5 to 4.625 in, side 5 to 5.125 in (the drop circles put the noses there).
+    CHECK(layout.pockets[0].mouth() == doctest::Approx(0.1143).epsilon(0.02));
+    CHECK(layout.pockets[1].mouth() == doctest::Approx(0.1270).epsilon(0.03));
+  }
+
+  TEST_CASE("pockets: the drop circle stays open, the cup holds every resting ball, the throat reaches the wood") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const double R = 0.028575;
+    for (const PocketMouth& m : layout.pockets) {
+      CAPTURE(m.centre.x());
+      CAPTURE(m.centre.y());
+      for (int k = 0; k < 64; ++k) {
+        const double a = 2 * 3.14159265358979323846 * k / 64;
+        const Vec3 dir(std::cos(a), std::sin(a), 0);
+        // Every point of the drop circle is open (the bed's hole is the circle and the throat).
+        CHECK(m.in_hole(m.centre + dir * (m.drop_radius - 1e-9)));
+        // A ball resting anywhere the fall leaves it (its centre inside the physics' wall, R in from
+        // the circle) lies wholly in the cup.
+        for (int j = 0; j < 16; ++j) {
+          const double b = 2 * 3.14159265358979323846 * j / 16;
+          CHECK(m.in_hole(m.centre + dir * (m.drop_radius - R) + Vec3(std::cos(b), std::sin(b), 0) * (R - 1e-9)));
+        }
+      }
+      // The throat's round back lies behind the wood's inner edge: the opening goes through the rail.
+      const Vec3 back = m.throat_centre + m.axis * m.throat_radius;
+      CHECK(!(back.x() > layout.wood_inner.x0 && back.x() < layout.wood_inner.x1 && back.y() > layout.wood_inner.y0 &&
+              back.y() < layout.wood_inner.y1));
+      // Between the facings it is open, outside them (in the cushion) not.
+      const Vec3 middle = (m.nose[0] + m.nose[1]) / 2;
+      CHECK(m.in_throat(middle + m.axis * 0.02));
+      for (int i = 0; i < 2; ++i) CHECK(!m.in_throat(m.nose[i] + m.facing[i] * 0.02 - m.inward[i] * 0.005));
+    }
+    // A pocket no cushion end meets opens on its drop circle alone.
+    Scene box;
+    box.rails = {Rail{Vec3(-1, 0.5, 0.04), Vec3(1, 0.5, 0.04), {}}};
+    box.pockets = {Pocket{Vec3(0.2, -0.3, 0), 0.07, {}}};
+    const TableLayout bare = table_layout(box);
+    REQUIRE(bare.pockets.size() == 1);
+    CHECK(bare.pockets[0].kind == PocketKind::bare);
+    CHECK(bare.pockets[0].in_throat(Vec3(0.2 + 0.069, -0.3, 0)));
+    CHECK(!bare.pockets[0].in_throat(Vec3(0.2 + 0.071, -0.3, 0)));
+    CHECK(bare.ends_a[0].pocket == -1);
+    CHECK(bare.ends_b[0].pocket == -1);
+  }
+
+  TEST_CASE("pockets: the preview and POV-Ray draw the same jaws and throats") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const std::string text = include_text(scene);
+    const PocketMouth& corner = layout.pockets[0];
+    CHECK(declared(text, "JawNose0").find("{ " + pov_vector2(corner.nose[0].x(), corner.nose[0].y()) + ",") !=
+          std::string::npos);
+    CHECK(declared(text, "ThroatR").find("{ " + pov_number(corner.throat_radius) + ",") != std::string::npos);
+    CHECK(declared(text, "PocketLinerT") == pov_number(kStandardTable.jaws.liner));
+    // The preview cuts the wood's top by the same throat, grown by the liner: its mask reaches the
+    // throat's round back.
+    const TableModel model = build_table_model(scene);
+    const Extent holes = extent(model.top_holes);
+    const double back_x =
+        corner.throat_centre.x() - (corner.throat_radius + kStandardTable.jaws.liner) * std::sqrt(0.5);
+    CHECK(holes.x0 < back_x + 1e-3);
+    CHECK(holes.x0 > corner.throat_centre.x() - corner.throat_radius - kStandardTable.jaws.liner - 1e-3);
+    // The preview's cushion reaches past the nose end along the facing, to where it meets the wood.
+    // (Of the top-left corner's jaws, the top cushion's: its back is the cushion's width along +y.)
+    const int top = std::abs(corner.nose[0].y() - kStandardTable.half_width) < 1e-9 ? 0 : 1;
+    REQUIRE(corner.nose[top].y() == doctest::Approx(kStandardTable.half_width));
+    bool facing_corner = false;
+    const Vec3 at_wood =
+        corner.nose[top] + corner.facing[top] * (kStandardTable.cushion.width / corner.facing[top].y());
+    for (const Vertex& v : model.body.vertices)
+      if (std::abs(v.position[0] - at_wood.x()) < 1e-5 && std::abs(v.position[1] - at_wood.y()) < 1e-5)
+        facing_corner = true;
+    CHECK(facing_corner);
   }
 }

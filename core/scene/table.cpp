@@ -1,10 +1,129 @@
 #include "table.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "scene.h"
 
 namespace bsim {
+
+namespace {
+
+Vec3 flat(const Vec3& p) { return Vec3(p.x(), p.y(), 0); }
+
+/// One cushion end near a pocket: the nose end, the nose's direction into the pocket and the
+/// cushion's outward normal (away from the bed).
+struct JawEnd {
+  int rail = -1;
+  bool at_b = false;
+  Vec3 nose{0, 0, 0};
+  Vec3 along{1, 0, 0};
+  Vec3 out{0, 1, 0};
+  double distance = 0;  ///< m from the drop circle's centre
+};
+
+}  // namespace
+
+double PocketMouth::width_behind(double behind) const {
+  if (!jawed()) return 2 * drop_radius;
+  const Vec3 middle = (nose[0] + nose[1]) / 2;
+  double width = 0;
+  for (int i = 0; i < 2; ++i) {
+    // The facing's point `behind` along the axis, measured from the mouth's line.
+    const double run = (behind - (nose[i] - middle).dot(axis)) / facing[i].dot(axis);
+    const Vec3 p = nose[i] + run * facing[i];
+    width += std::abs((p - middle).dot(Vec3(-axis.y(), axis.x(), 0)));
+  }
+  return width;
+}
+
+bool PocketMouth::in_throat(const Vec3& p, double grow) const {
+  const Vec3 q = flat(p);
+  if ((q - throat_centre).norm() <= throat_radius + grow) return true;
+  if (!jawed()) return false;
+  const Vec3 middle = (nose[0] + nose[1]) / 2;
+  if ((q - middle).dot(axis) < -grow || (q - (tangent[0] + tangent[1]) / 2).dot(axis) > 0) return false;
+  for (int i = 0; i < 2; ++i)
+    if ((q - nose[i]).dot(inward[i]) < -grow) return false;
+  return true;
+}
+
+bool PocketMouth::in_hole(const Vec3& p, double grow) const {
+  return (flat(p) - centre).norm() <= drop_radius + grow || in_throat(p, grow);
+}
+
+PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
+  const PocketJaws& spec = kStandardTable.jaws;
+  PocketMouth m;
+  m.centre = flat(pocket.center);
+  m.drop_radius = pocket.radius;
+  m.throat_centre = m.centre;
+  m.throat_radius = pocket.radius;
+
+  // The cushion ends on or near the drop circle, nearest first: the two nearest are the jaws.
+  std::vector<JawEnd> ends;
+  for (std::size_t i = 0; i < rails.size(); ++i) {
+    const Vec3 d = flat(rails[i].b - rails[i].a);
+    if (d.norm() < 1e-9) continue;
+    const Vec3 along = d.normalized();
+    const Vec3 out(-along.y(), along.x(), 0);  // the playing side is on the right of a -> b
+    for (bool at_b : {false, true}) {
+      const Vec3 nose = flat(at_b ? rails[i].b : rails[i].a);
+      const double distance = (nose - m.centre).norm();
+      if (distance <= pocket.radius + spec.near_end)
+        ends.push_back({static_cast<int>(i), at_b, nose, at_b ? along : Vec3(-along), out, distance});
+    }
+  }
+  std::stable_sort(ends.begin(), ends.end(), [](const JawEnd& a, const JawEnd& b) { return a.distance < b.distance; });
+  if (ends.size() < 2) return m;
+  const JawEnd& j0 = ends[0];
+  const JawEnd& j1 = ends[1];
+  if ((j1.nose - j0.nose).norm() < 1e-6) return m;
+
+  // Collinear noses running at each other make a side pocket; noses meeting at an angle a corner.
+  const double cos_side = std::cos(spec.side_within_deg * std::numbers::pi / 180);
+  m.kind = j0.along.dot(-j1.along) >= cos_side ? PocketKind::side : PocketKind::corner;
+  m.facing_deg = m.kind == PocketKind::side ? spec.side_facing_deg : spec.corner_facing_deg;
+  // The facing leaves the nose end turned from the nose's direction into the pocket by 180 degrees
+  // less the facing angle, towards the cushion's back.
+  const double turn = (180 - m.facing_deg) * std::numbers::pi / 180;
+  const JawEnd* jaw[2] = {&j0, &j1};
+  for (int i = 0; i < 2; ++i) {
+    m.rail[i] = jaw[i]->rail;
+    m.at_b[i] = jaw[i]->at_b;
+    m.nose[i] = jaw[i]->nose;
+    m.facing[i] = std::cos(turn) * jaw[i]->along + std::sin(turn) * jaw[i]->out;
+  }
+  const Vec3 middle = (m.nose[0] + m.nose[1]) / 2;
+  m.axis = (j0.out + j1.out).normalized();
+  for (int i = 0; i < 2; ++i) {
+    Vec3 normal(-m.facing[i].y(), m.facing[i].x(), 0);
+    if (normal.dot(middle - m.nose[i]) < 0) normal = -normal;
+    m.inward[i] = normal;
+  }
+
+  // The throat's round back: a circle between the facings, tangent to them, whose back reaches as
+  // far behind the mouth as the drop circle does (and at least a little past the cushion into the
+  // wood), so the cup below holds every ball the physics drops.
+  const double half = (m.nose[1] - m.nose[0]).norm() / 2;
+  // How far each facing leans in towards the middle line, as it runs back (the mean of the two).
+  double lean = 0;
+  for (int i = 0; i < 2; ++i) {
+    const Vec3 to_middle = middle - m.nose[i];
+    const Vec3 lateral = to_middle - to_middle.dot(m.axis) * m.axis;
+    if (lateral.norm() > 1e-9) lean += 0.5 * m.facing[i].dot(lateral.normalized());
+  }
+  const double closing = std::asin(std::clamp(lean, -0.99, 0.99));
+  const double back =
+      std::max((m.centre - middle).dot(m.axis) + pocket.radius, kStandardTable.cushion.width + 2 * spec.liner);
+  double t = std::max(0.0, (back - half * std::cos(closing)) / (1 - std::sin(closing)));
+  if (closing > 0) t = std::min(t, 0.8 * half / std::tan(closing));
+  m.throat_radius = half * std::cos(closing) - t * std::sin(closing);
+  m.throat_centre = middle + t * m.axis;
+  for (int i = 0; i < 2; ++i) m.tangent[i] = m.nose[i] + (m.throat_centre - m.nose[i]).dot(m.facing[i]) * m.facing[i];
+  return m;
+}
 
 TableLayout table_layout(const Scene& scene) {
   const TableSpec& spec = kStandardTable;
@@ -50,6 +169,17 @@ TableLayout table_layout(const Scene& scene) {
     const double y = n.y0 + (n.y1 - n.y0) * i / spec.sights.short_spaces;
     layout.sights.push_back({Vec3(n.x0 - d, y, z), false});
     layout.sights.push_back({Vec3(n.x1 + d, y, z), false});
+  }
+  layout.ends_a.assign(scene.rails.size(), {});
+  layout.ends_b.assign(scene.rails.size(), {});
+  for (std::size_t k = 0; k < scene.pockets.size(); ++k) {
+    const PocketMouth m = pocket_mouth(scene.pockets[k], scene.rails);
+    for (int i = 0; m.jawed() && i < 2; ++i) {
+      CushionEnd& end = (m.at_b[i] ? layout.ends_b : layout.ends_a)[static_cast<std::size_t>(m.rail[i])];
+      end.pocket = static_cast<int>(k);
+      end.slant = 1 / std::tan((180 - m.facing_deg) * std::numbers::pi / 180);
+    }
+    layout.pockets.push_back(m);
   }
   return layout;
 }

@@ -15,6 +15,8 @@
 namespace bsim {
 
 struct Scene;
+struct Rail;
+struct Pocket;
 
 /// The cushion's cross-section, measured from its nose line outward.
 struct CushionProfile {
@@ -27,6 +29,18 @@ struct CushionProfile {
 struct WoodRail {
   double width = 0;     ///< m, the wood's top from the cushion to the table's outer edge
   double top_rise = 0;  ///< m, the wood's top above the cushion nose
+};
+
+/// The pockets' jaws, throats and cups, after the WPA equipment specifications ("Pocket openings and
+/// measurement"): each cushion ends where its nose changes direction into the pocket, and is cut,
+/// with its wood backing, along a facing at a fixed horizontal angle to the nose.
+struct PocketJaws {
+  double corner_facing_deg = 0;  ///< deg between a corner pocket's cushion nose and its facing
+  double side_facing_deg = 0;    ///< and a side pocket's
+  double side_within_deg = 0;    ///< two jaws' noses this close to one line make a side pocket
+  double near_end = 0;           ///< m beyond the drop circle a nose end still counts as a jaw
+  double liner = 0;              ///< m, the leather liner lining the throat through the wood and the cup
+  double lip_round = 0;          ///< m, the radius of the slate's edge the cloth wraps over into the hole
 };
 
 /// The diamond sights inlaid in the wood's top.
@@ -48,6 +62,7 @@ struct TableSpec {
   CushionProfile cushion;
   WoodRail rail;
   Sights sights;
+  PocketJaws jaws;
 
   /// m from the nose line to the table's outer edge: cushion and wood together, all that a cue
   /// stick reaching over a cushion must clear.
@@ -100,6 +115,22 @@ inline constexpr TableSpec kStandardTable{
             // WPA: a diamond sight is 1 x 7/16 in to 1 1/4 x 5/8 in; 28 x 14 mm lies between.
             .length = 0.028,
             .width = 0.014,
+        },
+    .jaws =
+        {
+            // WPA: "the cut angles of the rubber cushion and its wood backing (rail liner) for both
+            // sides of the corner pocket entrance must be 142 degrees (+-1)", of the side pocket
+            // entrance 104 degrees (+-1); the angle lies between the nose and the facing, inside the
+            // cushion. Corner facings so close in by 7 degrees each, side ones by 14: every throat
+            // is narrower than its mouth.
+            .corner_facing_deg = 142,
+            .side_facing_deg = 104,
+            .side_within_deg = 10,
+            .near_end = 0.01,
+            // Leather liners are 5 to 8 mm; BCA pocket specifications: the slate's drop point is
+            // rounded to a 1/8 to 1/4 in radius under the cloth.
+            .liner = 0.006,
+            .lip_round = 0.005,
         },
 };
 
@@ -154,6 +185,47 @@ struct SightPlace {
   bool along_x = true;   ///< on a long side (the diamond's length along x), else on a short side
 };
 
+/// Whether a pocket opens between two cushions meeting at an angle, between two on one line, or where
+/// no two cushion ends meet (then its opening is its drop circle).
+enum class PocketKind { corner, side, bare };
+
+/// One pocket as both front ends build it, seen from above (z = 0): the physics' drop circle, and for a
+/// corner or side pocket its two jaws (the cushion ends), each cut along a facing, and the throat
+/// through the wood, whose sides go on along the facings and whose back is round. Below the bed a cup
+/// (a leather drop pocket) under the drop circle and the throat holds the pocketed balls.
+struct PocketMouth {
+  PocketKind kind = PocketKind::bare;
+  Vec3 centre{0, 0, 0};                             ///< the drop circle's centre (the physics')
+  double drop_radius = 0;                           ///< m, the physics' drop circle
+  double facing_deg = 0;                            ///< the WPA facing angle of its kind (0 for a bare pocket)
+  int rail[2] = {-1, -1};                           ///< the scene's rails whose ends are the jaws
+  bool at_b[2] = {false, false};                    ///< the jaw is that rail's b end (else its a end)
+  Vec3 nose[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};    ///< the jaws' nose ends, where the nose turns into the pocket
+  Vec3 facing[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< unit, along each facing from its nose end into the rail
+  Vec3 inward[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< unit, each facing's normal pointing into the opening
+  Vec3 axis{1, 0, 0};                               ///< unit, from the mouth into the pocket
+  Vec3 throat_centre{0, 0, 0};  ///< the round back of the throat (the drop circle's centre for a bare pocket)
+  double throat_radius = 0;     ///< m
+  Vec3 tangent[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< where each facing meets the round back
+
+  bool jawed() const { return kind != PocketKind::bare; }
+  /// m between the jaws' nose ends (what the WPA calls the mouth).
+  double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
+  /// m between the facings `behind` m behind the mouth, along the axis.
+  double width_behind(double behind) const;
+  /// Whether plan point p (z ignored) lies in the opening the jaws and the throat leave, grown by `grow`
+  /// m: between the facings behind the mouth, or in the round back.
+  bool in_throat(const Vec3& p, double grow = 0) const;
+  /// Whether p lies in the throat or the drop circle (what the bed and the cup leave open), grown.
+  bool in_hole(const Vec3& p, double grow = 0) const;
+};
+
+/// How one end of a cushion is cut: square (no pocket) or along a jaw's facing.
+struct CushionEnd {
+  int pocket = -1;   ///< the pocket whose jaw it is, or -1
+  double slant = 0;  ///< m the facing runs on past the nose end per metre behind the nose (cot of the turn)
+};
+
 /// Where the standard cushion, wood, sights and lamp stand around one scene's nose lines: what both front
 /// ends build their table from.
 struct TableLayout {
@@ -168,7 +240,13 @@ struct TableLayout {
   double lamp_bottom = 0;  ///< m above the bed, the shade's rim
   double lamp_top = 0;     ///< m above the bed, the shade's top
   std::vector<SightPlace> sights;
+  std::vector<PocketMouth> pockets;  ///< one a scene's pocket, in its order
+  std::vector<CushionEnd> ends_a;    ///< how each scene rail's a end is cut
+  std::vector<CushionEnd> ends_b;    ///< and its b end
 };
+
+/// The pocket's jaws, throat and cup around one drop circle, from the scene's nose lines.
+PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails);
 
 TableLayout table_layout(const Scene& scene);
 
