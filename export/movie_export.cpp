@@ -117,10 +117,11 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
 }  // namespace
 
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
-  // What every picture depends on besides its own .pov text: the size, the quality and how the
-  // picture is developed; "v3" names the store's key format.
-  const std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                               quality_name(options.quality) + " " + develop_signature();
+  // What every picture depends on besides its own .pov text: the size, the quality (and POV-Ray's
+  // options for it) and how the picture is developed; "v3" names the store's key format.
+  std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                         quality_name(options.quality) + " " + develop_signature();
+  for (const std::string& flag : povray_quality_arguments(options.quality)) settings += " " + flag;
   const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
   std::vector<std::uint64_t> keys;
   for (int k = 0; k < frames; ++k)

@@ -46,6 +46,9 @@ struct PovParseError {
 /// not errors.
 std::optional<PovParseError> find_parse_error(const std::string& log_text);
 
+/// POV-Ray's options for a quality preset (what the frame store's key records too).
+std::vector<std::string> povray_quality_arguments(Quality quality);
+
 /// POV-Ray's command line for one frame, run inside the frames directory.
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame);
 
