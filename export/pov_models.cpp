@@ -725,7 +725,7 @@ union {
 #end
 #if (Final)
   light_source { <Middle.u, Middle.v, LampZ + 0.01> LampColour * LampPower
-    area_light x * 2 * (LampHalf.u - LampWall), y * 2 * (LampHalf.v - LampWall), 9, 5 adaptive 0
+    area_light x * 2 * (LampHalf.u - LampWall), y * 2 * (LampHalf.v - LampWall), 5, 5 adaptive 0
     LampCone()
   }
 #else
