@@ -388,13 +388,20 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
     }
     return;
   }
+  // The copies cast no shadow: one unseen stick at the frame's instant does, as for the balls and the
+  // swept stick (shadow rays through a couple of dozen see-through copies cost more than the frame).
+  const CuePose now = shot.cue->pose(t);
+  if (now.visible) {
+    const StickFrame f = stick_frame(now);
+    out << "object { CueShadow " << pov_matrix(f.along, f.side, f.up, now.tip) << " }  // the stick's shadow\n";
+  }
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
     const CuePose cue = shot.cue->pose(sub_time(shot, t, shutter, k, stick_copies));
     if (!cue.visible) continue;
     const StickFrame f = stick_frame(cue);
-    out << "object { CueStickT(" << transmit << ") " << pov_matrix(f.along, f.side, f.up, cue.tip) << " }  // blurred "
-        << k + 1 << "/" << stick_copies << "\n";
+    out << "object { CueStickT(" << transmit << ") " << pov_matrix(f.along, f.side, f.up, cue.tip)
+        << " no_shadow }  // blurred " << k + 1 << "/" << stick_copies << "\n";
   }
 }
 

@@ -240,6 +240,30 @@ TEST_SUITE("pov") {
     CHECK(classic.find("object { CueStick matrix") != std::string::npos);
   }
 
+  TEST_CASE("a stick swung across the picture is drawn as copies that cast no shadow, and one unseen stick does") {
+    const auto text = test::read_file(test::source_path("scenes/break.scn"));
+    REQUIRE(text);
+    const auto shot = test::load_scene(*text, "break");
+    int checked = 0;
+    for (int k = 0; k < 40; ++k) {
+      const std::string frame = frame_text(*shot, k);
+      if (frame.find("CueStickT(") == std::string::npos) continue;
+      ++checked;
+      std::size_t copies = 0, unshadowed = 0;
+      for (std::size_t at = frame.find("CueStickT("); at != std::string::npos; at = frame.find("CueStickT(", at + 1)) {
+        ++copies;
+        const std::string line = frame.substr(at, frame.find('\n', at) - at);
+        unshadowed += line.find(" no_shadow }") != std::string::npos;
+      }
+      CHECK(copies >= 3);
+      CHECK(unshadowed == copies);
+      const std::size_t shadow = frame.find("object { CueShadow matrix <");
+      CHECK(shadow != std::string::npos);
+      CHECK(frame.find("object { CueShadow", shadow + 1) == std::string::npos);
+    }
+    CHECK(checked >= 3);  // the break's stick swings down onto the table over several frames
+  }
+
   TEST_CASE("a swept stick lets through what a box filter over the shutter would") {
     const double length = kCueLength;
     // An even stroke 0.1 m forward (towards -x along the axis): one piece; solid between the ends'
