@@ -314,7 +314,7 @@ std::string develop_signature() {
   std::string s = std::string(kDevelopVersion) + " exposure " + number(kExposure) + " white " + number(kToneWhite) +
                   " glare " + number(kGlareThreshold) + " " + number(kGlareShare);
   for (const GlareLobe& lobe : kGlareLobes) s += " " + number(lobe.sigma) + ":" + number(lobe.weight);
-  return s + " vignette " + number(kVignetteCornerTan);
+  return s + " vignette " + number(kVignetteCornerTan) + " saturation " + number(kSaturation);
 }
 
 bool read_hdr(const std::string& path, HdrImage& image, std::string& error) {
@@ -415,9 +415,22 @@ void add_glare(HdrImage& image) {
   image.rgb = std::move(whole.rgb);
 }
 
+void saturate(float& r, float& g, float& b) {
+  const float luma = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+  r = std::max(0.0f, luma + kSaturation * (r - luma));
+  g = std::max(0.0f, luma + kSaturation * (g - luma));
+  b = std::max(0.0f, luma + kSaturation * (b - luma));
+}
+
 std::vector<std::uint8_t> tone_map(const HdrImage& image) {
   std::vector<std::uint8_t> out(image.rgb.size());
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) out[i] = encode_srgb8(tone_curve(image.rgb[i]));
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    float r = tone_curve(image.rgb[i]), g = tone_curve(image.rgb[i + 1]), b = tone_curve(image.rgb[i + 2]);
+    saturate(r, g, b);
+    out[i] = encode_srgb8(r);
+    out[i + 1] = encode_srgb8(g);
+    out[i + 2] = encode_srgb8(b);
+  }
   return out;
 }
 

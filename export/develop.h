@@ -2,7 +2,7 @@
 // Developing a frame, as a camera's image pipeline does: POV-Ray renders linear light with no upper
 // limit (a Radiance .hdr), and this turns it into the 8-bit sRGB PNG of the movie: a fixed exposure,
 // the lens's natural vignetting, a soft glare round over-bright points, a filmic tone curve that
-// rolls highlights off instead of clipping them, and the sRGB encoding.
+// rolls highlights off instead of clipping them, a film's less pure colour, and the sRGB encoding.
 //
 // Everything is deterministic and uses only IEEE arithmetic (no libm call whose last bit may differ
 // between CPUs): the same .hdr gives the same PNG bytes on every machine, so a frame rendered on a
@@ -26,6 +26,12 @@ inline constexpr float kToneWhite = 6.0f;
 inline constexpr float kGlareThreshold = 1.5f;
 /// The share of the over-bright light the lens scatters into its wide point-spread function.
 inline constexpr float kGlareShare = 0.2f;
+
+/// The film's colour: what saturation of the tone-mapped colours is kept round each pixel's luma
+/// (the ASC CDL's saturation operator, with the Rec. 709 luma weights). Rendered colours come out
+/// purer than a photograph's, whose film or sensor and lens mix a little of every colour into the
+/// others: the cloth reads as paint, the walls as a poster, until they are drawn in a little.
+inline constexpr float kSaturation = 0.85f;
 
 /// The field angle of the picture's corners for the cos^4 vignetting: gentler than the camera's
 /// real 31 degrees (55 degrees across), as a lens whose fall-off is partly corrected; corners keep
@@ -51,6 +57,10 @@ bool read_hdr(const std::string& path, HdrImage& image, std::string& error);
 /// monotone, 0 at 0, rolling off towards 1 instead of clipping.
 float tone_curve(float x);
 
+/// Draws display-linear r, g, b towards their Rec. 709 luma by kSaturation; the luma is kept, and no
+/// value goes below 0.
+void saturate(float& r, float& g, float& b);
+
 /// Display-linear light in [0, 1] to its 8-bit sRGB code, rounded to the nearest (IEC 61966-2-1).
 std::uint8_t encode_srgb8(float linear);
 
@@ -66,10 +76,11 @@ void expose(HdrImage& image);
 /// picture's edges). A picture with nothing over-bright is left exactly as it was.
 void add_glare(HdrImage& image);
 
-/// The whole development of an exposed-and-glared picture's pixels to 8-bit sRGB, three bytes a pixel.
+/// The tone curve, the film colour and the sRGB encoding of an exposed-and-glared picture: 8-bit sRGB,
+/// three bytes a pixel.
 std::vector<std::uint8_t> tone_map(const HdrImage& image);
 
-/// The whole pipeline on a picture: exposure and vignetting, glare, tone curve, sRGB.
+/// The whole pipeline on a picture: exposure and vignetting, glare, tone curve, film colour, sRGB.
 std::vector<std::uint8_t> develop(HdrImage image);
 
 /// The 8-bit RGB pixels as a PNG file's bytes.

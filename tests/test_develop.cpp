@@ -67,6 +67,30 @@ TEST_SUITE("develop") {
     CHECK(tone_curve(2.0f) < 0.95f);
   }
 
+  TEST_CASE("the film's colour draws colours towards their luma, keeping greys and the luma") {
+    float r = 0.4f, g = 0.4f, b = 0.4f;
+    saturate(r, g, b);
+    CHECK(r == doctest::Approx(0.4f));
+    CHECK(g == doctest::Approx(0.4f));
+    CHECK(b == doctest::Approx(0.4f));
+    // The cloth's green: its luma stays, its red and blue rise towards it, its green falls.
+    const float r0 = 0.02f, g0 = 0.25f, b0 = 0.08f;
+    r = r0, g = g0, b = b0;
+    saturate(r, g, b);
+    const float luma = 0.2126f * r0 + 0.7152f * g0 + 0.0722f * b0;
+    CHECK(0.2126f * r + 0.7152f * g + 0.0722f * b == doctest::Approx(luma));
+    CHECK(r == doctest::Approx(luma + kSaturation * (r0 - luma)));
+    CHECK(g == doctest::Approx(luma + kSaturation * (g0 - luma)));
+    CHECK(kSaturation < 1.0f);
+    CHECK(r > r0);
+    CHECK(g < g0);
+    // A pure colour never goes below black.
+    r = 0.0f, g = 0.0f, b = 1.0f;
+    saturate(r, g, b);
+    CHECK(r >= 0.0f);
+    CHECK(g >= 0.0f);
+  }
+
   TEST_CASE("the 8-bit sRGB encoding rounds to the nearest code of the standard's curve") {
     CHECK(encode_srgb8(0.0f) == 0);
     CHECK(encode_srgb8(1.0f) == 255);
