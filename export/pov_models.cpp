@@ -345,6 +345,24 @@ constexpr std::string_view kModelsTail =
   texture { T_DarkWood }
 }
 
+// ---- what use leaves on a table: the foot spot, a thin cloth disc where the rack's apex stands (a
+// quarter of the bed's length from the foot cushion, as the WPA marks it), and a cube of blue chalk
+// on the near long rail
+#declare FootSpot = cylinder {
+  <NoseMax.u - (NoseMax.u - NoseMin.u) / 4, Middle.v, -Eps>, <NoseMax.u - (NoseMax.u - NoseMin.u) / 4, Middle.v, 0.0002>, 0.0127
+  pigment { srgb <0.86, 0.84, 0.78> } normal { N_Weave } finish { diffuse 0.85 specular 0.02 roughness 0.2 }
+}
+#declare ChalkSide = 0.022;
+#declare Chalk = intersection {
+  box { -ChalkSide / 2, ChalkSide / 2 }
+  sphere { 0, ChalkSide * 0.8 }  // the cube's corners worn round
+  sphere { <0, 0, ChalkSide * 0.5 + 0.06>, 0.0615 inverse }  // the hollow a cue tip wears in its top
+  pigment { granite color_map { [0 srgb <0.13, 0.32, 0.62>] [1 srgb <0.20, 0.40, 0.70>] } scale 0.004 }
+  finish { diffuse 0.9 }
+  rotate z * 23
+  translate <NoseMin.u + 0.28 * (NoseMax.u - NoseMin.u), InnerMin.v - RailW / 2, RailTopZ + ChalkSide / 2>
+}
+
 #declare Table = union {
   object { Bed }
   object { Cushions }
@@ -352,6 +370,8 @@ constexpr std::string_view kModelsTail =
   object { Liners }
   object { Sights }
   object { TableBody }
+  object { FootSpot }
+  object { Chalk }
 }
 
 // ---- balls of phenolic resin under a clear coat: diffuse colour, the lamp mirrored by fresnel
@@ -613,14 +633,16 @@ WallPiece(Trim)
       finish { diffuse 0.7 specular 0.4 roughness 0.01 } }
   #end
 }
-// a brass wall sconce with a warm shade: its own light is shadowless and fades within a metre or two
+// a brass wall sconce with a warm shade that glows brighter than white (the develop stage gives it a
+// lens glare, as a lit lampshade has in a photograph); its own light is shadowless and fades within a
+// metre or two
 #declare SconceY = 2.2;  // m either side of the wall's middle
 #declare SconceZ = FloorZ + 1.75;
 #macro Sconce(Y, Z)
   union {
     cylinder { <0, Y, Z - 0.02>, <0.12, Y, Z - 0.02>, 0.008 pigment { srgb <0.6, 0.45, 0.2> } finish { specular 0.6 roughness 0.01 metallic } }
     cone { <0.14, Y, Z - 0.06>, 0.07, <0.14, Y, Z + 0.08>, 0.045 open
-      pigment { srgb <1.0, 0.75, 0.45> } finish { emission 0.9 diffuse 0.3 } no_shadow }
+      pigment { srgb <1.0, 0.75, 0.45> } finish { emission 3 diffuse 0.3 } no_shadow }
   }
 #end
 #declare WallDecor = union {
