@@ -34,7 +34,6 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 #declare Eps = 0.001;
 #declare ApronDepth = 0.23;   // the rail's face below the bed
 #declare SlateDepth = 0.028;
-#declare LinerT = 0.008;      // pocket liner thickness
 #declare Far = <0, 0, -100>;  // where a placeholder keeps an empty CSG valid
 #declare ClearCoat = interior { ior 1.5 }  // lacquer and phenolic resin: fresnel needs an ior
 
@@ -43,7 +42,6 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
 // apart aliased into moire rings at 1280x720), a faint mottle of the felt's nap (broad patches and a
 // finer grain, as in a close photograph of worn cloth), and the fibres' sheen where the cloth
 // is seen at a grazing angle (aoi is 1 head-on, 0.5 at grazing).
-#declare ClothGreen = srgb <0.035, 0.33, 0.16>;
 #declare N_Weave = normal { bumps 0.05 scale 0.0012 }
 #declare P_ClothFelt = pigment {
   average pigment_map {
@@ -82,14 +80,7 @@ global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 1 / 128 }
             color_map { [0 srgb <0.12, 0.05, 0.025>] [1 srgb <0.17, 0.07, 0.035>] } }
   finish { diffuse 0.6 specular 0.2 roughness 0.01 }
 }
-// Leather of the pocket liners and the pocket cups, and mother-of-pearl sights.
-// Pocket leather is near black and hardly glossy: a broad sheen on its grain turns it grey under the
-// lamp.
-#declare T_Leather = texture {
-  pigment { srgb <0.055, 0.032, 0.02> }
-  normal { granite 0.05 scale 0.004 }
-  finish { diffuse 0.65 specular 0.02 roughness 0.02 }
-}
+// Mother-of-pearl sights.
 #declare T_Sight = texture {
   pigment { srgb <0.93, 0.91, 0.86> }
   finish { diffuse 0.6 specular 0.7 roughness 0.004 irid { 0.2 thickness 0.4 turbulence 0.3 } }

@@ -25,7 +25,6 @@ global_settings { assumed_gamma 1.0 max_trace_level 8 }
 #declare Eps = 0.001;
 #declare ApronDepth = 0.23;   // the rail's face below the bed
 #declare SlateDepth = 0.028;
-#declare LinerT = 0.008;      // pocket liner thickness
 #declare Far = <0, 0, -100>;  // where a placeholder keeps an empty CSG valid
 
 // ---- materials
