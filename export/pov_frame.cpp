@@ -114,16 +114,14 @@ double sub_time(const Shot& shot, double t, double shutter, int k, int copies) {
   return std::clamp(t + shutter * ((k + 0.5) / copies - 0.5), 0.0, shot.timeline.duration());
 }
 
-struct StickFrame {
-  Vec3 along, side, up;
-};
-
-StickFrame stick_frame(const CuePose& cue) {
+/// The stick model's placement (its x along the axis, tip at the origin) for a pose, as a POV-Ray
+/// `matrix`.
+std::string stick_place(const CuePose& cue) {
   const Vec3 along = cue.axis.normalized();
   Vec3 side = Vec3::UnitZ().cross(along);
   if (side.norm() < 1e-9) side = Vec3::UnitY();
   side.normalize();
-  return {along, side, along.cross(side)};
+  return pov_matrix(along, side, along.cross(side), cue.tip);
 }
 
 constexpr double kStickLength = kCueLength;  // m, the model's tip to butt
@@ -235,8 +233,7 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
 /// Writes the stick `cue` (at the frame's instant) swept along its axis over `blur`'s way (CueSweep),
 /// and its shadow as one unseen stick at the frame's instant.
 void write_stick_sweep(const CuePose& cue, const StickBlur& blur, std::ostream& out) {
-  const StickFrame f = stick_frame(cue);
-  const std::string place = pov_matrix(f.along, f.side, f.up, cue.tip);
+  const std::string place = stick_place(cue);
   out << "#declare StickCover = function(X) {";
   for (std::size_t i = 0; i < blur.travel.size(); ++i) {
     const StickTravel& piece = blur.travel[i];
@@ -382,26 +379,19 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
   const int stick_copies = photo ? blur.stick.copies : 1;
   if (stick_copies == 1) {
     const CuePose cue = shot.cue->pose(t);
-    if (cue.visible) {
-      const StickFrame f = stick_frame(cue);
-      out << "object { CueStick " << pov_matrix(f.along, f.side, f.up, cue.tip) << " }\n";
-    }
+    if (cue.visible) out << "object { CueStick " << stick_place(cue) << " }\n";
     return;
   }
   // The copies cast no shadow: one unseen stick at the frame's instant does, as for the balls and the
   // swept stick (shadow rays through a couple of dozen see-through copies cost more than the frame).
   const CuePose now = shot.cue->pose(t);
-  if (now.visible) {
-    const StickFrame f = stick_frame(now);
-    out << "object { CueShadow " << pov_matrix(f.along, f.side, f.up, now.tip) << " }  // the stick's shadow\n";
-  }
+  if (now.visible) out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
     const CuePose cue = shot.cue->pose(sub_time(shot, t, shutter, k, stick_copies));
     if (!cue.visible) continue;
-    const StickFrame f = stick_frame(cue);
-    out << "object { CueStickT(" << transmit << ") " << pov_matrix(f.along, f.side, f.up, cue.tip)
-        << " no_shadow }  // blurred " << k + 1 << "/" << stick_copies << "\n";
+    out << "object { CueStickT(" << transmit << ") " << stick_place(cue) << " no_shadow }  // blurred " << k + 1 << "/"
+        << stick_copies << "\n";
   }
 }
 
