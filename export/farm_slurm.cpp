@@ -132,12 +132,6 @@ bool picture_there(const std::string& dir, int frame) {
   return !ec && size > 0;
 }
 
-bool same_file(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  if (!fs::is_regular_file(a, ec) || !fs::is_regular_file(b, ec)) return false;
-  return read_text_file(a) == read_text_file(b);
-}
-
 /// Hard-links `from` to `to` (one shared file system), copying when a link cannot be made.
 bool link_or_copy(const std::string& from, const std::string& to) {
   std::error_code ec;
@@ -457,17 +451,17 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   conf.duration = shot.timeline.duration();
   conf.frames = frames_ = frame_count(conf.duration, conf.fps);
 
-  // Frames an earlier submission finished are kept when everything they depend on is unchanged:
-  // their .pov text, the shared include, the size and the quality.
-  FarmConf earlier;
-  std::string ignored;
-  const std::string include = "frames/" + std::string(kPovIncludeName);
-  const bool comparable = read_conf(dir_, earlier, ignored) && earlier.width == conf.width &&
-                          earlier.height == conf.height && earlier.quality == conf.quality &&
-                          same_file(dir_ + "/" + include, stage.path(include));
   // The others may be in this machine's frame store, from a local run or an earlier farm run.
   const FrameCache store(default_frame_cache_dir(), stage.path("frames"));
   const std::vector<std::uint64_t> keys = frame_store_keys(stage.path("frames"), frames_, options);
+  // Frames an earlier submission finished are kept when everything they depend on is unchanged: the
+  // same size and quality, and the same frame store key (their .pov text, the shared include).
+  FarmConf earlier;
+  std::string ignored;
+  std::vector<std::uint64_t> earlier_keys;
+  if (read_conf(dir_, earlier, ignored) && earlier.width == conf.width && earlier.height == conf.height &&
+      earlier.quality == conf.quality)
+    earlier_keys = frame_store_keys(dir_ + "/frames", std::min(earlier.frames, frames_), options);
   // A frame whose inputs are an earlier frame's is that frame's picture: rendered once, then copied
   // by the task that renders it (and by the movie job, whatever happened to the task).
   FrameCopies copies;
@@ -479,8 +473,9 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   std::vector<int> missing;
   copies_ = 0;
   for (int k = 0; k < frames_; ++k) {
-    const std::string pov = "frames/" + frame_name(k) + ".pov", png = "frames/" + frame_name(k) + ".png";
-    if (comparable && picture_there(dir_, k) && same_file(dir_ + "/" + pov, stage.path(pov)) &&
+    const std::string png = "frames/" + frame_name(k) + ".png";
+    const auto i = static_cast<std::size_t>(k);
+    if (i < earlier_keys.size() && earlier_keys[i] == keys[i] && picture_there(dir_, k) &&
         link_or_copy(dir_ + "/" + png, stage.path(png)))
       continue;
     if (const auto it = copies.source.find(k); it != copies.source.end()) {
