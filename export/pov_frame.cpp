@@ -77,20 +77,36 @@ double shutter_instant(const Shot& shot, double t, double shutter, int k, int st
   return std::clamp(t + shutter * (static_cast<double>(k) / steps - 0.5), 0.0, shot.timeline.duration());
 }
 
-/// Pixels `point(u)` travels across the picture while the shutter of the frame at t is open, the
-/// camera moving too (u runs over the shutter's sub-frame instants).
+/// The open shutter of the frame at t as the blur measures it: its kMeasureSteps + 1 sub-frame
+/// instants and the camera's projection at each.
+struct ShutterViews {
+  std::vector<double> instants;
+  std::vector<PictureProjection> views;
+};
+
+ShutterViews shutter_views(const Shot& shot, double t, double shutter) {
+  ShutterViews s;
+  for (int k = 0; k <= kMeasureSteps; ++k) {
+    s.instants.push_back(shutter_instant(shot, t, shutter, k, kMeasureSteps));
+    s.views.emplace_back(shot.camera->pose(s.instants.back()));
+  }
+  return s;
+}
+
+/// Pixels `point(u)` travels across the picture while the shutter is open, the camera moving too
+/// (u runs over the shutter's sub-frame instants).
 template <class PointAt>
-double picture_travel(const Shot& shot, double t, double shutter, PointAt&& point) {
+double picture_travel(const ShutterViews& shutter, PointAt&& point) {
   double travel = 0;
   Eigen::Vector2d last = Eigen::Vector2d::Zero();
   bool seen_last = false;
   for (int k = 0; k <= kMeasureSteps; ++k) {
-    const double u = shutter_instant(shot, t, shutter, k, kMeasureSteps);
-    const PictureProjection view(shot.camera->pose(u));
-    const Vec3 p = point(u);
+    const PictureProjection& view = shutter.views[static_cast<std::size_t>(k)];
+    const Vec3 p = point(shutter.instants[static_cast<std::size_t>(k)]);
     // What is behind the camera or outside the picture does not count.
-    const bool seen = view.in_front(p) && view.in_picture(view.at(p));
-    const Eigen::Vector2d here = seen ? view.at(p) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d at = view.at(p);
+    const bool seen = view.in_front(p) && view.in_picture(at);
+    const Eigen::Vector2d here = seen ? at : Eigen::Vector2d::Zero();
     if (k > 0 && seen && seen_last) travel += (here - last).norm();
     last = here;
     seen_last = seen;
@@ -109,11 +125,6 @@ int copies_for(double travel, double spacing) {
 /// together they let through kStreakLeak: 1 - a, with (1 - a)^copies = kStreakLeak.
 double copy_transmit(int overlap) { return std::pow(kStreakLeak, 1.0 / std::max(overlap, 1)); }
 
-/// The instant of copy k of `copies`, within the shot.
-double sub_time(const Shot& shot, double t, double shutter, int k, int copies) {
-  return std::clamp(t + shutter * ((k + 0.5) / copies - 0.5), 0.0, shot.timeline.duration());
-}
-
 /// The stick model's placement (its x along the axis, tip at the origin) for a pose, as a POV-Ray
 /// `matrix`.
 std::string stick_place(const CuePose& cue) {
@@ -124,7 +135,6 @@ std::string stick_place(const CuePose& cue) {
   return pov_matrix(along, side, along.cross(side), cue.tip);
 }
 
-constexpr double kStickLength = kCueLength;  // m, the model's tip to butt
 /// Sub-frame instants the stick's way along its axis is measured at across the open shutter.
 constexpr int kStickSteps = 16;
 
@@ -148,13 +158,13 @@ struct FrameBlur {
 StickBlur sweep_stick(const Shot& shot, double t, double shutter, const CuePose& cue) {
   StickBlur blur;
   const PictureProjection view(shot.camera->pose(t));
-  const Vec3 axis = cue.axis.normalized(), butt = cue.tip + kStickLength * axis;
+  const Vec3 axis = cue.axis.normalized(), butt = cue.tip + kCueLength * axis;
   std::vector<double> along;
   std::vector<bool> seen;
   for (int k = 0; k <= kStickSteps; ++k) {
     const CuePose p = shot.cue->pose(shutter_instant(shot, t, shutter, k, kStickSteps));
     seen.push_back(p.visible);
-    const Vec3 tip = p.tip - cue.tip, end = p.tip + kStickLength * p.axis.normalized() - butt;
+    const Vec3 tip = p.tip - cue.tip, end = p.tip + kCueLength * p.axis.normalized() - butt;
     const double s = tip.dot(axis);
     along.push_back(s);
     if (!p.visible) continue;
@@ -194,7 +204,7 @@ StickBlur sweep_stick(const Shot& shot, double t, double shutter, const CuePose&
 int streak_segments(const Shot& shot, int ball, double t, double shutter, double radius) {
   std::vector<Vec3> at;
   for (int k = 0; k <= kMeasureSteps; ++k)
-    at.push_back(shot.timeline.state(ball, shutter_instant(shot, t, shutter, k, kMeasureSteps)).position);
+    at.push_back(shot.timeline.motion_state(ball, shutter_instant(shot, t, shutter, k, kMeasureSteps)).position);
   const Vec3 chord = at.back() - at.front();
   if (chord.norm() < 1e-9) return 1;
   const Vec3 along = chord.normalized();
@@ -209,18 +219,19 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
   FrameBlur blur;
   const double shutter = kShutter / fps;
   const double radius = shot.scene.physics.ball_radius;
+  const ShutterViews views = shutter_views(shot, t, shutter);
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
-    const double travel =
-        picture_travel(shot, t, shutter, [&](double u) { return shot.timeline.state(i, u).position; });
+    const double travel = picture_travel(views, [&](double u) { return shot.timeline.motion_state(i, u).position; });
     blur.ball_segments.push_back(travel < kBlurPixels ? 0 : streak_segments(shot, i, t, shutter, radius));
   }
   const CuePose cue = shot.cue->pose(t);
   if (cue.visible) {
     double travel = 0;
-    for (double along : {0.0, kStickLength}) {
-      travel = std::max(travel, picture_travel(shot, t, shutter, [&](double u) {
+    for (double along : {0.0, kCueLength}) {
+      travel = std::max(travel, picture_travel(views, [&](double u) {
                           // Where the stick is out of the scene, it counts as where it is now.
-                          const CuePose p = shot.cue->pose(u).visible ? shot.cue->pose(u) : cue;
+                          const CuePose at = shot.cue->pose(u);
+                          const CuePose& p = at.visible ? at : cue;
                           return Vec3(p.tip + along * p.axis.normalized());
                         }));
     }
@@ -388,7 +399,7 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
   if (now.visible) out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
-    const CuePose cue = shot.cue->pose(sub_time(shot, t, shutter, k, stick_copies));
+    const CuePose cue = shot.cue->pose(shutter_instant(shot, t, shutter, 2 * k + 1, 2 * stick_copies));
     if (!cue.visible) continue;
     out << "object { CueStickT(" << transmit << ") " << stick_place(cue) << " no_shadow }  // blurred " << k + 1 << "/"
         << stick_copies << "\n";
