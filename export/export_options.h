@@ -10,6 +10,9 @@ namespace bsim {
 
 enum class Quality { draft, final };
 
+/// The preset's name as the command line spells it.
+inline const char* quality_name(Quality quality) { return quality == Quality::final ? "final" : "draft"; }
+
 /// --farm: render on a Slurm cluster (see farm_slurm.h); `none` renders here.
 enum class FarmMode { none, slurm, status, render, assemble };
 

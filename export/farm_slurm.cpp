@@ -54,14 +54,12 @@ struct FarmConf {
   std::string frames_job, movie_job;  ///< ids of the last submission; empty when none
 };
 
-std::string quality_word(Quality q) { return q == Quality::final ? "final" : "draft"; }
-
 std::string conf_text(const FarmConf& c) {
   char duration[64];
   std::snprintf(duration, sizeof duration, "%.17g", c.duration);
   std::ostringstream out;
   out << "# billiards-export --farm slurm: the run's settings, read by its jobs\n"
-      << "fps=" << c.fps << "\nwidth=" << c.width << "\nheight=" << c.height << "\nquality=" << quality_word(c.quality)
+      << "fps=" << c.fps << "\nwidth=" << c.width << "\nheight=" << c.height << "\nquality=" << quality_name(c.quality)
       << "\nduration=" << duration << "\nframes=" << c.frames << "\n";
   if (!c.frames_job.empty()) out << "frames_job=" << c.frames_job << "\n";
   if (!c.movie_job.empty()) out << "movie_job=" << c.movie_job << "\n";
@@ -231,7 +229,7 @@ int farm_status(const std::string& dir) {
   std::error_code ec;
   const bool movie = fs::is_regular_file(dir + "/movie.mp4", ec);
   std::cout << dir << ": " << conf.frames - missing << " of " << conf.frames << " frames rendered (" << conf.width
-            << "x" << conf.height << ", " << quality_word(conf.quality) << ", " << conf.fps << " fps); movie.mp4 "
+            << "x" << conf.height << ", " << quality_name(conf.quality) << ", " << conf.fps << " fps); movie.mp4 "
             << (movie ? "is made" : "not made yet") << "\n";
   if (!conf.frames_job.empty() || !conf.movie_job.empty())
     std::cout << "jobs: " << (conf.frames_job.empty() ? "" : conf.frames_job + " (frames) ") << conf.movie_job

@@ -62,8 +62,6 @@ int process_count(const ExportOptions& options) {
   return pixels <= kSmallFramePixels ? cores() * kSmallFrameProcessesPerCore : cores();
 }
 
-std::string quality_name(Quality quality) { return quality == Quality::final ? "final" : "draft"; }
-
 /// A frame's text without its `//` comment lines (its number and time): what the picture depends on.
 std::string without_comment_lines(const std::string& text) {
   std::string kept;
@@ -120,7 +118,7 @@ std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int f
   // What every picture depends on besides its own .pov text: the size, the quality (and POV-Ray's
   // options for it) and how the picture is developed; "v3" names the store's key format.
   std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                         quality_name(options.quality) + " " + develop_signature();
+                         std::string(quality_name(options.quality)) + " " + develop_signature();
   for (const std::string& flag : povray_quality_arguments(options.quality)) settings += " " + flag;
   const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
   std::vector<std::uint64_t> keys;

@@ -117,9 +117,9 @@ bool write_run_summary(const RunSummary& s, const ExportOptions& o, const std::s
       << "  \"scene\": " << json_string(s.scene) << ",\n"
       << "  \"output\": " << json_string(s.output) << ",\n"
       << "  \"options\": {\"fps\": " << o.fps << ", \"size\": \"" << o.width << "x" << o.height << "\", \"quality\": \""
-      << (o.quality == Quality::final ? "final" : "draft") << "\", \"jobs\": " << o.jobs
-      << ", \"audio_lead\": " << o.audio_lead << ", \"music\": " << json_string(o.music_path)
-      << ", \"strict\": " << (o.strict ? "true" : "false") << ", \"camera\": \"" << (o.auto_camera ? "auto" : "scene")
+      << quality_name(o.quality) << "\", \"jobs\": " << o.jobs << ", \"audio_lead\": " << o.audio_lead
+      << ", \"music\": " << json_string(o.music_path) << ", \"strict\": " << (o.strict ? "true" : "false")
+      << ", \"camera\": \"" << (o.auto_camera ? "auto" : "scene")
       << "\", \"no_render\": " << (o.no_render ? "true" : "false") << "},\n"
       << "  \"frames\": {\"total\": " << s.frames_total << ", \"rendered\": " << s.frames_rendered
       << ", \"reused\": " << s.frames_reused << "},\n"
