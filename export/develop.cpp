@@ -416,7 +416,7 @@ void add_glare(HdrImage& image) {
 }
 
 void saturate(float& r, float& g, float& b) {
-  const float luma = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+  const float luma = kLumaR * r + kLumaG * g + kLumaB * b;
   r = std::max(0.0f, luma + kSaturation * (r - luma));
   g = std::max(0.0f, luma + kSaturation * (g - luma));
   b = std::max(0.0f, luma + kSaturation * (b - luma));

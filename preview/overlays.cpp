@@ -298,12 +298,13 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "t = %.3f s", f.time);
   std::string text = buffer;
+  const std::vector<int> painted = painted_numbers(f.shot.scene);
   if (const Event* e = latest_event(f.shot.timeline, f.time)) {
     std::snprintf(buffer, sizeof buffer, "  \xE2\x80\xA2  after event %d (%.3f s): ", e->index, e->time);
-    text += buffer + event_label(*e, painted_numbers(f.shot.scene));
+    text += buffer + event_label(*e, painted);
   }
   if (const CameraShot* c = camera_shot_at(f.shot, f.time)) {
-    text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c, painted_numbers(f.shot.scene));
+    text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c, painted);
     if (f.shot.camera->pose(f.time).interpolating) text += " (interpolating)";
   }
   const float size = f.fonts.regular_size;
