@@ -87,7 +87,7 @@ PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
   m.facing_deg = m.kind == PocketKind::side ? spec.side_facing_deg : spec.corner_facing_deg;
   // The facing leaves the nose end turned from the nose's direction into the pocket by 180 degrees
   // less the facing angle, towards the cushion's back.
-  const double turn = (180 - m.facing_deg) * std::numbers::pi / 180;
+  const double turn = m.turn();
   const JawEnd* jaw[2] = {&j0, &j1};
   for (int i = 0; i < 2; ++i) {
     m.rail[i] = jaw[i]->rail;
@@ -177,7 +177,7 @@ TableLayout table_layout(const Scene& scene) {
     for (int i = 0; m.jawed() && i < 2; ++i) {
       CushionEnd& end = (m.at_b[i] ? layout.ends_b : layout.ends_a)[static_cast<std::size_t>(m.rail[i])];
       end.pocket = static_cast<int>(k);
-      end.slant = 1 / std::tan((180 - m.facing_deg) * std::numbers::pi / 180);
+      end.slant = 1 / std::tan(m.turn());
     }
     layout.pockets.push_back(m);
   }

@@ -8,6 +8,7 @@
 // Numbers are a standard 9-foot pool table's, after the WPA equipment specifications where they
 // give one (marked "WPA"); the rest (which the WPA leaves open) are typical of commercial tables
 // with K-66 cushions.
+#include <numbers>
 #include <vector>
 
 #include "vec.h"
@@ -209,6 +210,8 @@ struct PocketMouth {
   Vec3 tangent[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< where each facing meets the round back
 
   bool jawed() const { return kind != PocketKind::bare; }
+  /// rad the facing turns from the nose's direction into the pocket: 180 degrees less the facing angle.
+  double turn() const { return (180 - facing_deg) * std::numbers::pi / 180; }
   /// m between the jaws' nose ends (what the WPA calls the mouth).
   double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
   /// m between the facings `behind` m behind the mouth, along the axis.
