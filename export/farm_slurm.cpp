@@ -218,13 +218,8 @@ std::string shown_picture(int frame) {
   return "frame " + std::to_string(frame) + " (frames/" + frame_name(frame) + ".png)";
 }
 
-int farm_status(const std::string& dir) {
-  FarmConf conf;
+int farm_status(const std::string& dir, const FarmConf& conf) {
   std::string error;
-  if (!read_conf(dir, conf, error)) {
-    std::cerr << "billiards-export: error: " << error << "\n";
-    return 1;
-  }
   const int missing = static_cast<int>(missing_frames(dir, conf.frames, read_copies(dir)).size());
   std::error_code ec;
   const bool movie = fs::is_regular_file(dir + "/movie.mp4", ec);
@@ -250,13 +245,8 @@ int farm_status(const std::string& dir) {
   return 0;
 }
 
-int farm_render(const ExportOptions& options, const std::string& dir) {
-  FarmConf conf;
+int farm_render(const ExportOptions& options, const std::string& dir, const FarmConf& conf) {
   std::string error;
-  if (!read_conf(dir, conf, error)) {
-    std::cerr << "billiards-export: error: " << error << "\n";
-    return 1;
-  }
   RenderSettings render{find_program("povray"), conf.width, conf.height, conf.quality, 1, dir + "/frames", true};
   if (render.povray.empty()) {
     char host[256] = "this node";
@@ -316,13 +306,8 @@ std::string task_log(const std::string& dir, const FarmConf& conf, int frame) {
   return kLogs;
 }
 
-int farm_assemble(const ExportOptions& options, const std::string& dir) {
-  FarmConf conf;
+int farm_assemble(const ExportOptions& options, const std::string& dir, const FarmConf& conf) {
   std::string error;
-  if (!read_conf(dir, conf, error)) {
-    std::cerr << "billiards-export: error: " << error << "\n";
-    return 1;
-  }
   // Frames the same as an earlier one are that one's picture, copied.
   const FrameCopies copies = read_copies(dir);
   for (const auto& entry : copies.copies) {
@@ -616,10 +601,17 @@ int SlurmSubmission::submit(std::string& error) {
 
 int run_farm_command(const ExportOptions& options) {
   const std::string dir = options.scene_path.value_or(".");
+  // Every mode on a submitted directory starts from its farm.conf.
+  FarmConf conf;
+  std::string error;
+  if (!read_conf(dir, conf, error)) {
+    std::cerr << "billiards-export: error: " << error << "\n";
+    return 1;
+  }
   switch (options.farm) {
-    case FarmMode::status: return farm_status(dir);
-    case FarmMode::render: return farm_render(options, dir);
-    case FarmMode::assemble: return farm_assemble(options, dir);
+    case FarmMode::status: return farm_status(dir, conf);
+    case FarmMode::render: return farm_render(options, dir, conf);
+    case FarmMode::assemble: return farm_assemble(options, dir, conf);
     case FarmMode::none:
     case FarmMode::slurm: break;
   }
