@@ -292,10 +292,9 @@ int farm_render(const ExportOptions& options, const std::string& dir, const Farm
   return failed.empty() ? 0 : 1;
 }
 
-/// The log of the array task that rendered (or failed) `frame`, as a path inside DIR.
+/// The log of the array task that rendered (or failed) `frame`, a frame of its own (not a copy), as a
+/// path inside DIR.
 std::string task_log(const std::string& dir, const FarmConf& conf, int frame) {
-  const auto copied = read_copies(dir).source;
-  if (const auto it = copied.find(frame); it != copied.end()) frame = it->second;
   std::ifstream in(dir + "/" + kChunks);
   int index = 0;
   for (std::string line; std::getline(in, line); ++index) {
