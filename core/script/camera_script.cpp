@@ -35,12 +35,12 @@ std::string describe_placed(const CameraShot& shot, double time) {
 
 /// Resolves every listed event number or key to its instant in the shot, or reports why it cannot
 /// (an event the shot does not have, a key it never reaches, descriptions out of order).
-std::vector<std::optional<KeyInstant>> resolve_events(const Scene& scene, const Timeline& timeline,
-                                                      std::vector<Diagnostic>& diagnostics) {
+std::vector<std::optional<KeyInstant>> resolve_events(const Scene& scene, const std::vector<CameraShot>& shots,
+                                                      const Timeline& timeline, std::vector<Diagnostic>& diagnostics) {
   std::vector<std::optional<KeyInstant>> resolved;
   std::optional<KeyInstant> latest;
   const CameraShot* latest_shot = nullptr;
-  for (const CameraShot& shot : scene.camera) {
+  for (const CameraShot& shot : shots) {
     const KeyResolution r = resolve_camera_key(shot, scene, timeline);
     if (!r.instant) {
       diagnostics.push_back({Severity::error, r.where, r.problem});
@@ -70,10 +70,10 @@ std::vector<std::optional<KeyInstant>> resolve_events(const Scene& scene, const 
   return resolved;
 }
 
-bool check_balls(const Scene& scene, std::vector<Diagnostic>& diagnostics) {
+bool check_balls(const Scene& scene, const std::vector<CameraShot>& shots, std::vector<Diagnostic>& diagnostics) {
   const int count = static_cast<int>(scene.balls.size());
   bool ok = true;
-  for (const CameraShot& shot : scene.camera) {
+  for (const CameraShot& shot : shots) {
     if (shot.mode == CameraMode::hover || (shot.ball >= 0 && shot.ball < count)) continue;
     diagnostics.push_back(
         {Severity::error, message_loc(shot.ball_loc, shot.loc),
@@ -120,16 +120,21 @@ CameraShot CameraScript::default_shot(const Scene& scene) {
 
 std::optional<CameraScript> CameraScript::build(const Scene& scene, const Timeline& timeline,
                                                 std::vector<Diagnostic>& diagnostics) {
+  return build(scene, scene.camera, timeline, diagnostics);
+}
+
+std::optional<CameraScript> CameraScript::build(const Scene& scene, const std::vector<CameraShot>& shots,
+                                                const Timeline& timeline, std::vector<Diagnostic>& diagnostics) {
   const std::size_t errors_before = diagnostics.size();
-  const std::vector<std::optional<KeyInstant>> resolved = resolve_events(scene, timeline, diagnostics);
+  const std::vector<std::optional<KeyInstant>> resolved = resolve_events(scene, shots, timeline, diagnostics);
   const bool events_ok = diagnostics.size() == errors_before;
-  const bool balls_ok = check_balls(scene, diagnostics);
+  const bool balls_ok = check_balls(scene, shots, diagnostics);
   if (!balls_ok || !events_ok) return std::nullopt;
 
   CameraScript script;
   script.scene_ = &scene;
   script.timeline_ = &timeline;
-  script.shots_ = scene.camera;
+  script.shots_ = shots;
   std::vector<double> times;
   for (const std::optional<KeyInstant>& instant : resolved) times.push_back(instant->time);
   if (script.shots_.empty()) {

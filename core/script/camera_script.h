@@ -58,6 +58,10 @@ class CameraScript {
   /// the script.
   static std::optional<CameraScript> build(const Scene& scene, const Timeline& timeline,
                                            std::vector<Diagnostic>& diagnostics);
+  /// The same for `shots` (copied) in place of the scene's own descriptions, the rest of the scene (its
+  /// balls, its cue) read as it is: a script can be tried without a copy of the scene.
+  static std::optional<CameraScript> build(const Scene& scene, const std::vector<CameraShot>& shots,
+                                           const Timeline& timeline, std::vector<Diagnostic>& diagnostics);
 
   /// The camera used when a scene lists none: a wide hover over the middle of the table.
   static CameraShot default_shot(const Scene& scene);
