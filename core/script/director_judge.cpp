@@ -1,0 +1,153 @@
+#include "director_judge.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnostics.h"
+
+namespace bsim::directing {
+
+namespace {
+
+/// What a candidate aims for: the share of its moving time a pocketed ball, or the cue ball, is in
+/// the picture (above the checks' 80 % and 60 %).
+constexpr double kPocketedTarget = 0.9;
+constexpr double kCueTarget = 0.72;
+/// Candidates evaluated at most for one description before the best so far is taken.
+constexpr int kMaxTries = 90;
+
+bool over(const TableRect& r, const Vec3& p) {
+  return p.x() >= r.x0 && p.x() <= r.x1 && p.y() >= r.y0 && p.y() <= r.y1;
+}
+
+}  // namespace
+
+bool clear_of_room(const TableLayout& layout, const Vec3& p) {
+  if (p.z() < layout.rail_top + 0.03) return false;
+  if (p.z() > kRoom.ceiling - 0.25) return false;
+  const TableRect room = layout.wood_outer.grown(kRoom.margin - 0.4);
+  if (!over(room, p)) return false;
+  if (over(layout.lamp.grown(0.1), p) && p.z() >= layout.lamp_bottom - 0.1) return false;
+  return true;
+}
+
+double side_to_keep(const LineOfAction& line, const Vec3& previous) {
+  const double side = line.side(previous);
+  return std::abs(side) > kOnLine ? (side > 0 ? 1.0 : -1.0) : 0.0;
+}
+
+bool keeps_side(const LineOfAction& line, double wanted, const Vec3& p) { return wanted * line.side(p) >= -kOnLine; }
+
+void hold_after(std::vector<CameraShot>& shots, std::size_t placed) {
+  for (std::size_t k = placed + 1; k < shots.size(); ++k) {
+    const CameraKey key = shots[k].key;
+    shots[k] = shots[placed];
+    shots[k].key = key;
+    shots[k].pre = 0;
+    shots[k].post = 0;
+  }
+}
+
+Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples)
+    : scene_(scene),
+      timeline_(timeline),
+      samples_(samples),
+      layout_(table_layout(scene)),
+      radius_(scene.physics.ball_radius) {
+  for (int b = 0; b < timeline.ball_count(); ++b) {
+    const bool pocketed = std::isfinite(samples.drop_time[static_cast<std::size_t>(b)]);
+    if (pocketed || b == scene.cue.target) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
+  }
+}
+
+std::optional<CameraScript> Judge::film(const std::vector<CameraShot>& shots) const {
+  std::vector<Diagnostic> ignored;
+  return CameraScript::build(scene_, shots, timeline_, ignored);
+}
+
+bool Judge::clear(const Vec3& p, std::size_t sample) const {
+  if (!clear_of_room(layout_, p)) return false;
+  const auto& where = samples_.where[sample];
+  const auto& shown = samples_.shown[sample];
+  for (std::size_t b = 0; b < where.size(); ++b)
+    if (shown[b] && (p - where[b]).norm() < radius_ + kDirectorBallRoom + 0.005) return false;
+  return true;
+}
+
+std::optional<CameraPose> Judge::pose(const std::vector<CameraShot>& shots, double t) const {
+  const std::optional<CameraScript> script = film(shots);
+  if (!script) return std::nullopt;
+  return script->pose(t);
+}
+
+Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<LineOfAction>& lines,
+                        double limit) const {
+  Verdict v;
+  const std::optional<CameraScript> script = film(shots);
+  if (!script) return v;
+  for (const CameraWindow& w : script->windows()) {
+    if (w.begin > limit) continue;
+    const LineOfAction& line = lines[static_cast<std::size_t>(w.shot)];
+    const double a = line.side(script->pose(w.begin).location), b = line.side(script->pose(w.end).location);
+    if ((a > kOnLine && b < -kOnLine) || (a < -kOnLine && b > kOnLine)) return v;
+  }
+  const std::vector<double>& times = samples_.times;
+  std::vector<int> seen(watched_.size(), 0), moving(watched_.size(), 0);
+  double fastest = 0;
+  Vec3 previous(0, 0, 0);
+  for (std::size_t i = 0; i < times.size() && times[i] <= limit; ++i) {
+    const CameraPose pose = script->pose(times[i]);
+    if (!clear(pose.location, i)) return v;
+    if (i > 0) fastest = std::max(fastest, (pose.location - previous).norm() / (times[i] - times[i - 1]));
+    previous = pose.location;
+    for (std::size_t k = 0; k < watched_.size(); ++k) {
+      const auto ball = static_cast<std::size_t>(watched_[k].ball);
+      if (!samples_.moving[i][ball]) continue;
+      ++moving[k];
+      if (in_picture(pose, samples_.where[i][ball], kPlanMargin)) ++seen[k];
+    }
+  }
+  v.ok = true;
+  v.max_speed = fastest;
+  v.shortfall = 0;
+  for (std::size_t k = 0; k < watched_.size(); ++k)
+    if (moving[k] > 0) v.shortfall += std::max(0.0, watched_[k].target - double(seen[k]) / moving[k]);
+  return v;
+}
+
+std::optional<Judge::Choice> Judge::choose_with(std::vector<CameraShot> shots, const std::vector<LineOfAction>& lines,
+                                                std::size_t slot, const std::vector<CameraShot>& candidates,
+                                                const std::vector<Timing>& timings, double limit) const {
+  std::optional<Choice> best;
+  int tries = 0;
+  for (const CameraShot& candidate : candidates) {
+    if (++tries > kMaxTries) break;
+    for (const Timing& timing : timings) {
+      CameraShot shot = candidate;
+      shot.key = shots[slot].key;
+      shot.pre = timing.pre;
+      shot.post = timing.post;
+      shots[slot] = shot;
+      hold_after(shots, slot);
+      const Verdict v = evaluate(shots, lines, limit);
+      if (!v.ok) break;  // another window will hardly make it clear
+      if (v.good()) return Choice{shot, 0.0};
+      if (v.usable() && (!best || v.shortfall < best->shortfall)) best = Choice{shot, v.shortfall};
+    }
+  }
+  return best;
+}
+
+std::optional<CameraShot> Judge::choose(const std::vector<CameraShot>& shots, const std::vector<LineOfAction>& lines,
+                                        std::size_t slot, const std::vector<CameraShot>& candidates,
+                                        const Timings& timings, double limit) const {
+  std::optional<Choice> first = choose_with(shots, lines, slot, candidates, timings.usual, limit);
+  if (first && first->shortfall <= 0) return first->shot;
+  std::optional<Choice> second =
+      timings.early.empty() ? std::nullopt : choose_with(shots, lines, slot, candidates, timings.early, limit);
+  if (second && (!first || second->shortfall < first->shortfall)) return second->shot;
+  if (first) return first->shot;
+  return std::nullopt;
+}
+
+}  // namespace bsim::directing
