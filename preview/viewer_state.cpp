@@ -14,7 +14,7 @@ constexpr double kMinDistance = 0.15, kMaxDistance = 20.0;  // m
 }  // namespace
 
 ViewCamera OrbitCamera::view() const {
-  const double yaw = yaw_deg * std::numbers::pi / 180, pitch = pitch_deg * std::numbers::pi / 180;
+  const double yaw = radians(yaw_deg), pitch = radians(pitch_deg);
   ViewCamera v;
   v.target = target;
   v.eye = target + distance * Vec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
@@ -75,8 +75,8 @@ void ViewerState::step_event(int direction) {
 bool load_into(ViewerState& state) {
   LoadedShot loaded = load_source(state.source);
   state.messages = std::move(loaded.messages);
-  state.load_failed = !loaded.shot;
-  if (!loaded.shot) return false;
+  state.load_failed = !loaded.scripted();
+  if (!loaded.scripted()) return false;
   state.shot = std::move(loaded.shot);
   state.timeline = timeline_data(*state.shot);
   state.paths = overlay_paths(*state.shot);

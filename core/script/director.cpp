@@ -39,7 +39,7 @@ namespace bsim {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = kDegToRad;  // the base's, under the director's short name
 /// Hz at which a candidate script is sampled (speed, clearance, what is in the picture).
 constexpr double kGridHz = 120.0;
 /// m/s the director plans to: a margin under the bound, for what falls between samples.
@@ -94,19 +94,6 @@ CameraShot keyed(CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1, do
   shot.key.b = b;
   shot.key.ordinal = ordinal;
   shot.key.seconds = seconds;
-  std::string text;
-  if (ordinal == CameraKey::kLast) text = "last ";
-  switch (kind) {
-    case CameraKeyKind::start: text += "start"; break;
-    case CameraKeyKind::cue: text += "cue"; break;
-    case CameraKeyKind::end: text += "end"; break;
-    case CameraKeyKind::hit: text += "hit " + std::to_string(a) + " " + std::to_string(b); break;
-    case CameraKeyKind::cushion: text += "cushion " + std::to_string(a); break;
-    case CameraKeyKind::pocket: text += "pocket " + std::to_string(a); break;
-    case CameraKeyKind::at: text += "at " + format_number(seconds); break;
-    case CameraKeyKind::event: break;
-  }
-  shot.key.text = text;
   return shot;
 }
 
@@ -177,11 +164,6 @@ class Director {
     std::vector<Contact> found;
     for (const Event& e : timeline_.events()) {
       if (e.type != EventType::ball_ball) continue;
-      if (e.contacts.empty()) {
-        if (e.balls.size() == 2 && (e.balls[0] == ball || e.balls[1] == ball))
-          found.push_back({e.time, e.balls[0] == ball ? e.balls[1] : e.balls[0]});
-        continue;
-      }
       for (const bsim::Contact& c : e.contacts)
         if (c.a == ball || c.b == ball) found.push_back({c.time, c.a == ball ? c.b : c.a});
     }
@@ -558,7 +540,7 @@ DirectedCamera Director::run() {
   // 3. Wide: the whole table from where the camera is, as the balls settle.
   const int last = static_cast<int>(shots.size()) - 1;
   const auto w = static_cast<std::size_t>(last);
-  if (wide_key && last >= 1 && shots[w].key.text == wide_key->key.text) {
+  if (wide_key && last >= 1 && same_camera_key(shots[w].key, wide_key->key)) {
     const double t0 = *wide_time;
     const double since = t0 - (last >= 2 ? *subject_time : 0.0);
     const TableRect n = layout_.noses;
@@ -649,18 +631,7 @@ double LineOfAction::side(const Vec3& p) const {
 }
 
 bool in_picture(const CameraPose& pose, const Vec3& point, double margin) {
-  // The camera of POV-Ray and the preview: kCameraFovDeg across, the picture's up from picture_up().
-  const Vec3 forward = view_direction(pose.location, pose.look_at);
-  const Vec3 right = forward.cross(picture_up(forward)).normalized();
-  const Vec3 up = right.cross(forward);
-  const Vec3 d = point - pose.location;
-  const double depth = d.dot(forward);
-  if (depth <= 1e-6) return false;
-  const double half_width = std::tan(0.5 * kCameraFovDeg * kDeg);
-  const double half_height = half_width / kPictureAspect;
-  const double x = d.dot(right) / depth / half_width, y = d.dot(up) / depth / half_height;
-  const double limit = 1.0 - 2.0 * margin;
-  return std::abs(x) <= limit && std::abs(y) <= limit;
+  return CameraView(pose).contains(point, margin);
 }
 
 DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline) {
@@ -668,7 +639,6 @@ DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline) {
     DirectedCamera out;
     CameraShot shot = CameraScript::default_shot(scene);
     shot.key.kind = CameraKeyKind::start;
-    shot.key.text = "start";
     shot.location = mm(shot.location);
     shot.target = mm(shot.target);
     out.shots.push_back(shot);
@@ -687,7 +657,7 @@ std::string camera_script_text(const DirectedCamera& camera, const std::string& 
          "# happens, so it stays on its moment when the shot changes; edit the numbers to taste.\n";
   for (std::size_t k = 0; k < camera.shots.size(); ++k) {
     const CameraShot& s = camera.shots[k];
-    std::string line = "event " + s.key.text + " ";
+    std::string line = "event " + camera_key_text(s.key, s.event) + " ";
     append_number(line, s.pre);
     line += ' ';
     append_number(line, s.post);
