@@ -27,14 +27,10 @@ void OrbitCamera::orbit(double dx, double dy) {
 }
 
 void OrbitCamera::pan(double dx, double dy, double view_height_px) {
-  const ViewCamera v = view();
-  const Vec3 forward = (v.target - v.eye).normalized();
-  const Vec3 right = forward.cross(Vec3(0, 0, 1)).normalized();
-  const Vec3 up = right.cross(forward);
+  const CameraView lens = camera_view(view(), kPictureAspect);
   // Move the target so the point under the cursor follows it.
-  const double metres_per_px =
-      2 * distance * std::tan(vertical_fov_deg(v.hfov_deg, 16.0 / 9.0) * std::numbers::pi / 360) / view_height_px;
-  target += (-dx * right + dy * up) * metres_per_px;
+  const double metres_per_px = 2 * distance * lens.half_height() / view_height_px;
+  target += (-dx * lens.right() + dy * lens.up()) * metres_per_px;
 }
 
 void OrbitCamera::zoom(double steps) {
