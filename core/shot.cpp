@@ -21,11 +21,10 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
   if (!shot->camera || has_errors(result.diagnostics)) {
     shot->camera.reset();
-    result.unscripted = std::move(shot);
-    return result;
+  } else {
+    check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
+    shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
   }
-  check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
-  shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
   result.shot = std::move(shot);
   return result;
 }

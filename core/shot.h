@@ -17,7 +17,9 @@
 namespace bsim {
 
 /// The scripts point into the scene and timeline beside them, so a Shot stays where it was built:
-/// it can be neither copied nor moved (hold it by the unique_ptr load_shot returns).
+/// it can be neither copied nor moved (hold it by the unique_ptr load_shot returns). A shot whose
+/// camera script does not fit it (an event number the shot lacks, say) has neither script: the scene
+/// and timeline alone, so a picture of the shot's events can show the user why.
 struct Shot {
   Shot() = default;
   Shot(const Shot&) = delete;
@@ -27,20 +29,18 @@ struct Shot {
 
   Scene scene;
   Timeline timeline;
-  std::optional<CameraScript> camera;  ///< always set in a loaded shot
-  std::optional<CueScript> cue;        ///< always set in a loaded shot
+  std::optional<CameraScript> camera;  ///< none when the camera script does not fit the shot
+  std::optional<CueScript> cue;        ///< set with `camera`
   /// The automatic director's script (its text, comments and lines of action too) when it films the
   /// shot (CameraChoice::automatic); its shots are then scene.camera.
   std::optional<DirectedCamera> directed;
 };
 
 struct ShotResult {
-  std::unique_ptr<Shot> shot;  ///< null when there is an error
-  /// Set when the scene parsed and simulated but its camera script does not fit the shot (an event
-  /// number the shot lacks, say): the scene and timeline without camera or cue, so a picture of the
-  /// shot's events can show the user why.
-  std::unique_ptr<Shot> unscripted;
+  std::unique_ptr<Shot> shot;           ///< null when the scene does not parse; without scripts when they do not fit
   std::vector<Diagnostic> diagnostics;  ///< parse and post-simulation errors and warnings
+  /// The shot ready to film (scripted), else null.
+  const Shot* scripted() const { return shot && shot->camera ? shot.get() : nullptr; }
 };
 
 /// Whose camera script a shot is filmed with: the scene's own (`--camera scene`, the default) or the

@@ -23,7 +23,7 @@ std::string event_json(const Event& e) {
   out += ", \"balls\": " + list(e.balls);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
   out += ", \"speed\": " + format_number(e.speed);
-  if (!e.contacts.empty()) {
+  if (e.grouped && !e.contacts.empty()) {
     // A group collision: every contact of the group, in the order they began.
     out += ", \"contacts\": [";
     for (std::size_t k = 0; k < e.contacts.size(); ++k) {

@@ -93,8 +93,8 @@ int run(const bsim::ExportOptions& options) {
       bsim::load_shot(text, name, {.strict = options.strict},
                       options.auto_camera ? bsim::CameraChoice::automatic : bsim::CameraChoice::scene);
   for (const bsim::Diagnostic& d : loaded.diagnostics) std::cerr << bsim::format_diagnostic(d, shown_path) << "\n";
-  if (!loaded.shot) return 1;
-  const bsim::Shot& shot = *loaded.shot;
+  if (!loaded.scripted()) return 1;
+  const bsim::Shot& shot = *loaded.scripted();
   bsim::RunSummary summary;
   summary.scene = shown_path;
   summary.output = options.out_dir ? *options.out_dir : "out/" + name;

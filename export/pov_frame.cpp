@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "camera_interpolation.h"
+#include "camera_view.h"
 #include "cue_pose.h"
 #include "frames.h"
 #include "pov_format.h"
@@ -37,33 +37,33 @@ void steady_camera(Vec3& location, Vec3& look_at) {
   if (picture_up(d) == Vec3::UnitY()) look_at = location + d.norm() * Vec3(0, 1e-4, d.z() > 0 ? 1 : -1);
 }
 
+/// The camera POV-Ray draws from at one pose (steady_camera()'s).
+CameraView steady_view(const CameraPose& pose) {
+  CameraPose steady = pose;
+  steady_camera(steady.location, steady.look_at);
+  return CameraView(steady);
+}
+
 /// Where points land in the picture of one camera pose, in pixels of a 1280-pixel-wide picture.
 class PictureProjection {
  public:
-  explicit PictureProjection(const CameraPose& pose) : eye_(pose.location) {
-    Vec3 location = pose.location, look_at = pose.look_at;
-    steady_camera(location, look_at);
-    forward_ = view_direction(location, look_at);
-    right_ = forward_.cross(picture_up(forward_)).normalized();
-    up_ = right_.cross(forward_);
-    scale_ = 640.0 / std::tan(0.5 * kCameraFovDeg * std::numbers::pi / 180.0);
-  }
+  explicit PictureProjection(const CameraPose& pose) : view_(steady_view(pose)), scale_(640.0 / view_.half_width()) {}
   /// Whether the point is in front of the camera (else it has no place in the picture).
-  bool in_front(const Vec3& p) const { return (p - eye_).dot(forward_) > 0.05; }
+  bool in_front(const Vec3& p) const { return view_.depth(p) > 0.05; }
   /// Whether a place is in the picture (a 16:9 one), or near enough that its blur would show.
   static bool in_picture(const Eigen::Vector2d& at) { return std::abs(at.x()) < 700 && std::abs(at.y()) < 400; }
   /// The point's place in the picture (pixels from its centre).
   Eigen::Vector2d at(const Vec3& p) const {
-    const Vec3 d = p - eye_;
-    const double ahead = std::max(d.dot(forward_), 1e-3);
-    return {d.dot(right_) / ahead * scale_, d.dot(up_) / ahead * scale_};
+    const Vec3 d = p - view_.eye();
+    const double ahead = std::max(d.dot(view_.forward()), 1e-3);
+    return {d.dot(view_.right()) / ahead * scale_, d.dot(view_.up()) / ahead * scale_};
   }
   /// Pixels a length `size` at `p` spans across the picture.
-  double size_at(const Vec3& p, double size) const { return size / std::max((p - eye_).dot(forward_), 1e-3) * scale_; }
+  double size_at(const Vec3& p, double size) const { return size / std::max(view_.depth(p), 1e-3) * scale_; }
 
  private:
-  Vec3 eye_, forward_{1, 0, 0}, right_{0, 1, 0}, up_{0, 0, 1};
-  double scale_ = 1;
+  CameraView view_;
+  double scale_;
 };
 
 /// Sub-frame instants the blur measures a path at and draws its copies at, across the open shutter.

@@ -19,8 +19,8 @@
 #include "ball_track.h"
 #include "camera_key.h"
 #include "camera_script.h"
+#include "camera_splice.h"
 #include "scene_file.h"
-#include "scene_lexer.h"
 #include "shot.h"
 
 namespace bsim {
@@ -40,13 +40,21 @@ std::string fixed3(double value) {
   return text;
 }
 
-/// "" for the first, "second " to "fifth ", "last " for the last of more than five; nothing when
-/// the k-th (1-based) of n has no name.
-std::optional<std::string> ordinal_word(std::size_t k, std::size_t n) {
-  static const char* const kWords[] = {"", "second ", "third ", "fourth ", "fifth "};
-  if (k >= 1 && k <= 5) return std::string(kWords[k - 1]);
-  if (k == n) return std::string("last ");
+/// The ordinal of the k-th (1-based) of n contacts: k up to the fifth, CameraKey::kLast for the last
+/// of more than five; nothing when it has no name.
+std::optional<int> key_ordinal(std::size_t k, std::size_t n) {
+  if (k >= 1 && k <= 5) return static_cast<int>(k);
+  if (k == n) return CameraKey::kLast;
   return std::nullopt;
+}
+
+CameraKey key_of(CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1) {
+  CameraKey key;
+  key.kind = kind;
+  key.a = a;
+  key.b = b;
+  key.ordinal = ordinal;
+  return key;
 }
 
 struct Instant {
@@ -62,14 +70,13 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
   bool cue_named = false;
   for (const Event& e : timeline.events()) {
     switch (e.type) {
-      case EventType::start: moments.push_back({"start", e.time, e.index}); break;
-      case EventType::end: moments.push_back({"end", e.time, e.index}); break;
+      case EventType::start: moments.push_back({camera_key_text(key_of(CameraKeyKind::start)), e.time, e.index}); break;
+      case EventType::end: moments.push_back({camera_key_text(key_of(CameraKeyKind::end)), e.time, e.index}); break;
       case EventType::cue:
-        if (!cue_named) moments.push_back({"cue", e.time, e.index});
+        if (!cue_named) moments.push_back({camera_key_text(key_of(CameraKeyKind::cue)), e.time, e.index});
         cue_named = true;
         break;
       case EventType::ball_ball:
-        if (e.contacts.empty() && e.balls.size() == 2) hits[{e.balls[0], e.balls[1]}].push_back({e.time, e.index});
         for (const Contact& c : e.contacts) hits[{std::min(c.a, c.b), std::max(c.a, c.b)}].push_back({c.time, e.index});
         break;
       case EventType::ball_rail:
@@ -81,19 +88,20 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
   for (auto& [pair, found] : hits) {
     std::stable_sort(found.begin(), found.end(), [](const Instant& x, const Instant& y) { return x.time < y.time; });
     for (std::size_t k = 0; k < found.size(); ++k)
-      if (const auto word = ordinal_word(k + 1, found.size()))
-        moments.push_back({*word + "hit " + std::to_string(pair.first) + " " + std::to_string(pair.second),
+      if (const auto ordinal = key_ordinal(k + 1, found.size()))
+        moments.push_back({camera_key_text(key_of(CameraKeyKind::hit, pair.first, pair.second, *ordinal)),
                            found[k].time, found[k].event});
   }
   for (const auto& [ball, found] : cushions)
     for (std::size_t k = 0; k < found.size(); ++k)
-      if (const auto word = ordinal_word(k + 1, found.size()))
-        moments.push_back({*word + "cushion " + std::to_string(ball), found[k].time, found[k].event});
+      if (const auto ordinal = key_ordinal(k + 1, found.size()))
+        moments.push_back(
+            {camera_key_text(key_of(CameraKeyKind::cushion, ball, -1, *ordinal)), found[k].time, found[k].event});
   std::vector<int> dropped;
   for (const PocketDrop& d : timeline.pocket_drops()) {
     if (std::find(dropped.begin(), dropped.end(), d.ball) != dropped.end()) continue;
     dropped.push_back(d.ball);
-    moments.push_back({"pocket " + std::to_string(d.ball), d.time, -1});
+    moments.push_back({camera_key_text(key_of(CameraKeyKind::pocket, d.ball)), d.time, -1});
   }
   return moments;
 }
@@ -103,41 +111,9 @@ Vec3 rounded(const Vec3& v) {
   return {mm(v.x()), mm(v.y()), mm(v.z())};
 }
 
-std::size_t offset_of(std::string_view text, const Token& token) {
-  return static_cast<std::size_t>(token.text.data() - text.data());
-}
-
-std::size_t token_end(std::string_view text, const Token& token) { return offset_of(text, token) + token.text.size(); }
-
-std::size_t line_start(std::string_view text, std::size_t offset) {
-  const std::size_t nl = offset == 0 ? std::string_view::npos : text.rfind('\n', offset - 1);
-  return nl == std::string_view::npos ? 0 : nl + 1;
-}
-
-bool only_blanks(std::string_view text, std::size_t from, std::size_t to) {
-  for (std::size_t i = from; i < to; ++i)
-    if (text[i] != ' ' && text[i] != '\t' && text[i] != '\r') return false;
-  return true;
-}
-
-/// The spaces and tabs a line starts with.
-std::string indent_of(std::string_view text, std::size_t offset) {
-  const std::size_t start = line_start(text, offset);
-  std::size_t end = start;
-  while (end < text.size() && (text[end] == ' ' || text[end] == '\t')) ++end;
-  return std::string(text.substr(start, end - start));
-}
-
 int line_at(std::string_view text, std::size_t offset) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
-
-std::size_t token_count(const CameraKey& key) {
-  if (key.kind == CameraKeyKind::event) return 1;
-  return 1 + static_cast<std::size_t>(std::count(key.text.begin(), key.text.end(), ' '));
-}
-
-bool same_loc(const SourceLoc& a, const SourceLoc& b) { return a.line == b.line && a.column == b.column; }
 
 /// The camera the placement asks for, given the description that already starts at the moment.
 CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* existing, const Scene& scene,
@@ -158,7 +134,7 @@ CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* exist
   }
   // The eye as the follow camera's offset: ahead, left and up in the ball's frame at time t.
   std::optional<double> heading;
-  if (placement.ball == scene.cue.target) heading = scene.cue.heading_deg * std::numbers::pi / 180;
+  if (placement.ball == scene.cue.target) heading = scene.cue.heading_deg * kDegToRad;
   const BallTrack track(timeline, placement.ball, heading);
   const Vec3 ahead = track.heading(t), left(-ahead.y(), ahead.x(), 0), from = placement.eye - track.position(t);
   shot.mode = CameraMode::follow;
@@ -220,10 +196,9 @@ NamedMoment name_moment(const Timeline& timeline, double t) {
   if (nearest && std::abs(nearest->time - t) <= kKeySnap) return *nearest;
   // `at T` counts from the start of the shot; T rounded down to the millisecond stays in the shot.
   const double start = timeline.events().empty() ? 0.0 : timeline.events().front().time;
-  const double seconds = std::max(0.0, std::floor((t - start) * 1000 + 1e-6) / 1000);
-  NamedMoment at{"at " + fixed3(seconds), 0, -1};
-  at.time = start + std::strtod(fixed3(seconds).c_str(), nullptr);
-  return at;
+  CameraKey key = key_of(CameraKeyKind::at);
+  key.seconds = std::strtod(fixed3(std::max(0.0, std::floor((t - start) * 1000 + 1e-6) / 1000)).c_str(), nullptr);
+  return {camera_key_text(key), start + key.seconds, -1};
 }
 
 std::string format_description(const std::string& key, double pre, double post, const CameraShot& camera) {
@@ -234,7 +209,7 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
                         const CameraPlacement& placement) {
   CameraEdit edit;
   ShotResult loaded = load_shot(text, fs::path(shown_path).stem().string());
-  const Shot* shot = loaded.shot ? loaded.shot.get() : loaded.unscripted.get();
+  const Shot* shot = loaded.shot.get();
   if (!shot) {
     edit.error = "the camera was not written: the scene file has errors; fix them first (" +
                  first_error(loaded.diagnostics, shown_path) + ")";
@@ -250,114 +225,29 @@ CameraEdit place_camera(std::string_view text, const std::string& shown_path, do
   t = std::clamp(t, 0.0, timeline.duration());
   const NamedMoment moment = name_moment(timeline, t);
 
-  // Each description's instant, and the one (if any) already at this moment.
-  std::vector<std::optional<KeyInstant>> instants;
-  const CameraShot* existing = nullptr;
+  // Each description's instant, the one (if any) already at this moment, and the first that starts later.
+  std::optional<std::size_t> existing, before;
   for (std::size_t i = 0; i < scene.camera.size(); ++i) {
-    instants.push_back(resolve_camera_key(scene.camera[i], scene, timeline).instant);
-    const auto& at = instants.back();
-    if (!existing && at && at->time == moment.time && at->event == moment.event) existing = &scene.camera[i];
+    const std::optional<KeyInstant> at = resolve_camera_key(scene.camera[i], scene, timeline).instant;
+    if (!at) continue;
+    if (!existing && at->time == moment.time && at->event == moment.event) existing = i;
+    const bool later = at->time > moment.time ||
+                       (at->time == moment.time && at->event >= 0 && moment.event >= 0 && at->event > moment.event);
+    if (!before && later) before = i;
   }
-  const CameraShot camera = placed_shot(placement, existing, scene, timeline, t);
-
-  const LexedText lexed = lex_scene(text);
-  const std::vector<Token>& tokens = lexed.tokens;
-  const auto token_at = [&](const SourceLoc& loc) -> std::optional<std::size_t> {
-    for (std::size_t k = 0; k < tokens.size(); ++k)
-      if (same_loc(tokens[k].loc, loc)) return k;
-    return std::nullopt;
-  };
-  // The tokens of description i: from its `event` to before the next `event` or `endcamera`.
-  const auto description_end = [&](std::size_t first) {
-    std::size_t last = first;
-    while (last + 1 < tokens.size() && tokens[last + 1].text != "event" && tokens[last + 1].text != "endcamera") ++last;
-    return last;
-  };
-
-  std::string out(text);
-  const std::string nl = text.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";  // the file's line ends
-  std::size_t at = 0;      // where the description starts in `out`
-  std::size_t at_end = 0;  // where it ends
-  if (existing) {
-    const std::optional<std::size_t> first = token_at(existing->loc);
-    const std::size_t mode_token = first ? *first + 1 + token_count(existing->key) + 2 : tokens.size();
-    if (!first || mode_token >= tokens.size()) {
-      edit.error =
-          "the camera was not written: cannot find the description on line " + std::to_string(existing->loc.line);
-      return edit;
-    }
-    const std::size_t from = offset_of(text, tokens[mode_token]);
-    const std::size_t to = token_end(text, tokens[description_end(*first)]);
-    const std::string replacement = mode_text(camera);
-    out.replace(from, to - from, replacement);
-    at = offset_of(text, tokens[*first]);
-    at_end = from + replacement.size();
-    edit.replaced = true;
-  } else {
-    const std::string line = format_description(moment.key, kWrittenPre, kWrittenPost, camera);
-    // Before the first description that starts later.
-    std::optional<std::size_t> before;
-    for (std::size_t i = 0; i < scene.camera.size() && !before; ++i) {
-      const auto& instant = instants[i];
-      if (!instant) continue;
-      const bool later = instant->time > moment.time || (instant->time == moment.time && instant->event >= 0 &&
-                                                         moment.event >= 0 && instant->event > moment.event);
-      if (later) before = i;
-    }
-    const std::optional<std::size_t> camera_token =
-        scene.camera_loc.known() ? token_at(scene.camera_loc) : std::optional<std::size_t>{};
-    std::optional<std::size_t> end_token;
-    if (camera_token)
-      for (std::size_t k = *camera_token + 1; k < tokens.size() && !end_token; ++k)
-        if (tokens[k].text == "endcamera") end_token = k;
-
-    if (before) {
-      const std::optional<std::size_t> first = token_at(scene.camera[*before].loc);
-      if (!first) {
-        edit.error = "the camera was not written: cannot find the description on line " +
-                     std::to_string(scene.camera[*before].loc.line);
-        return edit;
-      }
-      const std::size_t o = offset_of(text, tokens[*first]);
-      const std::size_t start = line_start(text, o);
-      if (only_blanks(text, start, o)) {
-        out.insert(start, indent_of(text, o) + line + nl);
-        at = start + indent_of(text, o).size();
-      } else {
-        out.insert(o, line + nl);
-        at = o;
-      }
-      at_end = at + line.size();
-    } else if (end_token) {
-      const std::size_t e = offset_of(text, tokens[*end_token]);
-      const std::size_t start = line_start(text, e);
-      // Indented like the last description, or like `endcamera` in an empty block.
-      std::string indent = indent_of(text, e);
-      if (!scene.camera.empty())
-        if (const auto last = token_at(scene.camera.back().loc))
-          indent = indent_of(text, offset_of(text, tokens[*last]));
-      if (only_blanks(text, start, e)) {
-        out.insert(start, indent + line + nl);
-        at = start + indent.size();
-      } else {
-        // `camera endcamera` or a description and `endcamera` on one line: break the line there.
-        const std::size_t p = token_end(text, tokens[*end_token - 1]);
-        out.replace(p, e - p, nl + indent + line + nl);
-        at = p + nl.size() + indent.size();
-      }
-      at_end = at + line.size();
-    } else {
-      // No camera block: one at the end of the file.
-      if (!out.empty() && out.back() != '\n') out += nl;
-      out += "camera" + nl;
-      at = out.size();
-      out += line + nl + "endcamera" + nl;
-      at_end = at + line.size();
-    }
+  const CameraShot camera = placed_shot(placement, existing ? &scene.camera[*existing] : nullptr, scene, timeline, t);
+  const CameraSplice splice =
+      existing ? replace_camera_mode(text, scene, *existing, mode_text(camera))
+               : insert_camera_description(text, scene, before,
+                                           format_description(moment.key, kWrittenPre, kWrittenPost, camera));
+  if (!splice.error.empty()) {
+    edit.error = "the camera was not written: " + splice.error;
+    return edit;
   }
-  edit.text = std::move(out);
-  edit.description = edit.text.substr(at, at_end - at);
-  edit.line = line_at(edit.text, at);
+  edit.replaced = existing.has_value();
+  edit.text = splice.text;
+  edit.description = edit.text.substr(splice.begin, splice.end - splice.begin);
+  edit.line = line_at(edit.text, splice.begin);
   return edit;
 }
 
@@ -365,14 +255,7 @@ std::optional<int> ball_at_pixel(const Timeline& timeline, double t, const ViewC
                                  double height, double x, double y) {
   if (width <= 0 || height <= 0) return std::nullopt;
   // The ray through the pixel, in the frame view_matrix() and projection_matrix() use.
-  const Vec3 forward = (camera.target - camera.eye).normalized();
-  const Vec3 right = forward.cross(view_up(camera)).normalized();
-  const Vec3 up = right.cross(forward);
-  const double aspect = width / height;
-  const double half_w = std::tan(camera.hfov_deg * std::numbers::pi / 360);
-  const double half_h = std::tan(vertical_fov_deg(camera.hfov_deg, aspect) * std::numbers::pi / 360);
-  const double nx = 2 * x / width - 1, ny = 1 - 2 * y / height;
-  const Vec3 ray = (forward + nx * half_w * right + ny * half_h * up).normalized();
+  const Vec3 ray = camera_view(camera, width / height).ray(picture_point(x, y, width, height));
   const double radius = timeline.physics().ball_radius * 1.25;
   std::optional<int> best;
   double best_distance = std::numeric_limits<double>::infinity();

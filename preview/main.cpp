@@ -25,13 +25,13 @@ int main(int argc, char** argv) {
 
   const bsim::LoadedShot loaded = bsim::load_source(source);
   for (const std::string& line : loaded.messages) std::cerr << line << "\n";
-  if (options.timeline && loaded.unscripted) {
+  if (options.timeline && loaded.shot && !loaded.scripted()) {
     // The camera script failed: the picture of the real events shows why, but the run still fails.
     const std::string file = std::filesystem::path(source.shown_path).filename().string();
-    bsim::run_timeline_picture(options, bsim::unscripted_timeline_data(*loaded.unscripted, loaded.diagnostics, file));
+    bsim::run_timeline_picture(options, bsim::unscripted_timeline_data(*loaded.shot, loaded.diagnostics, file));
     return 1;
   }
-  if (!loaded.shot) return 1;
+  if (!loaded.scripted()) return 1;
   if (options.write_camera) {
     const int status = bsim::run_write_camera(*options.write_camera, *loaded.shot, options.quiet);
     if (status != 0 || !pictures) return status;

@@ -260,7 +260,7 @@ void draw_map_camera_now(ImDrawList& list, const OverlayFrame& f, const CameraMa
   dir.z() = 0;
   if (dir.norm() > 1e-6) {
     dir.normalize();
-    const double half = kCameraFovDeg * std::numbers::pi / 360.0;
+    const double half = 0.5 * kCameraFovDeg * kDegToRad;
     const double reach = 0.6;
     for (double side : {-1.0, 1.0}) {
       const double c = std::cos(side * half), s = std::sin(side * half);
@@ -325,14 +325,16 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
   draw_projected_path(list, project, path, IM_COL32(255, 214, 90, 150), 1.5f);
 
   const ViewCamera scripted = scripted_view(f.shot, f.time);
-  const Vec3 forward = view_direction(scripted.eye, scripted.target);
-  const Vec3 right = forward.cross(view_up(scripted)).normalized();
-  const Vec3 up = right.cross(forward);
+  const CameraView view = camera_view(scripted, aspect);
   const double depth = 0.35;  // m, how far the drawn frustum reaches
-  const double half_w = std::tan(scripted.hfov_deg * std::numbers::pi / 360.0) * depth, half_h = half_w / aspect;
-  const Vec3 centre = scripted.eye + forward * depth;
-  const Vec3 corners[4] = {centre + right * half_w + up * half_h, centre - right * half_w + up * half_h,
-                           centre - right * half_w - up * half_h, centre + right * half_w - up * half_h};
+  const Vec3 centre = scripted.eye + view.forward() * depth;
+  const Vec3 to_top = view.up() * (view.half_height() * depth);  // from the centre to the top edge
+  // The picture's corners `depth` ahead: top right, top left, bottom left, bottom right.
+  const PicturePoint at[4] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  Vec3 corners[4];
+  for (int k = 0; k < 4; ++k)
+    corners[k] =
+        centre + depth * (at[k].x * view.half_width() * view.right() + at[k].y * view.half_height() * view.up());
   const ImU32 color = IM_COL32(255, 214, 90, 255);
   ImVec2 eye, c[4];
   bool ok = project(scripted.eye, eye);
@@ -343,7 +345,7 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
       list.AddLine(c[k], c[(k + 1) % 4], color, 2.f);
     }
     ImVec2 top;
-    if (project(centre + up * half_h * 1.3, top)) list.AddTriangleFilled(c[0], c[1], top, IM_COL32(255, 214, 90, 160));
+    if (project(centre + to_top * 1.3, top)) list.AddTriangleFilled(c[0], c[1], top, IM_COL32(255, 214, 90, 160));
   }
   ImVec2 from, to;
   if (project(scripted.eye, from) && project(scripted.target, to)) {

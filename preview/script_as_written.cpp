@@ -37,7 +37,7 @@ std::vector<TimelineCameraSpan> written_camera_spans(const Scene& scene, const T
   for (const CameraShot& shot : scene.camera) {
     TimelineCameraSpan span;
     span.event = shot.event;
-    span.key = shot.key.text;
+    if (shot.key.kind != CameraKeyKind::event) span.key = camera_key_text(shot.key);
     span.mode = shot.mode;
     span.label = camera_shot_label(shot, painted_numbers(scene));
     const KeyResolution at = resolve_camera_key(shot, scene, timeline);

@@ -17,7 +17,7 @@ namespace bsim {
 std::vector<TimelineCameraSpan> written_camera_spans(const Scene& scene, const Timeline& timeline,
                                                      const std::vector<Diagnostic>& diagnostics);
 
-/// The timeline picture's contents for a shot whose camera script failed (ShotResult::unscripted):
+/// The timeline picture's contents for a shot whose camera script failed (a Shot without scripts):
 /// the events and drops as simulated, the script as written, and every error as `path:line:col:
 /// error: message` (naming the file `path`).
 TimelineData unscripted_timeline_data(const Shot& shot, const std::vector<Diagnostic>& diagnostics,

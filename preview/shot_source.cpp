@@ -37,7 +37,6 @@ LoadedShot load_source(const SceneSource& source) {
   ShotResult result = load_shot(text, source.name, {.strict = source.strict},
                                 source.auto_camera ? CameraChoice::automatic : CameraChoice::scene);
   loaded.shot = std::move(result.shot);
-  loaded.unscripted = std::move(result.unscripted);
   loaded.diagnostics = std::move(result.diagnostics);
   for (const Diagnostic& d : loaded.diagnostics) loaded.messages.push_back(format_diagnostic(d, source.shown_path));
   return loaded;

@@ -21,13 +21,14 @@ struct SceneSource {
 SceneSource scene_source(const std::optional<std::string>& path, bool strict);
 
 struct LoadedShot {
-  std::unique_ptr<Shot> shot;  ///< null on any error
-  /// The simulated shot without camera or cue when only its camera script failed (see ShotResult).
-  std::unique_ptr<Shot> unscripted;
+  /// Null when the scene does not load; without camera or cue when only its camera script failed (see Shot).
+  std::unique_ptr<Shot> shot;
   std::vector<Diagnostic> diagnostics;
   std::string read_error;  ///< set when the file cannot be read
   /// Every problem as the lines a user sees: "PATH:LINE:COL: error: ...".
   std::vector<std::string> messages;
+  /// The shot ready to film (scripted), else null.
+  const Shot* scripted() const { return shot && shot->camera ? shot.get() : nullptr; }
 };
 
 /// Reads and loads the scene. Never exits.

@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "camera_key_text.h"
 #include "labels.h"
 #include "shot.h"
 
@@ -626,8 +627,8 @@ TimelineData timeline_data(const Shot& shot) {
     for (const CameraSegment& s : shot.camera->segments()) {
       if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
       const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
-      data.camera.push_back(
-          {s.begin, s.end, c.event, c.mode, camera_shot_label(c, data.painted), {}, true, c.key.text});
+      const std::string key = c.key.kind == CameraKeyKind::event ? std::string() : camera_key_text(c.key);
+      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c, data.painted), {}, true, key});
     }
     for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
   }

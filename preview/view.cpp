@@ -18,15 +18,21 @@ ViewCamera scripted_view(const Shot& shot, double t) {
 
 Vec3 view_up(const ViewCamera& camera) { return picture_up(view_direction(camera.eye, camera.target)); }
 
+CameraView camera_view(const ViewCamera& camera, double aspect) {
+  CameraPose pose;
+  pose.location = camera.eye;
+  pose.look_at = camera.target;
+  return CameraView(pose, camera.hfov_deg, aspect);
+}
+
 double vertical_fov_deg(double hfov_deg, double aspect) {
   const double half = hfov_deg * std::numbers::pi / 360.0;
   return 2.0 * std::atan(std::tan(half) / aspect) * 180.0 / std::numbers::pi;
 }
 
 Eigen::Matrix4f view_matrix(const ViewCamera& camera) {
-  const Vec3 forward = view_direction(camera.eye, camera.target);
-  const Vec3 right = forward.cross(view_up(camera)).normalized();
-  const Vec3 up = right.cross(forward);
+  const CameraView view = camera_view(camera, 1.0);
+  const Vec3 &forward = view.forward(), &right = view.right(), &up = view.up();
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.block<1, 3>(0, 0) = right.transpose();
   m.block<1, 3>(1, 0) = up.transpose();
@@ -38,8 +44,8 @@ Eigen::Matrix4f view_matrix(const ViewCamera& camera) {
 }
 
 Eigen::Matrix4f projection_matrix(const ViewCamera& camera, double aspect) {
-  const double half_width = std::tan(camera.hfov_deg * std::numbers::pi / 360.0);
-  const double half_height = half_width / aspect;
+  const CameraView view = camera_view(camera, aspect);
+  const double half_width = view.half_width(), half_height = view.half_height();
   const double n = kNearClip, f = kFarClip;
   Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
   p(0, 0) = 1.0 / half_width;

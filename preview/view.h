@@ -3,7 +3,7 @@
 // the POV-Ray frames use) or a free orbit camera, and the GL matrices for it.
 #include <Eigen/Core>
 
-#include "camera_interpolation.h"
+#include "camera_view.h"
 #include "vec.h"
 
 namespace bsim {
@@ -25,6 +25,9 @@ ViewCamera scripted_view(const Shot& shot, double t);
 
 /// The up vector used for a view: the core's picture_up() (+z, or +y when looking straight down or up).
 Vec3 view_up(const ViewCamera& camera);
+
+/// The core's camera model for a view drawn `aspect` wide (width / height).
+CameraView camera_view(const ViewCamera& camera, double aspect);
 
 /// Vertical field of view in degrees for a horizontal one at the given width / height.
 double vertical_fov_deg(double hfov_deg, double aspect);

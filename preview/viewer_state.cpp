@@ -14,7 +14,7 @@ constexpr double kMinDistance = 0.15, kMaxDistance = 20.0;  // m
 }  // namespace
 
 ViewCamera OrbitCamera::view() const {
-  const double yaw = yaw_deg * std::numbers::pi / 180, pitch = pitch_deg * std::numbers::pi / 180;
+  const double yaw = radians(yaw_deg), pitch = radians(pitch_deg);
   ViewCamera v;
   v.target = target;
   v.eye = target + distance * Vec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
@@ -27,14 +27,10 @@ void OrbitCamera::orbit(double dx, double dy) {
 }
 
 void OrbitCamera::pan(double dx, double dy, double view_height_px) {
-  const ViewCamera v = view();
-  const Vec3 forward = (v.target - v.eye).normalized();
-  const Vec3 right = forward.cross(Vec3(0, 0, 1)).normalized();
-  const Vec3 up = right.cross(forward);
+  const CameraView lens = camera_view(view(), kPictureAspect);
   // Move the target so the point under the cursor follows it.
-  const double metres_per_px =
-      2 * distance * std::tan(vertical_fov_deg(v.hfov_deg, 16.0 / 9.0) * std::numbers::pi / 360) / view_height_px;
-  target += (-dx * right + dy * up) * metres_per_px;
+  const double metres_per_px = 2 * distance * lens.half_height() / view_height_px;
+  target += (-dx * lens.right() + dy * lens.up()) * metres_per_px;
 }
 
 void OrbitCamera::zoom(double steps) {
@@ -75,8 +71,8 @@ void ViewerState::step_event(int direction) {
 bool load_into(ViewerState& state) {
   LoadedShot loaded = load_source(state.source);
   state.messages = std::move(loaded.messages);
-  state.load_failed = !loaded.shot;
-  if (!loaded.shot) return false;
+  state.load_failed = !loaded.scripted();
+  if (!loaded.scripted()) return false;
   state.shot = std::move(loaded.shot);
   state.timeline = timeline_data(*state.shot);
   state.paths = overlay_paths(*state.shot);

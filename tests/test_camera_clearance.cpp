@@ -40,7 +40,7 @@ Loaded load(const std::vector<std::string>& lines) {
   std::string text = kBalls + "camera\n";
   for (const std::string& line : lines) text += line + "\n";
   Loaded loaded{load_shot(text + "endcamera\n", "clearance"), {}};
-  REQUIRE(loaded.result.shot);
+  REQUIRE(loaded.result.scripted());
   for (const Diagnostic& d : loaded.result.diagnostics) {
     CHECK(d.severity == Severity::warning);
     if (d.severity == Severity::warning) loaded.warnings.push_back(d);
@@ -163,7 +163,7 @@ TEST_SUITE("camera clearance") {
       const std::string name = scene.first;
       CAPTURE(name);
       const ShotResult result = load_shot(scene.second, name);
-      REQUIRE(result.shot);
+      REQUIRE(result.scripted());
       for (const Diagnostic& d : result.diagnostics) CHECK_MESSAGE(false, format_diagnostic(d, name));
     }
   }

@@ -130,7 +130,7 @@ TEST_SUITE("camera edit") {
     CHECK(edit.line == 6);
     CHECK(edit.description == "event start 0.3 0 hover 0 -2.5 1.5 0.1 0 0");
     CHECK_FALSE(edit.replaced);
-    CHECK(load_shot(edit.text, "s").shot);
+    CHECK(load_shot(edit.text, "s").scripted());
   }
 
   TEST_CASE("an empty block, on its own lines or on one line") {
@@ -143,7 +143,7 @@ TEST_SUITE("camera edit") {
     const CameraEdit one = place_camera(balls + "camera endcamera\n", "s.scn", 0, p);
     REQUIRE(one.error.empty());
     CHECK(one.text == balls + "camera\nevent start 0.3 0 hover 1 -2 1.25 0 0 0\nendcamera\n");
-    CHECK(load_shot(one.text, "s").shot);
+    CHECK(load_shot(one.text, "s").scripted());
   }
 
   TEST_CASE("a file with CRLF line ends gets CRLF lines") {

@@ -48,7 +48,7 @@ std::vector<double> cushion_times(const Timeline& timeline, int ball) {
 /// The only error loading `text` reports.
 Diagnostic only_error(const std::string& text, const ParseOptions& options = {}) {
   const ShotResult result = load_shot(text, "bad", options);
-  CHECK_FALSE(result.shot);
+  CHECK_FALSE(result.scripted());
   REQUIRE(result.diagnostics.size() == 1);
   CHECK(result.diagnostics[0].severity == Severity::error);
   return result.diagnostics[0];
@@ -85,12 +85,12 @@ TEST_SUITE("camera_keys") {
     CHECK(c[2].key.kind == CameraKeyKind::hit);
     CHECK(c[2].key.a == 1);
     CHECK(c[2].key.b == 0);
-    CHECK(c[2].key.text == "hit 1 0");
+    CHECK(camera_key_text(c[2].key) == "hit 1 0");
     CHECK(c[2].pre == 0.2);
     CHECK(c[2].mode == CameraMode::look);
     CHECK(c[3].key.kind == CameraKeyKind::cushion);
     CHECK(c[3].key.ordinal == 2);
-    CHECK(c[3].key.text == "second cushion 0");
+    CHECK(camera_key_text(c[3].key) == "second cushion 0");
     CHECK(c[3].event_loc.line == 8);
     CHECK(c[3].event_loc.column == 7);
     CHECK(c[3].key.a_loc.column == 23);
@@ -98,11 +98,11 @@ TEST_SUITE("camera_keys") {
     CHECK(c[5].key.kind == CameraKeyKind::pocket);
     CHECK(c[6].key.kind == CameraKeyKind::at);
     CHECK(c[6].key.seconds == 4.25);
-    CHECK(c[6].key.text == "at 4.25");
+    CHECK(camera_key_text(c[6].key) == "at 4.25");
     CHECK(c[7].key.kind == CameraKeyKind::end);
     CHECK(c[8].key.kind == CameraKeyKind::event);
     CHECK(c[8].event == 3);
-    CHECK(c[8].key.text.empty());
+    CHECK(camera_key_text(c[8].key, c[8].event) == "3");
   }
 
   TEST_CASE("start, cue, end and at resolve to the shot's start, cue strike, end and a time") {
@@ -335,9 +335,10 @@ TEST_SUITE("camera_keys") {
     // A script that does not fit: the unreached key is unplaced and says why.
     const ShotResult failed =
         load_shot(two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event pocket 1 0 0 look 0 -2 1 1"}), "failed");
-    REQUIRE(failed.unscripted);
+    CHECK_FALSE(failed.scripted());
+    REQUIRE(failed.shot);
     const std::vector<TimelineCameraSpan> spans =
-        written_camera_spans(failed.unscripted->scene, failed.unscripted->timeline, failed.diagnostics);
+        written_camera_spans(failed.shot->scene, failed.shot->timeline, failed.diagnostics);
     REQUIRE(spans.size() == 2);
     CHECK_FALSE(spans[1].placed);
     CHECK(spans[1].key == "pocket 1");

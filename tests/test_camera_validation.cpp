@@ -25,7 +25,7 @@ int event_count() {
 /// The one error load_shot reports for the camera lines `camera` (starting on line 5).
 Diagnostic only_error(const std::string& camera) {
   ShotResult result = load_shot(kBalls + "camera\n" + camera + "endcamera\n", "bad");
-  CHECK_FALSE(result.shot);
+  CHECK_FALSE(result.scripted());
   REQUIRE(result.diagnostics.size() == 1);
   CHECK(result.diagnostics[0].severity == Severity::error);
   return result.diagnostics[0];
@@ -51,7 +51,7 @@ TEST_SUITE("camera_validation") {
     ShotResult fine = load_shot(kBalls + "camera\nevent 0 0 0 hover 0 -3 2 0 0 0\nevent " + std::to_string(n - 1) +
                                     " 0.5 0 hover 1 -3 2 0 0 0\nendcamera\n",
                                 "fine");
-    CHECK(fine.shot);
+    CHECK(fine.scripted());
     const Diagnostic d =
         only_error("event 0 0 0 hover 0 -3 2 0 0 0\n  event  " + std::to_string(n) + " 0.5 0 hover 1 -3 2 0 0 0\n");
     CHECK(d.loc.line == 6);

@@ -76,11 +76,11 @@ TEST_SUITE("preview camera script check") {
   TEST_CASE("an event the shot lacks leaves the simulated shot without camera or cue") {
     const int count = event_count();
     const ShotResult loaded = load_shot(scene_with_camera({hover(0), follow(count + 2)}), "cluster");
-    CHECK_FALSE(loaded.shot);
-    REQUIRE(loaded.unscripted);
-    CHECK(static_cast<int>(loaded.unscripted->timeline.events().size()) == count);
-    CHECK_FALSE(loaded.unscripted->camera);
-    CHECK_FALSE(loaded.unscripted->cue);
+    CHECK_FALSE(loaded.scripted());
+    REQUIRE(loaded.shot);
+    CHECK(static_cast<int>(loaded.shot->timeline.events().size()) == count);
+    CHECK_FALSE(loaded.shot->camera);
+    CHECK_FALSE(loaded.shot->cue);
   }
 
   TEST_CASE("each description sits at the event it names, runs to the next later one, and carries its error") {
@@ -89,11 +89,11 @@ TEST_SUITE("preview camera script check") {
     // In file order: event 0, event count-3, event 2 (listed after a later one), an event past the end.
     const ShotResult loaded =
         load_shot(scene_with_camera({hover(0), follow(count - 3), look(2), hover(count + 3)}), "cluster");
-    REQUIRE(loaded.unscripted);
-    const Timeline& timeline = loaded.unscripted->timeline;
+    REQUIRE(loaded.shot);
+    const Timeline& timeline = loaded.shot->timeline;
     const auto time_of = [&](int k) { return timeline.events()[static_cast<std::size_t>(k)].time; };
     const std::vector<TimelineCameraSpan> spans =
-        written_camera_spans(loaded.unscripted->scene, timeline, loaded.diagnostics);
+        written_camera_spans(loaded.shot->scene, timeline, loaded.diagnostics);
     REQUIRE(spans.size() == 4);
 
     CHECK(spans[0].placed);
@@ -125,23 +125,23 @@ TEST_SUITE("preview camera script check") {
   TEST_CASE("event 65535 is the last event") {
     const int count = event_count();
     const ShotResult loaded = load_shot(scene_with_camera({hover(0), follow(9999), look(65535)}), "cluster");
-    REQUIRE(loaded.unscripted);
+    REQUIRE(loaded.shot);
     const std::vector<TimelineCameraSpan> spans =
-        written_camera_spans(loaded.unscripted->scene, loaded.unscripted->timeline, loaded.diagnostics);
+        written_camera_spans(loaded.shot->scene, loaded.shot->timeline, loaded.diagnostics);
     REQUIRE(spans.size() == 3);
     CHECK_FALSE(spans[1].placed);
     CHECK(spans[2].placed);
-    CHECK(spans[2].begin == loaded.unscripted->timeline.events()[static_cast<std::size_t>(count - 1)].time);
+    CHECK(spans[2].begin == loaded.shot->timeline.events()[static_cast<std::size_t>(count - 1)].time);
     CHECK(spans[2].problem.empty());
   }
 
   TEST_CASE("the picture's contents: real events and drops, the script as written, every error as printed") {
     const int count = event_count();
     const ShotResult loaded = load_shot(scene_with_camera({hover(0), follow(count + 1)}), "cluster");
-    REQUIRE(loaded.unscripted);
-    const TimelineData data = unscripted_timeline_data(*loaded.unscripted, loaded.diagnostics, "cluster.scn");
+    REQUIRE(loaded.shot);
+    const TimelineData data = unscripted_timeline_data(*loaded.shot, loaded.diagnostics, "cluster.scn");
     CHECK(static_cast<int>(data.events.size()) == count);
-    CHECK(data.drops.size() == loaded.unscripted->timeline.pocket_drops().size());
+    CHECK(data.drops.size() == loaded.shot->timeline.pocket_drops().size());
     CHECK(data.camera.size() == 2);
     CHECK(data.windows.empty());
     CHECK(data.cue.empty());
@@ -154,8 +154,8 @@ TEST_SUITE("preview camera script check") {
   TEST_CASE("the faulty descriptions are drawn in red, one naming no event after the time axis") {
     const int count = event_count();
     const ShotResult loaded = load_shot(scene_with_camera({hover(0), follow(count + 1)}), "cluster");
-    REQUIRE(loaded.unscripted);
-    TimelineData data = unscripted_timeline_data(*loaded.unscripted, loaded.diagnostics, "cluster.scn");
+    REQUIRE(loaded.shot);
+    TimelineData data = unscripted_timeline_data(*loaded.shot, loaded.diagnostics, "cluster.scn");
     const RedCount failed = draw_and_count_red(data, 1000, 360);
     CHECK(failed.right_fifth > 200);
 

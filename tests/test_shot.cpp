@@ -20,16 +20,16 @@ TEST_CASE("a loaded shot has its scripts, an unscripted one has none") {
   REQUIRE(loaded.shot);
   CHECK(loaded.shot->camera.has_value());
   CHECK(loaded.shot->cue.has_value());
-  CHECK_FALSE(loaded.unscripted);
+  CHECK(loaded.scripted() == loaded.shot.get());
 
   // Event 99 does not exist in a short shot: the scene and timeline come back without scripts.
   const ShotResult wrong = load_shot(
       "ball 0 0 0 0.028575 1 0 0 1 0 0 0 cue 0 0 camera event 0 0 0 hover 0 0 3 0 0 0 "
       "event 99 0.1 0.1 hover 1 0 3 0 0 0 endcamera",
       "wrong");
-  CHECK_FALSE(wrong.shot);
-  REQUIRE(wrong.unscripted);
-  CHECK_FALSE(wrong.unscripted->camera.has_value());
-  CHECK_FALSE(wrong.unscripted->cue.has_value());
-  CHECK(wrong.unscripted->timeline.events().size() >= 3);
+  CHECK_FALSE(wrong.scripted());
+  REQUIRE(wrong.shot);
+  CHECK_FALSE(wrong.shot->camera.has_value());
+  CHECK_FALSE(wrong.shot->cue.has_value());
+  CHECK(wrong.shot->timeline.events().size() >= 3);
 }

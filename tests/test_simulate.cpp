@@ -127,7 +127,10 @@ TEST_SUITE("simulate") {
     CHECK(hits[1]->balls == std::vector<int>{2, 3});
     CHECK(hits[0]->time == hits[1]->time);
     CHECK(hits[1]->index == hits[0]->index + 1);
-    CHECK(hits[0]->contacts.empty());
+    CHECK_FALSE(hits[0]->grouped);
+    REQUIRE(hits[0]->contacts.size() == 1);
+    CHECK(hits[0]->contacts[0].time == hits[0]->time);
+    CHECK(hits[0]->contacts[0].speed == hits[0]->speed);
   }
 
   TEST_CASE("a ball at a cushion's end point strikes the jaw: a ball-rail event at the end point") {

@@ -29,9 +29,11 @@ struct Event {
   double speed = 0;        ///< m/s, closing speed along the contact normal (cue: the ball's speed)
   Vec3 where{0, 0, 0};     ///< m, the contact point (cue: the struck ball's centre)
   std::vector<BallState> before, after;  ///< states of `balls` just before and after
-  /// ball-ball: a group collision's contacts in the order they began (empty for a pair resolved alone);
-  /// `balls` then lists every ball of the group and `speed` is the largest contact speed.
+  /// ball-ball: its contacts in the order they began: a pair resolved alone has one (the event's own
+  /// time, speed and point), a group collision one per contact, `balls` then listing every ball of the
+  /// group and `speed` being the largest contact speed.
   std::vector<Contact> contacts;
+  bool grouped = false;  ///< ball-ball: resolved as a group collision (group.h), not as a pair alone
 };
 
 /// A ball dropping into a pocket: recorded, but not a numbered event (as in the seed).

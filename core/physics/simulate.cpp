@@ -158,6 +158,13 @@ class Simulator {
     events_.push_back(std::move(e));
   }
 
+  /// A pair resolved alone: a ball-ball event with its one contact (the event's own time, speed and point).
+  void add_pair_event(int i, int j, double t, double speed, const Vec3& where, std::vector<BallState> before,
+                      std::vector<BallState> after) {
+    add_event(EventType::ball_ball, t, {i, j}, -1, speed, where, std::move(before), std::move(after));
+    events_.back().contacts = {{i, j, t, speed, where}};
+  }
+
   /// The cue impact: every ball takes its line's velocity and spin.
   void strike(double t) {
     const int target = scene_.cue.target;
@@ -361,6 +368,7 @@ class Simulator {
     }
     add_event(EventType::ball_ball, t, balls, -1, speed, where, std::move(was), std::move(now));
     events_.back().contacts = std::move(contacts);
+    events_.back().grouped = true;
     reschedule(changed, t);
   }
 
@@ -401,8 +409,7 @@ class Simulator {
         const auto [na, nb] = resolve_pair(a, b, speed);
         const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
         if (speed >= kMinEventSpeed)
-          add_event(EventType::ball_ball, t, {c.a, c.b}, -1, speed, a.position + params_.ball_radius * n, {a, b},
-                    {na, nb});
+          add_pair_event(c.a, c.b, t, speed, a.position + params_.ball_radius * n, {a, b}, {na, nb});
         begin_segment(c.a, t, na);
         begin_segment(c.b, t, nb);
         reschedule({c.a, c.b}, t);

@@ -50,10 +50,9 @@ enum class CameraKeyKind { event, start, cue, end, hit, cushion, pocket, at };
 struct CameraKey {
   static constexpr int kLast = -1;  ///< ordinal of `last`
   CameraKeyKind kind = CameraKeyKind::event;
-  int ordinal = 1;     ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
-  int a = -1, b = -1;  ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
-  double seconds = 0;  ///< at: s after the start of the shot
-  std::string text;    ///< the key as written, its tokens joined by one space ("second cushion 0"); empty for a number
+  int ordinal = 1;         ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
+  int a = -1, b = -1;      ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
+  double seconds = 0;      ///< at: s after the start of the shot (as text: camera_key_text.h)
   SourceLoc a_loc, b_loc;  ///< the ball index tokens
 };
 

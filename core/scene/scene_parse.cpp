@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "camera_key_text.h"
 #include "scene_lexer.h"
 #include "scene_validate.h"
 #include "spelling.h"
@@ -24,21 +25,6 @@ constexpr std::size_t kMaxErrors = 30;
 
 constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
 constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param"};
-/// What may stand for an event number in a camera description (extensions), and the ordinals that
-/// pick a later hit or cushion contact (`second` is 2, ..., `fifth` 5; `last` the last).
-constexpr std::string_view kCameraKeys[] = {"start", "cue",    "end",   "hit",    "cushion", "pocket",
-                                            "at",    "second", "third", "fourth", "fifth",   "last"};
-constexpr std::string_view kOrdinals[] = {"second", "third", "fourth", "fifth", "last"};
-
-std::string camera_key_list() {
-  std::string out;
-  for (std::string_view k : kCameraKeys) {
-    if (k == "second") break;
-    out.append(out.empty() ? "" : ", ").append(k);
-  }
-  return out + ", with second, third, fourth, fifth or last before hit or cushion";
-}
-
 enum class NumberStatus { ok, not_number, not_finite };
 
 NumberStatus parse_double(std::string_view text, double& out) {
@@ -413,7 +399,6 @@ class Parser {
 
   /// The seed's event number, or a camera key (an extension): what the description starts at.
   void event_key(CameraShot& s) {
-    const std::size_t first = pos_;
     const Token& t = take("an event number or a camera key");
     s.event_loc = t.loc;
     long long n = 0;
@@ -425,54 +410,55 @@ class Parser {
       s.event = static_cast<int>(n);
       return;
     }
-    const bool known = std::find(std::begin(kCameraKeys), std::end(kCameraKeys), t.text) != std::end(kCameraKeys);
+    const std::vector<std::string_view> first_words = camera_key_first_words();
+    const bool known = std::find(first_words.begin(), first_words.end(), t.text) != first_words.end();
     if (!known && (options_.strict || parse_double(t.text, ignored) != NumberStatus::not_number))
       fail_at_value(t, "expected an integer for the event number, found " + quote_token(t.text));
     if (!known)
-      fail_at_value(
-          t, "expected an event number or a camera key (" + camera_key_list() + "), found " + quote_token(t.text) +
-                 did_you_mean(t.text, std::vector<std::string_view>(std::begin(kCameraKeys), std::end(kCameraKeys))));
+      fail_at_value(t, "expected an event number or a camera key (" + camera_key_list() + "), found " +
+                           quote_token(t.text) + did_you_mean(t.text, first_words));
     if (options_.strict)
       fail(t.loc, "the camera key '" + std::string(t.text) +
                       "' is an extension that --strict rejects (the seed names an event by its number)");
     CameraKey& key = s.key;
     std::string_view word = t.text;
-    if (const auto* o = std::find(std::begin(kOrdinals), std::end(kOrdinals), word); o != std::end(kOrdinals)) {
-      key.ordinal = word == "last" ? CameraKey::kLast : static_cast<int>(o - std::begin(kOrdinals)) + 2;
+    if (const std::optional<int> ordinal = camera_key_ordinal(word)) {
+      key.ordinal = *ordinal;
       const Token& what = take("'hit' or 'cushion' after '" + std::string(word) + "'");
-      if (what.text != "hit" && what.text != "cushion")
+      const std::optional<CameraKeyKind> kind = camera_key_kind(what.text);
+      if (!kind || !takes_ordinal(*kind))
         fail_at_value(what, "expected 'hit' or 'cushion' after '" + std::string(word) + "', found " +
                                 quote_token(what.text) + did_you_mean(what.text, {"hit", "cushion"}));
       word = what.text;
     }
-    if (word == "start") key.kind = CameraKeyKind::start;
-    if (word == "cue") key.kind = CameraKeyKind::cue;
-    if (word == "end") key.kind = CameraKeyKind::end;
-    if (word == "hit") {
-      key.kind = CameraKeyKind::hit;
-      key.a = ball_index("the first ball of the hit", key.a_loc);
-      key.b = ball_index("the second ball of the hit", key.b_loc);
-      if (key.a == key.b)
-        fail(key.b_loc, "expected two different balls for 'hit', found ball " + std::to_string(key.a) + " twice");
+    key.kind = *camera_key_kind(word);
+    key_operands(key);
+  }
+
+  /// The balls or seconds after a key's word (camera_key_text.h: ball_operands, takes_seconds).
+  void key_operands(CameraKey& key) {
+    switch (key.kind) {
+      case CameraKeyKind::hit:
+        key.a = ball_index("the first ball of the hit", key.a_loc);
+        key.b = ball_index("the second ball of the hit", key.b_loc);
+        if (key.a == key.b)
+          fail(key.b_loc, "expected two different balls for 'hit', found ball " + std::to_string(key.a) + " twice");
+        break;
+      case CameraKeyKind::cushion: key.a = ball_index("the ball that meets the cushion", key.a_loc); break;
+      case CameraKeyKind::pocket: key.a = ball_index("the pocketed ball", key.a_loc); break;
+      case CameraKeyKind::at: {
+        SourceLoc loc;
+        key.seconds = number("the seconds after the start of the shot", &loc);
+        if (key.seconds < 0)
+          fail(loc, "expected the seconds after the start of the shot as 0 or more, found " +
+                        quote_token(lexed_.tokens[pos_ - 1].text));
+        break;
+      }
+      case CameraKeyKind::event:
+      case CameraKeyKind::start:
+      case CameraKeyKind::cue:
+      case CameraKeyKind::end: break;
     }
-    if (word == "cushion") {
-      key.kind = CameraKeyKind::cushion;
-      key.a = ball_index("the ball that meets the cushion", key.a_loc);
-    }
-    if (word == "pocket") {
-      key.kind = CameraKeyKind::pocket;
-      key.a = ball_index("the pocketed ball", key.a_loc);
-    }
-    if (word == "at") {
-      key.kind = CameraKeyKind::at;
-      SourceLoc loc;
-      key.seconds = number("the seconds after the start of the shot", &loc);
-      if (key.seconds < 0)
-        fail(loc, "expected the seconds after the start of the shot as 0 or more, found " +
-                      quote_token(lexed_.tokens[pos_ - 1].text));
-    }
-    for (std::size_t i = first; i < pos_; ++i)
-      key.text.append(key.text.empty() ? "" : " ").append(lexed_.tokens[i].text);
   }
 
   double fraction(const std::string& what) {

@@ -82,7 +82,7 @@ PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
   if ((j1.nose - j0.nose).norm() < 1e-6) return m;
 
   // Collinear noses running at each other make a side pocket; noses meeting at an angle a corner.
-  const double cos_side = std::cos(spec.side_within_deg * std::numbers::pi / 180);
+  const double cos_side = std::cos(radians(spec.side_within_deg));
   m.kind = j0.along.dot(-j1.along) >= cos_side ? PocketKind::side : PocketKind::corner;
   m.facing_deg = m.kind == PocketKind::side ? spec.side_facing_deg : spec.corner_facing_deg;
   // The facing leaves the nose end turned from the nose's direction into the pocket by 180 degrees

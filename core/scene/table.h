@@ -211,7 +211,7 @@ struct PocketMouth {
 
   bool jawed() const { return kind != PocketKind::bare; }
   /// rad the facing turns from the nose's direction into the pocket: 180 degrees less the facing angle.
-  double turn() const { return (180 - facing_deg) * std::numbers::pi / 180; }
+  double turn() const { return radians(180 - facing_deg); }
   /// m between the jaws' nose ends (what the WPA calls the mouth).
   double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
   /// m between the facings `behind` m behind the mouth, along the axis.

@@ -9,9 +9,6 @@ namespace bsim {
 namespace {
 /// rad; below this two directions count as the same (or as opposite).
 constexpr double kParallelAngle = 1e-9;
-/// deg added to the view cone so that a stick half inside the border still counts as seen.
-constexpr double kViewMarginDeg = 3.0;
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 }  // namespace
 
 double smooth(double u) {
@@ -51,21 +48,6 @@ Vec3 unit_or(const Vec3& from, const Vec3& to, const Vec3& fallback) {
   // 1e-12 m: far below anything visible, far above rounding noise of table-sized coordinates.
   if (!(n > 1e-12)) return fallback;
   return d / n;
-}
-
-double view_cone_half_angle_deg() {
-  // The picture's corner for a square aspect: horizontal half-angle widened by sqrt(2).
-  const double corner = std::atan(std::tan(0.5 * kCameraFovDeg * kDegToRad) * std::numbers::sqrt2);
-  return corner / kDegToRad + kViewMarginDeg;
-}
-
-bool in_view(const Vec3& location, const Vec3& look_at, const Vec3& point) {
-  const Vec3 view = unit_or(location, look_at, Vec3(1, 0, 0));
-  const Vec3 w = point - location;
-  const double ahead = w.dot(view);
-  if (ahead <= 0) return false;
-  const double off_axis = std::atan2(w.cross(view).norm(), ahead);
-  return off_axis < view_cone_half_angle_deg() * kDegToRad;
 }
 
 }  // namespace bsim

@@ -28,10 +28,6 @@ std::vector<KeyInstant> hits(const Timeline& timeline, int a, int b) {
   std::vector<KeyInstant> found;
   for (const Event& e : timeline.events()) {
     if (e.type != EventType::ball_ball) continue;
-    if (e.contacts.empty()) {
-      if (e.balls.size() == 2 && e.balls[0] == low && e.balls[1] == high) found.push_back({e.time, e.index});
-      continue;
-    }
     for (const Contact& c : e.contacts)
       if (std::min(c.a, c.b) == low && std::max(c.a, c.b) == high) found.push_back({c.time, e.index});
   }
@@ -66,7 +62,7 @@ std::string counted(int count, const std::string& noun) {
 
 std::string describe_camera_key(const CameraShot& shot) {
   if (shot.key.kind == CameraKeyKind::event) return "event " + std::to_string(shot.event);
-  return shot.key.text;
+  return camera_key_text(shot.key);
 }
 
 KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, const Timeline& timeline) {

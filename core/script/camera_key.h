@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "camera_key_text.h"
 #include "scene.h"
 #include "source_loc.h"
 #include "timeline.h"
@@ -27,7 +28,7 @@ struct KeyResolution {
 /// Resolves the event number or key `shot` starts at against the simulated shot.
 KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, const Timeline& timeline);
 
-/// How a message names what the description starts at: "event 5" or the key as written ("hit 0 5").
+/// How a message names what the description starts at: "event 5" or the key ("hit 0 5").
 std::string describe_camera_key(const CameraShot& shot);
 
 /// Where a message about a camera description points: its token when it has one, else its line.

@@ -14,12 +14,8 @@ namespace bsim {
 
 namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// deg above the horizon of the default camera: high enough to see the whole bed, low enough for depth.
 constexpr double kDefaultElevationDeg = 55.0;
-/// Horizontal over total length of a view direction below which it counts as vertical: about 0.06
-/// degrees, where a z-up picture frame degenerates (and POV-Ray's look_at would too).
-constexpr double kVerticalView = 1e-3;
 
 std::string describe_event(int written, int resolved) {
   if (written == CameraShot::kLastEvent) return "event 65535 (the last event, " + std::to_string(resolved) + ")";
@@ -84,22 +80,6 @@ bool check_balls(const Scene& scene, const std::vector<CameraShot>& shots, std::
 }
 
 }  // namespace
-
-Vec3 straight_down() { return Vec3(0, 0, -1); }
-
-CameraPose straight_down_camera(const Vec3& look_at, double height) {
-  CameraPose pose;
-  pose.look_at = look_at;
-  pose.location = look_at - height * straight_down();
-  return pose;
-}
-
-Vec3 view_direction(const Vec3& location, const Vec3& look_at) { return unit_or(location, look_at, straight_down()); }
-
-Vec3 picture_up(const Vec3& direction) {
-  if (std::hypot(direction.x(), direction.y()) <= kVerticalView * direction.norm()) return Vec3::UnitY();
-  return Vec3::UnitZ();
-}
 
 CameraShot CameraScript::default_shot(const Scene& scene) {
   // The nose lines' extent (the standard bed's when the scene has none).

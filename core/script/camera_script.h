@@ -5,33 +5,12 @@
 #include <vector>
 
 #include "ball_track.h"
+#include "camera_view.h"
 #include "diagnostics.h"
 #include "scene.h"
 #include "timeline.h"
 
 namespace bsim {
-
-struct CameraPose {
-  Vec3 location{0, 0, 0};  ///< m
-  Vec3 look_at{0, 0, 0};   ///< m, the point at the centre of the view
-  bool interpolating = false;
-};
-
-// The straight-down camera: the one fallback for every camera that has no direction of its own (no
-// script to ask, a camera sitting on its look point) and the one orientation of every view too near
-// vertical for z to be its picture's up. It looks straight down at the bed with the table's +y at
-// the top of its picture and +x to the right, in the preview, the POV-Ray frames and the sound's pan.
-
-/// The straight-down view direction, -z.
-Vec3 straight_down();
-/// The straight-down camera `height` m above `look_at`.
-CameraPose straight_down_camera(const Vec3& look_at, double height);
-/// The unit direction a camera at `location` looks in: towards `look_at`, or straight down where
-/// the two (nearly) coincide.
-Vec3 view_direction(const Vec3& location, const Vec3& look_at);
-/// The picture's up for a view along `direction`: +z, or the straight-down camera's +y within about
-/// 0.06 degrees of vertical (looking down or up), where z cannot serve.
-Vec3 picture_up(const Vec3& direction);
 
 /// The time one listed description holds (from its event to the next listed event; the first one
 /// also holds from the start of the shot to its event).

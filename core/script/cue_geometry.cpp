@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "camera_interpolation.h"
+#include "camera_view.h"
 #include "cue_pose.h"
 #include "table.h"
 
@@ -15,6 +15,8 @@ namespace {
 constexpr double kAxisStep = 0.01;
 /// m between points tested against the view cone, whose margin covers the stick's thickness.
 constexpr double kViewStep = 0.05;
+/// deg added to the view cone so that a stick half inside the border still counts as seen.
+constexpr double kViewMarginDeg = 3.0;
 
 /// Lowest point of the circular cross-section at `centre`, perpendicular to `axis`.
 double lowest_z(const Vec3& centre, const Vec3& axis, double radius) {
@@ -73,8 +75,10 @@ double stick_clearance(const CuePose& stick, const Scene& scene, const std::vect
 }
 
 bool stick_in_view(const CuePose& stick, const CameraPose& camera) {
+  const CameraView view(camera);
+  const double cone = view.cone_half_angle_deg() + kViewMarginDeg;
   for (double s = 0; s <= kCueLength + 1e-9; s += kViewStep) {
-    if (in_view(camera.location, camera.look_at, stick.tip + s * stick.axis)) return true;
+    if (view.in_cone(stick.tip + s * stick.axis, cone)) return true;
   }
   return false;
 }

@@ -13,7 +13,6 @@
 namespace bsim {
 
 namespace {
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// m between the tip and the ball when the stick is addressed and between strokes.
 constexpr double kAddressGap = 0.02;
 /// m, reach of the practice strokes; as in the seed, not tied to the shot's speed.

@@ -34,6 +34,7 @@
 
 #include "camera_interpolation.h"
 #include "camera_key.h"
+#include "camera_view.h"
 #include "director_judge.h"
 #include "number_format.h"
 #include "table.h"
@@ -53,7 +54,6 @@ using directing::Verdict;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 /// Hz at which a candidate script is sampled (speed, clearance, what is in the picture).
 constexpr double kGridHz = 120.0;
 /// m/s below which a ball counts as at rest.
@@ -82,19 +82,6 @@ CameraShot keyed(CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1, do
   shot.key.b = b;
   shot.key.ordinal = ordinal;
   shot.key.seconds = seconds;
-  std::string text;
-  if (ordinal == CameraKey::kLast) text = "last ";
-  switch (kind) {
-    case CameraKeyKind::start: text += "start"; break;
-    case CameraKeyKind::cue: text += "cue"; break;
-    case CameraKeyKind::end: text += "end"; break;
-    case CameraKeyKind::hit: text += "hit " + std::to_string(a) + " " + std::to_string(b); break;
-    case CameraKeyKind::cushion: text += "cushion " + std::to_string(a); break;
-    case CameraKeyKind::pocket: text += "pocket " + std::to_string(a); break;
-    case CameraKeyKind::at: text += "at " + format_number(seconds); break;
-    case CameraKeyKind::event: break;
-  }
-  shot.key.text = text;
   return shot;
 }
 
@@ -263,10 +250,10 @@ std::vector<CameraShot> ball_places(int subject, const Vec3& middle, double peak
   for (double distance : {1.0, 1.4, 1.9, 2.5, 3.2})
     for (double elevation : {50.0, 38.0, 62.0})
       for (int a = 0; a < 24; ++a) {
-        const double azimuth = a * 15.0 * kDeg;
+        const double azimuth = a * 15.0 * kDegToRad;
         const Vec3 location = middle + distance * Vec3(std::cos(azimuth), std::sin(azimuth), 0) +
-                              Vec3(0, 0, distance * std::tan(elevation * kDeg));
-        add_look(location, distance + 0.5 * (location - previous).norm() + 0.8 * std::abs(elevation - 50.0) * kDeg);
+                              Vec3(0, 0, distance * std::tan(elevation * kDegToRad));
+        add_look(location, distance + 0.5 * (location - previous).norm() + 0.8 * std::abs(elevation - 50.0) * kDegToRad);
       }
   // Crane up (and back) from the shooter's view.
   for (double up : {0.25, 0.5, 0.85})
@@ -319,16 +306,16 @@ std::vector<CameraShot> wide_places(const TableLayout& layout, const Vec3& previ
   std::vector<Costed> options;
   for (double elevation : {50.0, 42.0, 35.0, 28.0})
     for (int a = 0; a < 12; ++a) {
-      const double azimuth = a * 30.0 * kDeg;
-      const Vec3 direction(std::cos(elevation * kDeg) * std::cos(azimuth),
-                           std::cos(elevation * kDeg) * std::sin(azimuth), std::sin(elevation * kDeg));
+      const double azimuth = a * 30.0 * kDegToRad;
+      const Vec3 direction(std::cos(elevation * kDegToRad) * std::cos(azimuth),
+                           std::cos(elevation * kDegToRad) * std::sin(azimuth), std::sin(elevation * kDegToRad));
       for (double distance = 2.4; distance <= 5.0; distance += 0.2) {
         CameraShot s;
         s.mode = CameraMode::hover;
         s.location = mm(centre + distance * direction);
         s.target = centre;
         const CameraPose pose{s.location, s.target, false};
-        if (!std::all_of(corners.begin(), corners.end(), [&](const Vec3& p) { return in_picture(pose, p, 0.01); }))
+        if (!std::all_of(corners.begin(), corners.end(), [&](const Vec3& p) { return CameraView(pose).contains(p, 0.01); }))
           continue;
         if (clear_of_room(layout, s.location) && keeps_side(line, wanted, s.location))
           options.push_back({(s.location - previous).norm() + 0.3 * distance, s});
@@ -376,11 +363,6 @@ class Director {
     std::vector<Contact> found;
     for (const Event& e : timeline_.events()) {
       if (e.type != EventType::ball_ball) continue;
-      if (e.contacts.empty()) {
-        if (e.balls.size() == 2 && (e.balls[0] == ball || e.balls[1] == ball))
-          found.push_back({e.time, e.balls[0] == ball ? e.balls[1] : e.balls[0]});
-        continue;
-      }
       for (const bsim::Contact& c : e.contacts)
         if (c.a == ball || c.b == ball) found.push_back({c.time, c.a == ball ? c.b : c.a});
     }
@@ -426,7 +408,7 @@ Stroke Director::the_stroke() const {
   stroke.cue_ball = scene_.cue.target;
   const Ball& cue = scene_.balls[static_cast<std::size_t>(stroke.cue_ball)];
   stroke.cue_at = cue.position;
-  const double heading_rad = scene_.cue.heading_deg * kDeg;
+  const double heading_rad = scene_.cue.heading_deg * kDegToRad;
   stroke.aim = horizontal_unit(cue.velocity, Vec3(std::cos(heading_rad), std::sin(heading_rad), 0));
   // The cue ball's first object ball.
   const std::vector<Contact> cue_contacts = contacts(stroke.cue_ball);
@@ -535,8 +517,8 @@ void Director::place_stroke(Draft& draft, std::size_t slot, const Stroke& stroke
     trial[slot].target = option.target;
     const Verdict v = judge_.evaluate(trial, lines, until);
     CameraPose pose{option.location, option.target, false};
-    const bool frames = stroke.first_object < 0 || in_picture(pose, stroke.first_object_at, kPlanMargin);
-    if (v.ok && frames && in_picture(pose, stroke.cue_at, kPlanMargin)) {
+    const bool frames = stroke.first_object < 0 || CameraView(pose).contains(stroke.first_object_at, kPlanMargin);
+    if (v.ok && frames && CameraView(pose).contains(stroke.cue_at, kPlanMargin)) {
       shots[slot].mode = option.mode;
       shots[slot].location = option.location;
       shots[slot].target = option.target;
@@ -624,27 +606,11 @@ double LineOfAction::side(const Vec3& p) const {
   return direction.x() * (p.y() - point.y()) - direction.y() * (p.x() - point.x());
 }
 
-bool in_picture(const CameraPose& pose, const Vec3& point, double margin) {
-  // The camera of POV-Ray and the preview: kCameraFovDeg across, the picture's up from picture_up().
-  const Vec3 forward = view_direction(pose.location, pose.look_at);
-  const Vec3 right = forward.cross(picture_up(forward)).normalized();
-  const Vec3 up = right.cross(forward);
-  const Vec3 d = point - pose.location;
-  const double depth = d.dot(forward);
-  if (depth <= 1e-6) return false;
-  const double half_width = std::tan(0.5 * kCameraFovDeg * kDeg);
-  const double half_height = half_width / kPictureAspect;
-  const double x = d.dot(right) / depth / half_width, y = d.dot(up) / depth / half_height;
-  const double limit = 1.0 - 2.0 * margin;
-  return std::abs(x) <= limit && std::abs(y) <= limit;
-}
-
 DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline) {
   if (scene.balls.empty() || timeline.events().empty()) {
     DirectedCamera out;
     CameraShot shot = CameraScript::default_shot(scene);
     shot.key.kind = CameraKeyKind::start;
-    shot.key.text = "start";
     shot.location = mm(shot.location);
     shot.target = mm(shot.target);
     out.shots.push_back(shot);
@@ -663,7 +629,7 @@ std::string camera_script_text(const DirectedCamera& camera, const std::string& 
          "# happens, so it stays on its moment when the shot changes; edit the numbers to taste.\n";
   for (std::size_t k = 0; k < camera.shots.size(); ++k) {
     const CameraShot& s = camera.shots[k];
-    std::string line = "event " + s.key.text + " ";
+    std::string line = "event " + camera_key_text(s.key, s.event) + " ";
     append_number(line, s.pre);
     line += ' ';
     append_number(line, s.post);

@@ -21,8 +21,6 @@ inline constexpr double kCameraCarrySpeed = 2.5;
 inline constexpr double kDirectorBallRoom = 0.15;
 /// s, the shortest span of a description (its key to the next one's, or to the end).
 inline constexpr double kMinDescriptionSeconds = 1.0;
-/// The picture's width over its height the director frames for: 16:9, as the movie and the preview.
-inline constexpr double kPictureAspect = 16.0 / 9.0;
 
 /// The line the action runs along at a description's key (horizontal): the 180-degree rule keeps
 /// the camera on one side of it across the change to that description.
@@ -47,9 +45,5 @@ DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline);
 /// The script as scene text: "camera", one `event KEY PRE POST MODE ...  # comment` line per
 /// description, "endcamera"; it parses back to `camera.shots` exactly.
 std::string camera_script_text(const DirectedCamera& camera, const std::string& scene_name);
-
-/// Whether `point` is inside the picture (16:9, kCameraFovDeg across) of a camera in `pose`, at least
-/// `margin` of the picture's width and height inside its edges, and in front of the camera.
-bool in_picture(const CameraPose& pose, const Vec3& point, double margin);
 
 }  // namespace bsim

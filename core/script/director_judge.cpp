@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "camera_view.h"
 #include "diagnostics.h"
 
 namespace bsim::directing {
@@ -104,7 +105,7 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
       const auto ball = static_cast<std::size_t>(watched_[k].ball);
       if (!samples_.moving[i][ball]) continue;
       ++moving[k];
-      if (in_picture(pose, samples_.where[i][ball], kPlanMargin)) ++seen[k];
+      if (CameraView(pose).contains(samples_.where[i][ball], kPlanMargin)) ++seen[k];
     }
   }
   v.ok = true;

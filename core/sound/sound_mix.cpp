@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "camera_interpolation.h"
+#include "camera_view.h"
 #include "pocket_fall.h"
 #include "simulate.h"
 
@@ -68,13 +68,7 @@ void add_pocket_drop(const SoundSource& shot, const PocketDrop& drop, int index,
 
 double view_position(const CameraPose& camera, const Vec3& point, double fov_deg) {
   // The picture's frame as the front ends draw it (a camera on its look point looks straight down).
-  const Vec3 f = view_direction(camera.location, camera.look_at);
-  const Vec3 right = f.cross(picture_up(f)).normalized();  // forward x up points to the picture's right
-  const Vec3 d = point - camera.location;
-  const double across = d.dot(right), ahead = d.dot(f);
-  const double half = fov_deg * std::numbers::pi / 360.0;
-  const double angle = std::atan2(across, std::max(ahead, 0.0));
-  return std::clamp(angle / half, -1.0, 1.0);
+  return CameraView(camera, fov_deg).pan(point);
 }
 
 double distance_gain(double distance) { return kReferenceDistance / std::max(distance, kNearestDistance); }
@@ -97,15 +91,16 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
       case EventType::ball_rail: kind = SoundKind::ball_rail; break;
       default: continue;
     }
-    const int ball = e.balls.empty() ? 0 : e.balls.front();
-    if (!e.contacts.empty()) {
-      // A group collision clicks once for each of its contacts, at its own time and speed (those gentler
-      // than a numbered event are not heard).
+    if (e.type == EventType::ball_ball) {
+      // A collision clicks once for each of its contacts, at its own time and speed (those of a group
+      // gentler than a numbered event are not heard). A pair's click is seeded by its first ball.
       for (const Contact& c : e.contacts)
         if (c.speed >= kMinEventSpeed)
-          cues.push_back(event_cue(shot, kind, c.time, c.speed, c.where, cue_seed(kind, e.index, c.a * 16 + c.b)));
+          cues.push_back(event_cue(shot, kind, c.time, c.speed, c.where,
+                                   cue_seed(kind, e.index, e.grouped ? c.a * 16 + c.b : c.a)));
       continue;
     }
+    const int ball = e.balls.empty() ? 0 : e.balls.front();
     cues.push_back(event_cue(shot, kind, e.time, e.speed, e.where, cue_seed(kind, e.index, ball)));
   }
   const auto& drops = shot.timeline.pocket_drops();

@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   }
 
   const bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
-  if (!loaded.shot) {
+  if (!loaded.scripted()) {
     std::fprintf(stderr, "export_bench: the built-in scene does not load\n");
     return 1;
   }

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
 
   // The middle of the built-in break: the balls spread over the table, the stick gone.
   const bsim::ShotResult shot = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
-  if (!shot.shot) {
+  if (!shot.scripted()) {
     std::fprintf(stderr, "bench_preview: the built-in break does not load\n");
     return 1;
   }

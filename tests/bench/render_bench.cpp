@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
   // The exporter's own work: scene -> shot -> frame files and sound track.
   auto start = Clock::now();
   bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
-  if (!loaded.shot) return 1;
+  if (!loaded.scripted()) return 1;
   if (looks) return compare_looks(*loaded.shot, povray, ffmpeg, sheet);
   const double load_time = seconds_since(start);
   const fs::path dir = fs::temp_directory_path() / ("render-bench-" + std::to_string(::getpid()));

@@ -245,7 +245,7 @@ double loudness_of(const AudioBuffer& a) {
 void break_figures() {
   using Clock = std::chrono::steady_clock;
   auto result = load_shot(builtin_scene_text(), kBuiltinSceneName);
-  if (!result.shot) {
+  if (!result.scripted()) {
     std::printf("the built-in break does not load\n");
     return;
   }

@@ -16,7 +16,7 @@ std::string listed(const std::vector<Diagnostic>& diagnostics, std::string_view 
 
 std::unique_ptr<Shot> load_scene(std::string_view text, std::string_view name) {
   ShotResult result = load_shot(text, name);
-  REQUIRE_MESSAGE(result.shot, "the scene does not load:\n" << listed(result.diagnostics, name));
+  REQUIRE_MESSAGE(result.scripted(), "the scene does not load:\n" << listed(result.diagnostics, name));
   return std::move(result.shot);
 }
 
@@ -24,7 +24,7 @@ std::unique_ptr<Shot> load_clean(std::string_view text, std::string_view name) {
   ShotResult result = load_shot(text, name);
   CHECK_MESSAGE(result.diagnostics.empty(), "the scene should load without a message:\n"
                                                 << listed(result.diagnostics, name));
-  REQUIRE_MESSAGE(result.shot, "the scene does not load");
+  REQUIRE_MESSAGE(result.scripted(), "the scene does not load");
   return std::move(result.shot);
 }
 

@@ -1,0 +1,53 @@
+#pragma once
+// Camera keys as scene text: the words a key is written with, the shape of each kind (an ordinal
+// before it, the balls or seconds after it), writing a key (format) and reading one back (parse).
+// The scene parser reads keys with these words and shapes; the director and the preview write
+// theirs with camera_key_text(). Where a key falls in a simulated shot is the script's
+// (script/camera_key.h).
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene.h"
+
+namespace bsim {
+
+/// The kind a key's word names ("start", "hit", ...); none for any other word, `event` included
+/// (an event number is written as the number alone).
+std::optional<CameraKeyKind> camera_key_kind(std::string_view word);
+/// The word of a kind ("hit"); empty for CameraKeyKind::event.
+std::string_view camera_key_word(CameraKeyKind kind);
+
+/// The ordinal a word before `hit` or `cushion` names: 2 for "second" to 5 for "fifth",
+/// CameraKey::kLast for "last"; none for any other word.
+std::optional<int> camera_key_ordinal(std::string_view word);
+/// The word of an ordinal: "" for 1 (the first, written without one), "second" to "fifth", "last".
+std::string_view camera_key_ordinal_word(int ordinal);
+/// Whether an ordinal word may stand before the kind: hit and cushion.
+bool takes_ordinal(CameraKeyKind kind);
+/// How many ball indices follow the kind's word: 2 for hit, 1 for cushion and pocket, else 0.
+int ball_operands(CameraKeyKind kind);
+/// Whether seconds follow the kind's word: at.
+bool takes_seconds(CameraKeyKind kind);
+
+/// Every word a key may start with: the kinds' words, then the ordinals.
+std::vector<std::string_view> camera_key_first_words();
+/// The keys for a message: "start, cue, end, hit, cushion, pocket, at, with second, ... before hit or cushion".
+std::string camera_key_list();
+
+/// A key as it is written after `event`: "start", "second hit 0 5", "last cushion 3", "at 1.5" (its
+/// seconds as the shortest text that reads back exactly); an event number (kind event) as `event`
+/// ("7", "65535").
+std::string camera_key_text(const CameraKey& key, int event = 0);
+
+/// A key read back from camera_key_text()'s form (words separated by single spaces, numbers as
+/// decimal integers and C numbers). An event number gives kind event with the number in `*event`.
+/// None when the text is no key. No source locations.
+std::optional<CameraKey> parse_camera_key(std::string_view text, int* event = nullptr);
+
+/// Whether two keys are written the same (the same kind, ordinal, balls and seconds as their kind
+/// takes; not where they were written). Event numbers are not part of a key: compare them beside it.
+bool same_camera_key(const CameraKey& a, const CameraKey& b);
+
+}  // namespace bsim

@@ -1,0 +1,97 @@
+// Camera keys as text: camera_key_text() writes what parse_camera_key() and the scene parser read
+// back to the same key, for every kind.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "camera_key_text.h"
+#include "fixtures.h"
+#include "scene_parse.h"
+
+using namespace bsim;
+namespace fx = bsim::test::fixtures;
+
+namespace {
+
+CameraKey key_of(CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1, double seconds = 0) {
+  CameraKey key;
+  key.kind = kind;
+  key.a = a;
+  key.b = b;
+  key.ordinal = ordinal;
+  key.seconds = seconds;
+  return key;
+}
+
+/// Keys of every kind, with every ordinal where the kind takes one.
+std::vector<CameraKey> every_key() {
+  std::vector<CameraKey> keys = {key_of(CameraKeyKind::start),
+                                 key_of(CameraKeyKind::cue),
+                                 key_of(CameraKeyKind::end),
+                                 key_of(CameraKeyKind::pocket, 1),
+                                 key_of(CameraKeyKind::at, -1, -1, 1, 0.0),
+                                 key_of(CameraKeyKind::at, -1, -1, 1, 1.25),
+                                 key_of(CameraKeyKind::at, -1, -1, 1, 0.1 + 0.2)};
+  for (int ordinal : {1, 2, 3, 4, 5, CameraKey::kLast}) {
+    keys.push_back(key_of(CameraKeyKind::hit, 1, 0, ordinal));
+    keys.push_back(key_of(CameraKeyKind::cushion, 0, -1, ordinal));
+  }
+  return keys;
+}
+
+}  // namespace
+
+TEST_SUITE("camera key text") {
+  TEST_CASE("format then parse gives the same key, for every kind") {
+    for (const CameraKey& key : every_key()) {
+      const std::string text = camera_key_text(key);
+      CAPTURE(text);
+      const std::optional<CameraKey> back = parse_camera_key(text);
+      REQUIRE(back);
+      CHECK(same_camera_key(*back, key));
+      CHECK(camera_key_text(*back) == text);
+    }
+    // An event number: kind event, the number beside it.
+    for (int event : {0, 7, CameraShot::kLastEvent}) {
+      const std::string text = camera_key_text(CameraKey{}, event);
+      int back_event = -1;
+      const std::optional<CameraKey> back = parse_camera_key(text, &back_event);
+      REQUIRE(back);
+      CHECK(back->kind == CameraKeyKind::event);
+      CHECK(back_event == event);
+    }
+  }
+
+  TEST_CASE("the scene parser reads every formatted key back to the same key") {
+    for (const CameraKey& key : every_key()) {
+      const std::string text = camera_key_text(key);
+      CAPTURE(text);
+      const std::string scene =
+          std::string(fx::kTwoBalls) + "camera\n  event " + text + " 0.3 0 hover 0 -2 1.5 0 0 0\nendcamera\n";
+      const ParseResult parsed = parse_scene(scene, "key");
+      REQUIRE(parsed.scene);
+      REQUIRE(parsed.scene->camera.size() == 1);
+      CHECK(same_camera_key(parsed.scene->camera[0].key, key));
+    }
+  }
+
+  TEST_CASE("the names: kinds, ordinals and what follows each") {
+    CHECK(camera_key_text(key_of(CameraKeyKind::hit, 3, 8, 2)) == "second hit 3 8");
+    CHECK(camera_key_text(key_of(CameraKeyKind::cushion, 3, -1, CameraKey::kLast)) == "last cushion 3");
+    CHECK(camera_key_text(key_of(CameraKeyKind::pocket, 5)) == "pocket 5");
+    CHECK(camera_key_text(key_of(CameraKeyKind::at, -1, -1, 1, 4.25)) == "at 4.25");
+    CHECK(camera_key_ordinal("third") == 3);
+    CHECK(camera_key_ordinal("first") == std::nullopt);
+    CHECK(camera_key_kind("event") == std::nullopt);
+    CHECK(camera_key_first_words().size() == 12);
+  }
+
+  TEST_CASE("text that is no key is refused") {
+    for (const char* text : {"", "hit 0", "second pocket 3", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1",
+                             "start 3", "second  hit 0 1"}) {
+      CAPTURE(text);
+      CHECK_FALSE(parse_camera_key(text));
+    }
+  }
+}
