@@ -276,7 +276,7 @@ bool write_streak(const Shot& shot, int i, double t, double shutter, int segment
   for (int k = 0; k <= segments; ++k)
     at.push_back(shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position);
   if ((at.back() - at.front()).norm() < 0.05 * radius) return false;
-  const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
+  const int number = shot.scene.ball(i).number;
   out << "object { BallShadow translate " << pov_vector(shot.timeline.state(i, t).position) << " }  // ball " << i
       << "'s shadow\n";
   for (int k = 0; k < segments; ++k) {
@@ -370,7 +370,7 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
     const BallState state = shot.timeline.state(i, t);
     // A pocketed ball lies in its pocket's cup.
-    const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
+    const int number = shot.scene.ball(i).number;
     const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
     if (segments == 0 || !write_streak(shot, i, t, shutter, segments, camera.location, out)) {
       const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
