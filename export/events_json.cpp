@@ -56,9 +56,8 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   for (int i = 0; i < timeline.ball_count(); ++i) {
     const BallState s = timeline.state(i, timeline.duration());
     const bool pocketed = s.motion == Motion::pocketed || s.motion == Motion::falling;
-    out << (i ? ",\n    " : "\n    ") << "{\"ball\": " << i
-        << ", \"number\": " << shot.scene.balls[static_cast<std::size_t>(i)].number << ", \"position\": ["
-        << format_number(s.position.x()) << ", " << format_number(s.position.y()) << ", "
+    out << (i ? ",\n    " : "\n    ") << "{\"ball\": " << i << ", \"number\": " << shot.scene.ball(i).number
+        << ", \"position\": [" << format_number(s.position.x()) << ", " << format_number(s.position.y()) << ", "
         << format_number(s.position.z()) << "], \"pocketed\": " << (pocketed ? "true" : "false") << "}";
   }
   out << (timeline.ball_count() == 0 ? "]\n}\n" : "\n  ]\n}\n");

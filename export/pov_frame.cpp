@@ -276,7 +276,7 @@ bool write_streak(const Shot& shot, int i, double t, double shutter, int segment
   for (int k = 0; k <= segments; ++k)
     at.push_back(shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position);
   if ((at.back() - at.front()).norm() < 0.05 * radius) return false;
-  const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
+  const int number = shot.scene.ball(i).number;
   out << "object { BallShadow translate " << pov_vector(shot.timeline.state(i, t).position) << " }  // ball " << i
       << "'s shadow\n";
   for (int k = 0; k < segments; ++k) {
@@ -352,7 +352,7 @@ std::string frame_name(int frame) {
   return name;
 }
 
-void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Look look) {
+void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
   const double t = frame_time(frame, fps);
   out << "// " << frame_name(frame) << " of " << shot.scene.name << ": t = " << pov_number(t) << " s\n";
   out << "#version 3.7;\n#include \"" << kPovIncludeName << "\"\n\n";
@@ -365,16 +365,13 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
       << "  right -x * image_width / image_height\n  angle " << pov_number(kCameraFovDeg) << "\n  look_at "
       << pov_vector(look_at) << "\n}\n\n";
 
-  const bool photo = look == Look::photo;
-  FrameBlur blur;
-  if (photo) blur = plan_blur(shot, t, fps);
+  const FrameBlur blur = plan_blur(shot, t, fps);
   const double shutter = kShutter / fps;
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
     const BallState state = shot.timeline.state(i, t);
-    // Classic: a pocketed ball is out of sight; photographic: it lies in its pocket's cup.
-    if (state.motion == Motion::pocketed && !photo) continue;
-    const int number = shot.scene.balls[static_cast<std::size_t>(i)].number;
-    const int segments = photo ? blur.ball_segments[static_cast<std::size_t>(i)] : 0;
+    // A pocketed ball lies in its pocket's cup.
+    const int number = shot.scene.ball(i).number;
+    const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
     if (segments == 0 || !write_streak(shot, i, t, shutter, segments, camera.location, out)) {
       const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
       out << "object { Ball(" << number << ") " << pov_matrix(r.col(0), r.col(1), r.col(2), state.position)
@@ -383,11 +380,11 @@ void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Lo
     }
   }
 
-  if (photo && !blur.stick.travel.empty()) {
+  if (!blur.stick.travel.empty()) {
     write_stick_sweep(shot.cue->pose(t), blur.stick, out);
     return;
   }
-  const int stick_copies = photo ? blur.stick.copies : 1;
+  const int stick_copies = blur.stick.copies;
   if (stick_copies == 1) {
     const CuePose cue = shot.cue->pose(t);
     if (cue.visible) out << "object { CueStick " << stick_place(cue) << " }\n";

@@ -3,7 +3,7 @@
 // orientation as a matrix), and the cue stick while it is in the scene. The models live in the
 // shared include (pov_table.h).
 //
-// Motion blur (the photographic look): a ball or the stick that moves more than kBlurPixels across
+// Motion blur: a ball or the stick that moves more than kBlurPixels across
 // the picture while the shutter is open (half the frame's time, a film camera's 180-degree shutter)
 // is drawn blurred; everything else is drawn once. A ball is drawn as its streak: the solid its
 // sphere sweeps while the shutter is open (a capsule, or a few for a path that bends), seen from
@@ -74,9 +74,8 @@ std::vector<StickTravel> stick_travel(const std::vector<double>& along);
 /// computes the same.
 double stick_cover(double along, const std::vector<StickTravel>& pieces, double length);
 
-/// Writes frame `frame` of the shot, which shows t = frame / fps. The classic look draws no blur and
-/// leaves pocketed balls out; the photographic one shows them lying in their pockets.
-void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out, Look look = Look::photo);
+/// Writes frame `frame` of the shot, which shows t = frame / fps. Pocketed balls lie in their pockets.
+void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out);
 
 /// How many sub-frame instants frame `frame` builds its blur from: 1 when nothing in it moves more
 /// than kBlurPixels while the shutter is open (the frame is rendered once, as it is), else the most of

@@ -70,7 +70,7 @@ void write_ball_colours(std::ostream& out) {
 
 }  // namespace
 
-void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, Look look) {
+void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
   out << "// Billiards Sim: the table, balls, cue stick, room and lights shared by every frame.\n"
          "// Units are metres, z is up, the bed is z = 0 and the table's middle is the origin.\n\n"
          "// ---- from the scene\n";
@@ -115,7 +115,7 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out, L
   }
   write_table_description(layout, out);
   write_ball_colours(out);
-  out << "\n" << (look == Look::classic ? pov_classic_models_text() : pov_models_text());
+  out << "\n" << pov_models_text();
 }
 
 }  // namespace bsim

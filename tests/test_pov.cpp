@@ -1,8 +1,8 @@
 // The POV-Ray files: the shared include and a frame match their golden text; balls are placed by
-// their quaternions, dropped balls lie in their pockets (classic: leave the picture), the put-away
-// stick leaves it, fast balls are drawn as their streaks and slow ones once, a fast stroke's stick is
-// swept along its axis, the table follows the scene, POV-Ray itself parses what is written for
-// several tables (in both looks), and two renders of one frame are the same picture.
+// their quaternions, dropped balls lie in their pockets, the put-away stick leaves it, fast balls are
+// drawn as their streaks and slow ones once, a fast stroke's stick is swept along its axis, the
+// table follows the scene, the models compiled in are export/pov/*.inc byte for byte, POV-Ray itself
+// parses what is written for several tables, and two renders of one frame are the same picture.
 //
 // After an intended change to the models, regenerate the golden files (with every other) with
 //   BSIM_UPDATE_GOLDENS=1 build/bin/bsim_tests
@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cue_pose.h"
 #include "files.h"
@@ -66,9 +68,9 @@ std::string include_text(const Shot& shot, Quality quality = Quality::draft) {
   return out.str();
 }
 
-std::string frame_text(const Shot& shot, int frame, int fps = 30, Look look = Look::photo) {
+std::string frame_text(const Shot& shot, int frame, int fps = 30) {
   std::ostringstream out;
-  write_pov_frame(shot, frame, fps, out, look);
+  write_pov_frame(shot, frame, fps, out);
   return out.str();
 }
 
@@ -78,14 +80,13 @@ void check_golden(const std::string& name, const std::string& text) {
 
 /// Writes the include and the given frames of `shot` into `dir`, renders them at 32x18 with
 /// POV-Ray (all at once: each process spends most of its time starting), returns the log.
-test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames,
-                                Look look = Look::photo) {
+test::CommandResult render_tiny(const Shot& shot, const fs::path& dir, const std::vector<int>& frames) {
   std::ostringstream include;
-  write_pov_include(shot.scene, Quality::final, include, look);
+  write_pov_include(shot.scene, Quality::final, include);
   REQUIRE(test::write_file(dir / std::string(kPovIncludeName), include.str()));
   std::string command = "cd '" + dir.string() + "' && status=0; pids=; for f in";
   for (int k : frames) {
-    REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k, 30, look)));
+    REQUIRE(test::write_file(dir / (frame_name(k) + ".pov"), frame_text(shot, k)));
     command += " " + frame_name(k);
   }
   command +=
@@ -115,6 +116,25 @@ TEST_SUITE("pov") {
     check_golden("tiny_frame_00000.pov", frame_text(*shot, 0));
   }
 
+  TEST_CASE("the models compiled in are export/pov/*.inc, byte for byte, in the include's order") {
+    // Every .inc in the folder is compiled in, in the order export/CMakeLists.txt names them.
+    const std::vector<std::string> in_include = {"settings.inc", "materials.inc", "table.inc",
+                                                 "balls.inc",    "cue.inc",       "room.inc"};
+    std::vector<std::string> in_folder, sorted = in_include;
+    for (const auto& entry : fs::directory_iterator(test::source_path("export/pov")))
+      if (entry.path().extension() == ".inc") in_folder.push_back(entry.path().filename().string());
+    std::sort(in_folder.begin(), in_folder.end());
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(in_folder == sorted);
+    std::string files;
+    for (const std::string& name : in_include) {
+      const auto text = test::read_file(test::source_path("export/pov/" + name));
+      REQUIRE_MESSAGE(text, name);
+      files += *text;
+    }
+    CHECK(files == std::string(pov_models_text()));
+  }
+
   TEST_CASE("a ball's matrix turns its axes by its orientation and moves it to its centre") {
     const auto shot = load(kTinyScene);
     const std::string frame = frame_text(*shot, 0);
@@ -130,7 +150,7 @@ TEST_SUITE("pov") {
     CHECK(frame.find("angle 55.0") != std::string::npos);
   }
 
-  TEST_CASE("a pocketed ball lies in its pocket (classic: out of the picture); the put-away stick is gone") {
+  TEST_CASE("a pocketed ball lies in its pocket; the put-away stick is gone") {
     const auto shot = load(kPocketScene);
     REQUIRE(shot->timeline.pocket_drops().size() == 1);
     const int last = frame_count(shot->timeline.duration(), 30) - 1;
@@ -139,7 +159,6 @@ TEST_SUITE("pov") {
     // In the pocket's cup, its centre PocketDepth below its height on the bed.
     const double rest = shot->scene.physics.ball_radius - kPocketDepth;
     CHECK(end.find(", " + pov_number(rest) + "> }  // ball 0") != std::string::npos);
-    CHECK(frame_text(*shot, last, 30, Look::classic).find("// ball 0") == std::string::npos);
     CHECK(end.find("// ball 1") != std::string::npos);
     CHECK(end.find("CueStick") == std::string::npos);
     bool stick_seen = false;
@@ -193,7 +212,6 @@ TEST_SUITE("pov") {
     const double length = std::stod(text.substr(streak + std::string("object { BallStreak(0, ").size()));
     CHECK(length == doctest::Approx(way).epsilon(0.05));         // the camera looks down at it: seen at full length
     CHECK(text.find("object { Ball(3) ") != std::string::npos);  // the balls at rest stay sharp
-    CHECK(frame_text(*shot, after, 30, Look::classic).find("BallStreak") == std::string::npos);
   }
 
   TEST_CASE("a streak lets through what a box filter over the shutter would, and sums to one ball") {
@@ -234,10 +252,6 @@ TEST_SUITE("pov") {
     CHECK(text.find("// blurred: swept along its axis") != std::string::npos);
     CHECK(text.find("CueStickT") == std::string::npos);  // no copies
     CHECK(blur_samples(*shot, swept, 30) >= 2);
-    // The classic look draws the stick once, as it is at the frame's instant.
-    const std::string classic = frame_text(*shot, swept, 30, Look::classic);
-    CHECK(classic.find("CueSweep") == std::string::npos);
-    CHECK(classic.find("object { CueStick matrix") != std::string::npos);
   }
 
   TEST_CASE("a stick swung across the picture is drawn as copies that cast no shadow, and one unseen stick does") {
@@ -411,10 +425,5 @@ TEST_SUITE("pov") {
       CHECK(test::read_file(dir.path / (frame_name(strike) + ".pov")).value_or("").find("CueSweep(") !=
             std::string::npos);
     }
-    // The classic look, kept for the render benchmark, still parses too.
-    const auto shot = load(kPocketScene);
-    test::TempDir dir;
-    const test::CommandResult r = render_tiny(*shot, dir.path, {0}, Look::classic);
-    CHECK_MESSAGE(r.exit_code == 0, r.out);
   }
 }

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "fixtures.h"
+#include "hertz.h"
 #include "loudness.h"
 #include "mastering.h"
 #include "motion.h"
@@ -79,9 +80,24 @@ std::uint32_t le32(const std::string& bytes, std::size_t at) {
 TEST_SUITE("sound") {
   TEST_CASE("a Hertz contact is shorter the faster the balls meet (about 460, 350, 290 us at 0.5, 2, 5 m/s)") {
     const PhysicsParams physics;
-    CHECK(hertz_contact_time(physics, 0.5) == doctest::Approx(461e-6).epsilon(0.03));
-    CHECK(hertz_contact_time(physics, 2.0) == doctest::Approx(349e-6).epsilon(0.03));
-    CHECK(hertz_contact_time(physics, 5.0) == doctest::Approx(291e-6).epsilon(0.03));
+    CHECK(click_contact_time(physics, 0.5) == doctest::Approx(461e-6).epsilon(0.03));
+    CHECK(click_contact_time(physics, 2.0) == doctest::Approx(349e-6).epsilon(0.03));
+    CHECK(click_contact_time(physics, 5.0) == doctest::Approx(291e-6).epsilon(0.03));
+  }
+
+  TEST_CASE("the click's contact time is the physics' Hertz contact, for the sound's own ball material") {
+    const PhysicsParams physics;
+    // k_hertz's default is the stiffness of its documented material (E = 5.84 GPa, nu = 0.34).
+    CHECK(hertz_stiffness(5.84e9, 0.34, physics.ball_radius) == doctest::Approx(physics.k_hertz).epsilon(0.001));
+    // The sound's material (E = 5.4 GPa, nu = 0.35) as the scene's k_hertz: the same contact time but for
+    // the sound's time factor, 2.87 where the physics' is 2.868.
+    PhysicsParams sound_material = physics;
+    sound_material.k_hertz = hertz_stiffness(5.4e9, 0.35, physics.ball_radius);
+    const double rounding = 2.87 / (kHertzTimeFactor * std::pow(15.0 / 16.0, 0.4));
+    CHECK(rounding == doctest::Approx(1.0).epsilon(0.001));
+    for (double speed : {0.5, 2.0, 5.0})
+      CHECK(click_contact_time(physics, speed) ==
+            doctest::Approx(hertz_contact_time(speed, sound_material) * rounding).epsilon(1e-12));
   }
 
   TEST_CASE("every kind of sound gets louder with speed, and its peak is its gain") {

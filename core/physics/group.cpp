@@ -26,31 +26,9 @@ struct Pair {
   int contact = -1;       ///< index into the contacts while in contact, else -1
 };
 
-}  // namespace
-
-double hertz_compression(double speed, const PhysicsParams& params) {
-  const double reduced_mass = 0.5 * params.ball_mass;
-  return std::pow(5.0 * reduced_mass * speed * speed / (4.0 * params.k_hertz), 0.4);
-}
-
-double hertz_contact_time(double speed, const PhysicsParams& params) {
-  return kHertzTimeFactor * hertz_compression(speed, params) / speed;
-}
-
-double group_gap(double speed, const PhysicsParams& params) {
-  return kGroupGapRatio * hertz_compression(speed, params);
-}
-
-GroupResult resolve_group(const std::vector<BallState>& balls, const PhysicsParams& params, double steps_per_contact) {
+/// The largest relative speed of two balls of the group (m/s), in the table's plane.
+double largest_relative_speed(const std::vector<BallState>& balls) {
   const int count = static_cast<int>(balls.size());
-  const double R = params.ball_radius, m = params.ball_mass, k = params.k_hertz;
-  GroupResult result;
-  result.after = balls;
-  result.touched.assign(balls.size(), false);
-
-  // The pairs that can touch during the phase: those less than twice the gap threshold apart at the
-  // group's largest relative speed (the balls move by about that much in the phase). A pair farther
-  // apart that meets later is an ordinary contact of the event loop.
   double relative_speed = 0;
   for (int i = 0; i < count; ++i)
     for (int j = i + 1; j < count; ++j) {
@@ -58,8 +36,13 @@ GroupResult resolve_group(const std::vector<BallState>& balls, const PhysicsPara
       relative_speed =
           std::max(relative_speed, std::hypot(a.velocity.x() - b.velocity.x(), a.velocity.y() - b.velocity.y()));
     }
-  if (!(relative_speed > 0)) return result;
-  const double reach = 2 * group_gap(relative_speed, params);
+  return relative_speed;
+}
+
+/// The pairs that can touch during the phase: those whose surfaces are less than `reach` apart.
+std::vector<Pair> nearby_pairs(const std::vector<BallState>& balls, double ball_radius, double reach) {
+  const int count = static_cast<int>(balls.size());
+  const double R = ball_radius;
   std::vector<Pair> pairs;
   for (int i = 0; i < count; ++i)
     for (int j = i + 1; j < count; ++j) {
@@ -76,132 +59,176 @@ GroupResult resolve_group(const std::vector<BallState>& balls, const PhysicsPara
       p.overlap = -p.gap;
       pairs.push_back(p);
     }
-  if (pairs.empty()) return result;
+  return pairs;
+}
 
-  const double e = params.e_ball;
-  const double damping = e > 0 ? std::min(8.0 * (1 - e) / (5.0 * e), kMaxDampingRatio) : kMaxDampingRatio;
-  // The damping stiffens the compression by up to (1 + damping): shorten the step to match.
-  const double refine = std::sqrt(1 + damping);
-  const double dt = hertz_contact_time(relative_speed, params) / (steps_per_contact * refine);
-  const long max_steps = static_cast<long>(std::ceil(kGroupMaxContactTimes * steps_per_contact * refine));
+/// The group's integration: the balls' displacements from their places at the group's instant and
+/// their velocities, x and y interleaved, the accelerations of the last step, and the step's constants.
+struct Phase {
+  std::vector<double> x, v, acc;
+  double dt = 0;       ///< s
+  double k = 0;        ///< N/m^1.5, Hertz stiffness
+  double mass = 0;     ///< kg, each ball's
+  double damping = 0;  ///< Hunt-Crossley damping ratio
+};
 
-  const auto n = static_cast<std::size_t>(count);
-  std::vector<double> x(2 * n, 0.0), v(2 * n), acc(2 * n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    v[2 * i] = balls[i].velocity.x();
-    v[2 * i + 1] = balls[i].velocity.y();
+/// The force of pair p at step `step` (Hunt & Crossley with Flores's damping), added to the
+/// accelerations; a contact's start and its largest closing speed are noted in `contacts`.
+void pair_force(Pair& p, Phase& s, long step, std::vector<GroupContact>& contacts) {
+  const std::vector<double>&x = s.x, &v = s.v;
+  const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
+  const double overlap = p.nx * (x[2 * i] - x[2 * j]) + p.ny * (x[2 * i + 1] - x[2 * j + 1]) - p.gap;
+  const double rate = p.nx * (v[2 * i] - v[2 * j]) + p.ny * (v[2 * i + 1] - v[2 * j + 1]);
+  double force = 0;
+  if (overlap > 0) {
+    if (p.contact < 0) {
+      // The contact begins: when the overlap crossed zero within this step.
+      const double begun = (static_cast<double>(step - 1) + -p.overlap / (overlap - p.overlap)) * s.dt;
+      p.contact = static_cast<int>(contacts.size());
+      contacts.push_back({p.i, p.j, begun, 0.0});
+      p.v0 = 0;
+    }
+    p.v0 = std::max(p.v0, rate);
+    const double hunt_crossley = p.v0 > 0 ? 1 + s.damping * rate / p.v0 : 1.0;
+    force = std::max(0.0, s.k * overlap * std::sqrt(overlap) * hunt_crossley);
+  } else if (p.contact >= 0) {
+    contacts[static_cast<std::size_t>(p.contact)].speed = p.v0;
+    p.contact = -1;
   }
+  p.impulse += 0.5 * (p.force + force) * s.dt;
+  p.force = force;
+  p.overlap = overlap;
+  const double fx = force * p.nx / s.mass, fy = force * p.ny / s.mass;
+  s.acc[2 * i] -= fx;
+  s.acc[2 * i + 1] -= fy;
+  s.acc[2 * j] += fx;
+  s.acc[2 * j + 1] += fy;
+}
 
-  long step = 0;
-  while (step < max_steps) {
-    ++step;
-    // Velocity Verlet: half kick, drift, forces at the new positions (the damping with the half-step
-    // velocity), half kick.
-    for (std::size_t q = 0; q < 2 * n; ++q) {
-      v[q] += 0.5 * dt * acc[q];
-      x[q] += dt * v[q];
-      acc[q] = 0;
-    }
-    for (Pair& p : pairs) {
-      const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
-      const double overlap = p.nx * (x[2 * i] - x[2 * j]) + p.ny * (x[2 * i + 1] - x[2 * j + 1]) - p.gap;
-      const double rate = p.nx * (v[2 * i] - v[2 * j]) + p.ny * (v[2 * i + 1] - v[2 * j + 1]);
-      double force = 0;
-      if (overlap > 0) {
-        if (p.contact < 0) {
-          // The contact begins: when the overlap crossed zero within this step.
-          const double begun = (static_cast<double>(step - 1) + -p.overlap / (overlap - p.overlap)) * dt;
-          p.contact = static_cast<int>(result.contacts.size());
-          result.contacts.push_back({p.i, p.j, begun, 0.0});
-          p.v0 = 0;
-        }
-        p.v0 = std::max(p.v0, rate);
-        const double hunt_crossley = p.v0 > 0 ? 1 + damping * rate / p.v0 : 1.0;
-        force = std::max(0.0, k * overlap * std::sqrt(overlap) * hunt_crossley);
-      } else if (p.contact >= 0) {
-        result.contacts[static_cast<std::size_t>(p.contact)].speed = p.v0;
-        p.contact = -1;
-      }
-      p.impulse += 0.5 * (p.force + force) * dt;
-      p.force = force;
-      p.overlap = overlap;
-      const double fx = force * p.nx / m, fy = force * p.ny / m;
-      acc[2 * i] -= fx;
-      acc[2 * i + 1] -= fy;
-      acc[2 * j] += fx;
-      acc[2 * j + 1] += fy;
-    }
-    for (std::size_t q = 0; q < 2 * n; ++q) v[q] += 0.5 * dt * acc[q];
-
-    // Done when nothing overlaps and no nearby pair is still closing: one that would close its gap
-    // within as long again as the phase has lasted keeps it going.
-    bool going = false;
-    const double elapsed = static_cast<double>(step) * dt;
-    for (const Pair& p : pairs) {
-      if (p.contact >= 0) {
-        going = true;
-        break;
-      }
-      const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
-      const double closing = p.nx * (v[2 * i] - v[2 * j]) + p.ny * (v[2 * i + 1] - v[2 * j + 1]);
-      if (closing > kMinClosingSpeed && -p.overlap < closing * elapsed) {
-        going = true;
-        break;
-      }
-    }
-    if (!going) break;
+/// Velocity Verlet: half kick, drift, forces at the new positions (the damping with the half-step
+/// velocity), half kick.
+void verlet_step(Phase& s, std::vector<Pair>& pairs, long step, std::vector<GroupContact>& contacts) {
+  for (std::size_t q = 0; q < s.x.size(); ++q) {
+    s.v[q] += 0.5 * s.dt * s.acc[q];
+    s.x[q] += s.dt * s.v[q];
+    s.acc[q] = 0;
   }
-  for (Pair& p : pairs)
-    if (p.contact >= 0) result.contacts[static_cast<std::size_t>(p.contact)].speed = p.v0;
-  result.steps = step;
-  result.duration = static_cast<double>(step) * dt;
+  for (Pair& p : pairs) pair_force(p, s, step, contacts);
+  for (std::size_t q = 0; q < s.x.size(); ++q) s.v[q] += 0.5 * s.dt * s.acc[q];
+}
 
-  for (const Pair& p : pairs)
-    if (p.impulse > 0) {
-      result.touched[static_cast<std::size_t>(p.i)] = true;
-      result.touched[static_cast<std::size_t>(p.j)] = true;
-    }
+/// Done when nothing overlaps and no nearby pair is still closing: one that would close its gap
+/// within as long again as the phase has lasted (`elapsed`) keeps it going.
+bool still_going(const std::vector<Pair>& pairs, const std::vector<double>& v, double elapsed) {
+  for (const Pair& p : pairs) {
+    if (p.contact >= 0) return true;
+    const auto i = static_cast<std::size_t>(p.i), j = static_cast<std::size_t>(p.j);
+    const double closing = p.nx * (v[2 * i] - v[2 * j]) + p.ny * (v[2 * i + 1] - v[2 * j + 1]);
+    if (closing > kMinClosingSpeed && -p.overlap < closing * elapsed) return true;
+  }
+  return false;
+}
 
-  // Energy is never gained: scale the touched balls' velocities about their centre of mass (which
-  // keeps the momentum) back to the energy they came in with if the integration added any.
+/// Energy is never gained: scales the touched balls' velocities `v` about their centre of mass (which
+/// keeps the momentum) back to the energy they came in with if the integration added any.
+void keep_energy(const std::vector<BallState>& balls, const std::vector<bool>& touched_balls, std::vector<double>& v) {
+  const std::size_t n = balls.size();
   double before = 0, after = 0, vx = 0, vy = 0;
   int touched = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!result.touched[i]) continue;
+    if (!touched_balls[i]) continue;
     ++touched;
     before += balls[i].velocity.x() * balls[i].velocity.x() + balls[i].velocity.y() * balls[i].velocity.y();
     after += v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1];
     vx += v[2 * i];
     vy += v[2 * i + 1];
   }
-  if (touched > 0 && after > before) {
-    vx /= touched;
-    vy /= touched;
-    const double centre = touched * (vx * vx + vy * vy);
-    const double scale = after > centre ? std::sqrt(std::max(0.0, before - centre) / (after - centre)) : 1.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!result.touched[i]) continue;
-      v[2 * i] = vx + scale * (v[2 * i] - vx);
-      v[2 * i + 1] = vy + scale * (v[2 * i + 1] - vy);
-    }
+  if (!(touched > 0 && after > before)) return;
+  vx /= touched;
+  vy /= touched;
+  const double centre = touched * (vx * vx + vy * vy);
+  const double scale = after > centre ? std::sqrt(std::max(0.0, before - centre) / (after - centre)) : 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!touched_balls[i]) continue;
+    v[2 * i] = vx + scale * (v[2 * i] - vx);
+    v[2 * i + 1] = vy + scale * (v[2 * i + 1] - vy);
   }
+}
+
+/// Friction between the balls: the pairwise model's capped Coulomb impulse, with each pair's
+/// accumulated normal impulse, pair by pair in a fixed order, once the normal phase is over.
+void apply_friction(const std::vector<Pair>& pairs, std::vector<BallState>& after, const PhysicsParams& params) {
+  const double R = params.ball_radius;
+  for (const Pair& p : pairs) {
+    if (!(p.impulse > 0)) continue;
+    BallState &a = after[static_cast<std::size_t>(p.i)], &b = after[static_cast<std::size_t>(p.j)];
+    const Vec3 normal(p.nx, p.ny, 0);
+    const Vec3 friction = ball_ball_friction(a, b, normal, p.impulse, params);
+    apply_impulse(a, R * normal, -friction, params);
+    apply_impulse(b, -R * normal, friction, params);
+  }
+}
+
+}  // namespace
+
+double group_gap(double speed, const PhysicsParams& params) {
+  return kGroupGapRatio * hertz_compression(speed, params);
+}
+
+GroupResult resolve_group(const std::vector<BallState>& balls, const PhysicsParams& params, double steps_per_contact) {
+  GroupResult result;
+  result.after = balls;
+  result.touched.assign(balls.size(), false);
+
+  // The pairs that can touch during the phase: those less than twice the gap threshold apart at the
+  // group's largest relative speed (the balls move by about that much in the phase). A pair farther
+  // apart that meets later is an ordinary contact of the event loop.
+  const double relative_speed = largest_relative_speed(balls);
+  if (!(relative_speed > 0)) return result;
+  std::vector<Pair> pairs = nearby_pairs(balls, params.ball_radius, 2 * group_gap(relative_speed, params));
+  if (pairs.empty()) return result;
+
+  const double e = params.e_ball;
+  Phase s;
+  s.damping = e > 0 ? std::min(8.0 * (1 - e) / (5.0 * e), kMaxDampingRatio) : kMaxDampingRatio;
+  // The damping stiffens the compression by up to (1 + damping): shorten the step to match.
+  const double refine = std::sqrt(1 + s.damping);
+  s.dt = hertz_contact_time(relative_speed, params) / (steps_per_contact * refine);
+  s.k = params.k_hertz;
+  s.mass = params.ball_mass;
+  const long max_steps = static_cast<long>(std::ceil(kGroupMaxContactTimes * steps_per_contact * refine));
+
+  const std::size_t n = balls.size();
+  s.x.assign(2 * n, 0.0);
+  s.v.resize(2 * n);
+  s.acc.assign(2 * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.v[2 * i] = balls[i].velocity.x();
+    s.v[2 * i + 1] = balls[i].velocity.y();
+  }
+  long step = 0;
+  while (step < max_steps) {
+    ++step;
+    verlet_step(s, pairs, step, result.contacts);
+    if (!still_going(pairs, s.v, static_cast<double>(step) * s.dt)) break;
+  }
+  for (Pair& p : pairs)
+    if (p.contact >= 0) result.contacts[static_cast<std::size_t>(p.contact)].speed = p.v0;
+  result.steps = step;
+  result.duration = static_cast<double>(step) * s.dt;
+
+  for (const Pair& p : pairs)
+    if (p.impulse > 0) {
+      result.touched[static_cast<std::size_t>(p.i)] = true;
+      result.touched[static_cast<std::size_t>(p.j)] = true;
+    }
+  keep_energy(balls, result.touched, s.v);
   for (std::size_t i = 0; i < n; ++i) {
     if (!result.touched[i]) continue;
-    result.after[i].velocity.x() = v[2 * i];
-    result.after[i].velocity.y() = v[2 * i + 1];
+    result.after[i].velocity.x() = s.v[2 * i];
+    result.after[i].velocity.y() = s.v[2 * i + 1];
   }
-
-  // Friction between the balls: the pairwise model's capped Coulomb impulse, with each pair's
-  // accumulated normal impulse, pair by pair in a fixed order, once the normal phase is over.
-  if (params.mu_ball > 0)
-    for (const Pair& p : pairs) {
-      if (!(p.impulse > 0)) continue;
-      BallState &a = result.after[static_cast<std::size_t>(p.i)], &b = result.after[static_cast<std::size_t>(p.j)];
-      const Vec3 normal(p.nx, p.ny, 0);
-      const Vec3 friction = ball_ball_friction(a, b, normal, p.impulse, params);
-      apply_impulse(a, R * normal, -friction, params);
-      apply_impulse(b, -R * normal, friction, params);
-    }
+  if (params.mu_ball > 0) apply_friction(pairs, result.after, params);
   for (std::size_t i = 0; i < n; ++i)
     if (result.touched[i]) result.after[i] = classify(result.after[i], params);
   return result;

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "ball_state.h"
+#include "hertz.h"
 #include "physics_params.h"
 
 namespace bsim {
@@ -49,17 +50,10 @@ namespace bsim {
 inline constexpr double kGroupGapRatio = 0.1;
 /// Integration steps per Hertz contact time at the group's largest relative speed.
 inline constexpr double kGroupStepsPerContact = 100;
-/// Hertz contact time of two equal spheres, in units of delta_max / v (2 * integral_0^1 dx / sqrt(1 - x^2.5)).
-inline constexpr double kHertzTimeFactor = 2.9432;
 /// Safety net: a group phase longer than this many contact times stops (what is left goes back to the
 /// event loop as ordinary contacts).
 inline constexpr double kGroupMaxContactTimes = 60;
 
-/// m, the largest overlap of an isolated Hertz contact of two balls closing at `speed` (m/s) without
-/// damping: delta_max = (5 m* v^2 / (4 k))^(2/5), m* = m / 2 the pair's reduced mass.
-double hertz_compression(double speed, const PhysicsParams& params);
-/// s, the duration of that contact: kHertzTimeFactor * delta_max / v.
-double hertz_contact_time(double speed, const PhysicsParams& params);
 /// m, surface gap below which a neighbour joins a contact closing at `speed`: kGroupGapRatio * delta_max.
 double group_gap(double speed, const PhysicsParams& params);
 

@@ -6,6 +6,7 @@
 #include <queue>
 #include <tuple>
 
+#include "check.h"
 #include "detect.h"
 #include "group.h"
 #include "motion.h"
@@ -383,86 +384,94 @@ class Simulator {
   }
 
   void handle(const Candidate& c) {
-    const double t = c.time;
     switch (c.kind) {
-      case Kind::transition: {
-        begin_segment(c.a, t, after_transition(current(c.a).start, params_));
-        reschedule({c.a}, t);
-        break;
-      }
-      case Kind::ball_ball: {
-        BallState a = state_at(c.a, t), b = state_at(c.b, t);
-        const double speed = closing_speed(a, b);
-        if (!(speed > 0)) {
-          // A resting contact that did not press after all: nothing to resolve.
-          schedule_pair(c.a, c.b, t);
-          break;
-        }
-        if (speed >= kMinEventSpeed) {
-          std::vector<int> group = gather_group(c.a, c.b, t, speed);
-          if (group.size() > 2) {
-            resolve_group_event(group, c.a, c.b, t);
-            break;
-          }
-        }
-        separate(a, b);
-        const auto [na, nb] = resolve_pair(a, b, speed);
-        const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
-        if (speed >= kMinEventSpeed)
-          add_pair_event(c.a, c.b, t, speed, a.position + params_.ball_radius * n, {a, b}, {na, nb});
-        begin_segment(c.a, t, na);
-        begin_segment(c.b, t, nb);
-        reschedule({c.a, c.b}, t);
-        break;
-      }
+      case Kind::transition:
+        begin_segment(c.a, c.time, after_transition(current(c.a).start, params_));
+        reschedule({c.a}, c.time);
+        return;
+      case Kind::ball_ball: handle_ball_ball(c); return;
       case Kind::cushion:
-      case Kind::cushion_end: {
-        const int r = c.b - n_;
-        const Rail& cushion = rail(r);
-        BallState s = state_at(c.a, t);
-        const double h = cushion.a.z(), reach = reach_[static_cast<std::size_t>(r)];
-        Vec3 toward;
-        double overlap;
-        if (c.kind == Kind::cushion) {
-          const Vec3 dir = Vec3(cushion.b.x() - cushion.a.x(), cushion.b.y() - cushion.a.y(), 0).normalized();
-          toward = Vec3(-dir.y(), dir.x(), 0);
-          overlap = reach + toward.dot(Vec3(s.position.x() - cushion.a.x(), s.position.y() - cushion.a.y(), 0));
-        } else {
-          const Vec3& point = c.end == 0 ? cushion.a : cushion.b;
-          const Vec3 to(point.x() - s.position.x(), point.y() - s.position.y(), 0);
-          toward = to.normalized();
-          overlap = reach - to.norm();
-        }
-        const double speed = cushion_closing_speed(s, toward, h, params_);
-        if (!(speed > 0)) {
-          schedule_own(c.a, t);
-          break;
-        }
-        if (overlap > 0) s.position -= overlap * toward;  // back to touching (see separate())
-        const BallState ns = resolve_cushion(s, toward, h);
-        if (speed >= kMinEventSpeed)
-          add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
-        begin_segment(c.a, t, ns);
-        reschedule({c.a}, t);
-        break;
-      }
-      case Kind::pocket: {
-        const Pocket& pocket = scene_.pockets[static_cast<std::size_t>(c.b)];
-        BallState s = state_at(c.a, t);
-        s.motion = Motion::falling;
-        begin_segment(c.a, t, s, c.b);
-        const double fall = fall_duration(s, pocket, params_);
-        BallState rest = fall_state(s, pocket, params_, fall);
-        rest.velocity.setZero();
-        rest.spin.setZero();
-        rest.motion = Motion::pocketed;
-        segments_[static_cast<std::size_t>(c.a)].push_back({t + fall, rest, c.b});
-        drops_.push_back({t, c.a, c.b});
-        own_time_[static_cast<std::size_t>(c.a)] = kInf;
-        tracks_[static_cast<std::size_t>(c.a)].live = false;
-        break;
+      case Kind::cushion_end: handle_cushion(c); return;
+      case Kind::pocket: handle_pocket(c); return;
+    }
+    BSIM_EXPECT(false, "an event candidate of no known kind");
+  }
+
+  /// Two balls meet: resolved as a pair, or with the balls touching them as a group (group.h).
+  void handle_ball_ball(const Candidate& c) {
+    const double t = c.time;
+    BallState a = state_at(c.a, t), b = state_at(c.b, t);
+    const double speed = closing_speed(a, b);
+    if (!(speed > 0)) {
+      // A resting contact that did not press after all: nothing to resolve.
+      schedule_pair(c.a, c.b, t);
+      return;
+    }
+    if (speed >= kMinEventSpeed) {
+      std::vector<int> group = gather_group(c.a, c.b, t, speed);
+      if (group.size() > 2) {
+        resolve_group_event(group, c.a, c.b, t);
+        return;
       }
     }
+    separate(a, b);
+    const auto [na, nb] = resolve_pair(a, b, speed);
+    const Vec3 n = Vec3(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0).normalized();
+    if (speed >= kMinEventSpeed)
+      add_pair_event(c.a, c.b, t, speed, a.position + params_.ball_radius * n, {a, b}, {na, nb});
+    begin_segment(c.a, t, na);
+    begin_segment(c.b, t, nb);
+    reschedule({c.a, c.b}, t);
+  }
+
+  /// A ball meets a cushion's nose line (Kind::cushion) or one of its ends (Kind::cushion_end).
+  void handle_cushion(const Candidate& c) {
+    const double t = c.time;
+    const int r = c.b - n_;
+    const Rail& cushion = rail(r);
+    BallState s = state_at(c.a, t);
+    const double h = cushion.a.z(), reach = reach_[static_cast<std::size_t>(r)];
+    Vec3 toward;
+    double overlap;
+    if (c.kind == Kind::cushion) {
+      const Vec3 dir = Vec3(cushion.b.x() - cushion.a.x(), cushion.b.y() - cushion.a.y(), 0).normalized();
+      toward = Vec3(-dir.y(), dir.x(), 0);
+      overlap = reach + toward.dot(Vec3(s.position.x() - cushion.a.x(), s.position.y() - cushion.a.y(), 0));
+    } else {
+      const Vec3& point = c.end == 0 ? cushion.a : cushion.b;
+      const Vec3 to(point.x() - s.position.x(), point.y() - s.position.y(), 0);
+      toward = to.normalized();
+      overlap = reach - to.norm();
+    }
+    const double speed = cushion_closing_speed(s, toward, h, params_);
+    if (!(speed > 0)) {
+      schedule_own(c.a, t);
+      return;
+    }
+    if (overlap > 0) s.position -= overlap * toward;  // back to touching (see separate())
+    const BallState ns = resolve_cushion(s, toward, h);
+    if (speed >= kMinEventSpeed)
+      add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
+    begin_segment(c.a, t, ns);
+    reschedule({c.a}, t);
+  }
+
+  /// A ball's centre crosses a pocket's drop circle: it falls and comes to rest in the pocket.
+  void handle_pocket(const Candidate& c) {
+    const double t = c.time;
+    const Pocket& pocket = scene_.pockets[static_cast<std::size_t>(c.b)];
+    BallState s = state_at(c.a, t);
+    s.motion = Motion::falling;
+    begin_segment(c.a, t, s, c.b);
+    const double fall = fall_duration(s, pocket, params_);
+    BallState rest = fall_state(s, pocket, params_, fall);
+    rest.velocity.setZero();
+    rest.spin.setZero();
+    rest.motion = Motion::pocketed;
+    segments_[static_cast<std::size_t>(c.a)].push_back({t + fall, rest, c.b});
+    drops_.push_back({t, c.a, c.b});
+    own_time_[static_cast<std::size_t>(c.a)] = kInf;
+    tracks_[static_cast<std::size_t>(c.a)].live = false;
   }
 
   void finish(double t_cue) {

@@ -1,6 +1,7 @@
 #include "timeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "motion.h"
@@ -84,7 +85,10 @@ BallState Timeline::segment_state(const MotionSegment& seg, const SegmentSteps* 
 }
 
 std::size_t Timeline::segment_at(int ball, double& t) const {
+  BSIM_EXPECT(ball >= 0 && ball < ball_count(), "no such ball in the timeline");
   const auto& list = segments_[static_cast<std::size_t>(ball)];
+  BSIM_EXPECT(!list.empty(), "a ball of the timeline has no motion segment");
+  BSIM_EXPECT(!std::isnan(t), "a motion segment looked up at a time that is not a number");
   t = std::clamp(t, 0.0, duration());
   auto it = std::upper_bound(list.begin(), list.end(), t, [](double v, const MotionSegment& s) { return v < s.t0; });
   if (it != list.begin()) --it;

@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "check.h"
 #include "event.h"
 #include "physics_params.h"
 
@@ -39,7 +40,10 @@ class Timeline {
   BallState motion_state(int ball, double t) const;
   std::vector<BallState> states(double t) const;
   /// The closed-form pieces of one ball's motion, in time order (for drawing paths).
-  const std::vector<MotionSegment>& segments(int ball) const { return segments_[static_cast<std::size_t>(ball)]; }
+  const std::vector<MotionSegment>& segments(int ball) const {
+    BSIM_EXPECT(ball >= 0 && ball < ball_count(), "no such ball in the timeline");
+    return segments_[static_cast<std::size_t>(ball)];
+  }
   const PhysicsParams& physics() const { return physics_; }
   /// This timeline answering every query by integrating from the segment's start, with nothing
   /// saved: the same values to the bit, only slower (the reference for checks and benchmarks).

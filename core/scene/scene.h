@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "check.h"
 #include "physics_params.h"
 #include "source_loc.h"
 #include "table.h"
@@ -81,6 +82,12 @@ struct Scene {
   std::vector<CameraShot> camera;
   SourceLoc camera_loc;  ///< the `camera` keyword
   PhysicsParams physics;
+
+  /// Ball `i` (file order); the index must be one of the scene's balls.
+  const Ball& ball(int i) const {
+    BSIM_EXPECT(i >= 0 && static_cast<std::size_t>(i) < balls.size(), "no such ball in the scene");
+    return balls[static_cast<std::size_t>(i)];
+  }
 };
 
 /// The standard 9-foot table's (kStandardTable's) cushions and pockets, in the spec's numbering.

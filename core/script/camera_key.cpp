@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "check.h"
+
 namespace bsim {
 
 namespace {
@@ -139,6 +141,7 @@ KeyResolution resolve_camera_key(const CameraShot& shot, const Scene& scene, con
       return r;
     }
   }
+  BSIM_EXPECT(false, "a camera key of no known kind");
   return r;
 }
 

@@ -56,7 +56,7 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
 
   const double heading = scene.cue.heading_deg * kDegToRad;
   heading_ = Vec3(std::cos(heading), std::sin(heading), 0);
-  double ball_speed = scene.balls[static_cast<std::size_t>(target)].velocity.norm();
+  double ball_speed = scene.ball(target).velocity.norm();
   for (const Event& event : timeline.events()) {
     if (event.type == EventType::cue && event.speed > 0) ball_speed = event.speed;
   }

@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "audio_buffer.h"
+#include "check.h"
+#include "hertz.h"
 #include "rolling.h"
 
 namespace bsim {
@@ -13,9 +15,15 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// The click's Hertz contact (hertz.h) with the constants the sound track has always used, not yet the
+// scene's: a later change feeds it the scene's `param k_hertz` (hertz_pair) and ball material, and
+// the physics' kHertzTimeFactor, which changes the track.
 // Phenolic resin, the usual ball material: Young's modulus (Pa) and Poisson's ratio.
 constexpr double kBallYoungModulus = 5.4e9;
 constexpr double kBallPoisson = 0.35;
+/// The click's contact time factor: 2.87 in the form 2.87 (m*^2 / (R* E*^2 v))^(1/5) it was written
+/// in, which is kHertzTimeFactor (15/16)^(2/5) = 2.868 rounded to three figures.
+double click_time_factor() { return 2.87 / std::pow(15.0 / 16.0, 0.4); }
 
 /// A damped mode: frequency (Hz), decay time constant (s), weight relative to the loudest mode.
 struct Mode {
@@ -103,7 +111,7 @@ Mode jittered(Mode mode, SoundRandom& random, double spread) {
 
 std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsParams& physics, int sample_rate) {
   // Acceleration noise of a small sphere: pressure ~ a blend of the contact acceleration and its rate.
-  const double tau = hertz_contact_time(physics, speed);
+  const double tau = click_contact_time(physics, speed);
   // Long enough for the ring to die out (about -70 dB) rather than be cut off audibly.
   std::vector<double> out(static_cast<std::size_t>(0.25 * sample_rate), 0.0);
   constexpr int kSub = 8;
@@ -227,13 +235,9 @@ std::uint64_t SoundRandom::next() {
 
 double SoundRandom::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
-double hertz_contact_time(const PhysicsParams& physics, double speed) {
-  // Two equal spheres: effective mass m/2, radius R/2, modulus E / (2 (1 - nu^2)) (Johnson, Contact Mechanics).
-  const double m = physics.ball_mass / 2;
-  const double r = physics.ball_radius / 2;
-  const double e = kBallYoungModulus / (2 * (1 - kBallPoisson * kBallPoisson));
-  const double v = std::max(speed, 1e-3);
-  return 2.87 * std::pow(m * m / (r * e * e * v), 0.2);
+double click_contact_time(const PhysicsParams& physics, double speed) {
+  const HertzPair pair{physics.ball_mass, hertz_stiffness(kBallYoungModulus, kBallPoisson, physics.ball_radius)};
+  return hertz_contact_time(std::max(speed, 1e-3), pair, click_time_factor());
 }
 
 double impact_gain(SoundKind kind, double speed) {
@@ -252,6 +256,7 @@ double impact_gain(SoundKind kind, double speed) {
       case SoundKind::pocket_knock: return Level{1.5, 0.3};
       case SoundKind::pocket_roll: return Level{1.0, 0.05};
     }
+    BSIM_EXPECT(false, "a sound of no known kind");
     return Level{1.0, 0.0};
   }();
   constexpr double kFloor = 0.06;

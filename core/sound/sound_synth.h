@@ -33,8 +33,9 @@ class SoundRandom {
   std::uint64_t state_;
 };
 
-/// s, duration of the Hertz contact between two equal balls closing at `speed` m/s.
-double hertz_contact_time(const PhysicsParams& physics, double speed);
+/// s, duration of the Hertz contact (hertz.h) a ball-ball click is made of, for two equal balls
+/// closing at `speed` m/s: the scene's ball mass and radius, the sound's own ball material.
+double click_contact_time(const PhysicsParams& physics, double speed);
 
 /// Peak amplitude of a sound of this kind at this speed (m/s), before panning: strictly growing
 /// with speed, compressed so that a gentle touch stays audible beside a break.

@@ -7,11 +7,6 @@
 // Other work on the machine while it runs skews every figure.
 // --every K renders every K-th frame only (and skips the movie): a quicker estimate.
 // Takes many minutes at K = 1; never run by ctest.
-//
-// --looks [--sheet FILE] does something else: the classic look against the photographic one, at
-// final 1280x720 on one core, on a handful of instants of the default break (POV-Ray's CPU seconds a
-// frame for each, side by side), the share of the break's frames drawn once and with motion-blur
-// copies, and with --sheet a contact sheet of those instants (classic above, photographic below).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -77,99 +72,20 @@ RenderTiming render(const std::string& frames_dir, const std::vector<bsim::Frame
   return {seconds_since(start), own_cpu() - cpu};
 }
 
-/// s of CPU the finished child processes have used.
-double children_cpu() {
-  rusage usage{};
-  getrusage(RUSAGE_CHILDREN, &usage);
-  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-/// The instants the looks are compared at: the still before the break, the break, the spread, the 8
-/// dropping into its pocket, the wide closing shot (seconds of the default break).
-constexpr double kLookInstants[] = {0.5, 2.64, 2.8, 5.35, 10.0};
-
-int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::string& ffmpeg,
-                  const std::string& sheet) {
-  const int fps = 30, width = 1280, height = 720;
-  const int frames = bsim::frame_count(shot.timeline.duration(), fps);
-  std::vector<bsim::FrameJob> jobs;
-  for (double t : kLookInstants) jobs.push_back({static_cast<int>(std::lround(t * fps)), 0});
-  int blurred = 0;
-  for (int k = 0; k < frames; ++k) blurred += bsim::blur_samples(shot, k, fps) > 1;
+/// The exporter's own share of the run's time, and what --jobs 2 gains against what the machine gives.
+void print_shares(double load_time, double write_time, double encode_time, const RenderTiming& one,
+                  const RenderTiming& two, double machine, int every) {
+  const double outside = load_time + write_time + two.own_cpu;
+  const double inside = two.wall - two.own_cpu + encode_time;
+  std::printf("exporter's own work: load and simulate %.2f s, frames and sound %.2f s, %.2f s CPU while rendering\n",
+              load_time, write_time, two.own_cpu);
+  std::printf("outside POV-Ray and ffmpeg: %.2f s; inside: %.1f s; own share %.2f%% (at --jobs 2%s)\n", outside, inside,
+              100 * outside / (outside + inside), every == 1 ? "" : ", frames sampled");
+  const double speedup = one.wall / two.wall;
   std::printf(
-      "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with motion blur "
-      "(%.0f%%)\n",
-      width, height, frames, frames - blurred, 100.0 * (frames - blurred) / frames, blurred, 100.0 * blurred / frames);
-  const fs::path dir = fs::temp_directory_path() / ("render-bench-looks-" + std::to_string(::getpid()));
-  struct LookRun {
-    bsim::Look look;
-    const char* name;
-    std::vector<double> seconds;
-  };
-  LookRun runs[] = {{bsim::Look::classic, "classic", {}}, {bsim::Look::photo, "photographic", {}}};
-  for (LookRun& run : runs) {
-    const fs::path frames_dir = dir / run.name;
-    fs::create_directories(frames_dir);
-    {
-      std::ofstream include(frames_dir / std::string(bsim::kPovIncludeName));
-      bsim::write_pov_include(shot.scene, bsim::Quality::final, include, run.look);
-    }
-    for (const bsim::FrameJob& job : jobs) {
-      std::ofstream out(frames_dir / (bsim::frame_name(job.frame) + ".pov"));
-      bsim::write_pov_frame(shot, job.frame, fps, out, run.look);
-    }
-    const bsim::RenderSettings settings{povray, width, height, bsim::Quality::final, 1, "", true};
-    for (const bsim::FrameJob& job : jobs) {
-      bsim::FrameCache cache("", frames_dir.string());
-      std::string error;
-      const double before = children_cpu();
-      if (bsim::render_frames(frames_dir.string(), {job}, frames, settings, cache, error) != bsim::RunOutcome::done) {
-        std::fprintf(stderr, "render_bench: %s\n", error.c_str());
-        return 1;
-      }
-      run.seconds.push_back(children_cpu() - before);
-    }
-  }
-  std::printf("%-8s %-7s %-10s %14s %14s\n", "frame", "t (s)", "blur", "classic (s)", "photographic (s)");
-  double sum[2] = {0, 0};
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    const int samples = bsim::blur_samples(shot, jobs[i].frame, fps);
-    std::printf("%-8d %-7.2f %-10s %14.2f %14.2f\n", jobs[i].frame, jobs[i].frame / double(fps),
-                samples > 1 ? "blurred" : "none", runs[0].seconds[i], runs[1].seconds[i]);
-    sum[0] += runs[0].seconds[i];
-    sum[1] += runs[1].seconds[i];
-  }
-  const double n = static_cast<double>(jobs.size());
-  std::printf("mean s a frame on one core: classic %.2f, photographic %.2f (%.0f%% of classic)\n", sum[0] / n,
-              sum[1] / n, 100 * sum[1] / sum[0]);
-  if (!sheet.empty()) {
-    // One row a look, the instants left to right, each a quarter of its size.
-    std::vector<std::string> args = {ffmpeg, "-loglevel", "error", "-y"};
-    for (const LookRun& run : runs)
-      for (const bsim::FrameJob& job : jobs)
-        args.insert(args.end(), {"-i", (dir / run.name / (bsim::frame_name(job.frame) + ".png")).string()});
-    std::string filter, layout;
-    const std::size_t count = 2 * jobs.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      filter += "[" + std::to_string(i) + "]scale=480:270[s" + std::to_string(i) + "];";
-      const std::size_t col = i % jobs.size(), row = i / jobs.size();
-      layout += (i ? "|" : "") + std::to_string(col * 480) + "_" + std::to_string(row * 270);
-    }
-    for (std::size_t i = 0; i < count; ++i) filter += "[s" + std::to_string(i) + "]";
-    filter += "xstack=inputs=" + std::to_string(count) + ":layout=" + layout;
-    // ffmpeg runs in the scratch directory: the sheet's name as given is relative to ours.
-    args.insert(args.end(), {"-filter_complex", filter, "-frames:v", "1", "-q:v", "3", fs::absolute(sheet).string()});
-    std::string error;
-    const pid_t pid = bsim::start_process(args, dir.string(), (dir / "ffmpeg.log").string(), error);
-    if (pid < 0 || !bsim::wait_for(pid)) {
-      std::fprintf(stderr, "render_bench: ffmpeg could not write %s\n", sheet.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", sheet.c_str());
-  }
-  fs::remove_all(dir);
-  return 0;
+      "speed-up of --jobs 2 over --jobs 1: %.2fx; two concurrent renders of one frame: %.2fx; "
+      "parallel efficiency %.0f%%\n",
+      speedup, machine, 100 * speedup / machine);
 }
 
 }  // namespace
@@ -178,15 +94,9 @@ int main(int argc, char** argv) {
   int every = 1;
   bsim::ExportOptions options;
   options.quality = bsim::Quality::draft;
-  bool looks = false;
-  std::string sheet;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (flag == "--looks")
-      looks = true;
-    else if (flag == "--sheet" && i + 1 < argc)
-      sheet = argv[++i];
-    else if (flag == "--every" && i + 1 < argc)
+    if (flag == "--every" && i + 1 < argc)
       every = std::max(1, std::atoi(argv[++i]));
     else if (flag == "--fps" && i + 1 < argc)
       options.fps = std::max(1, std::atoi(argv[++i]));
@@ -201,7 +111,6 @@ int main(int argc, char** argv) {
   auto start = Clock::now();
   bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
   if (!loaded.scripted()) return 1;
-  if (looks) return compare_looks(*loaded.shot, povray, ffmpeg, sheet);
   const double load_time = seconds_since(start);
   const fs::path dir = fs::temp_directory_path() / ("render-bench-" + std::to_string(::getpid()));
   bsim::OutputStage stage;
@@ -256,17 +165,7 @@ int main(int argc, char** argv) {
     std::printf("ffmpeg: %.1f s\n", encode_time);
   }
 
-  const double outside = load_time + write_time + two.own_cpu;
-  const double inside = two.wall - two.own_cpu + encode_time;
-  std::printf("exporter's own work: load and simulate %.2f s, frames and sound %.2f s, %.2f s CPU while rendering\n",
-              load_time, write_time, two.own_cpu);
-  std::printf("outside POV-Ray and ffmpeg: %.2f s; inside: %.1f s; own share %.2f%% (at --jobs 2%s)\n", outside, inside,
-              100 * outside / (outside + inside), every == 1 ? "" : ", frames sampled");
-  const double speedup = one.wall / two.wall;
-  std::printf(
-      "speed-up of --jobs 2 over --jobs 1: %.2fx; two concurrent renders of one frame: %.2fx; "
-      "parallel efficiency %.0f%%\n",
-      speedup, machine, 100 * speedup / machine);
+  print_shares(load_time, write_time, encode_time, one, two, machine, every);
   fs::remove_all(dir);
   return 0;
 }
