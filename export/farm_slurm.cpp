@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 
+#include "atomic_file.h"
 #include "child_process.h"
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
@@ -509,11 +510,11 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   for (auto it = fs::directory_iterator(dir_ + "/" + kLogs, ec); !ec && it != fs::directory_iterator();
        it.increment(ec))
     link_or_copy(it->path().string(), stage.path(std::string(kLogs) + "/" + it->path().filename().string()));
-  if (!write_text_file(stage.path(kConf), conf_text(conf), error) ||
-      !write_text_file(stage.path(kChunks), chunk_lines, error) ||
-      !write_text_file(stage.path(kCopies), copies_text(copies), error) ||
-      !write_text_file(stage.path(kTaskScript), task, error) ||
-      !write_text_file(stage.path(kMovieScript), movie, error))
+  if (!write_file_atomically(stage.path(kConf), conf_text(conf), error) ||
+      !write_file_atomically(stage.path(kChunks), chunk_lines, error) ||
+      !write_file_atomically(stage.path(kCopies), copies_text(copies), error) ||
+      !write_file_atomically(stage.path(kTaskScript), task, error) ||
+      !write_file_atomically(stage.path(kMovieScript), movie, error))
     return false;
   // The jobs run this very program from DIR: nothing on the nodes but povray and ffmpeg is assumed.
   const std::string self = fs::read_symlink("/proc/self/exe", ec).string();
@@ -579,7 +580,7 @@ int SlurmSubmission::submit(std::string& error) {
   }
   conf.frames_job = frames_job;
   conf.movie_job = movie_job;
-  if (!write_text_file(dir_ + "/" + kConf, conf_text(conf), error)) return 1;
+  if (!write_file_atomically(dir_ + "/" + kConf, conf_text(conf), error)) return 1;
   int largest = 0;
   for (const auto& c : chunks_) largest = std::max(largest, c.second - c.first + 1);
   if (!frames_job.empty())

@@ -19,9 +19,9 @@ namespace bsim {
 
 namespace {
 
-/// POV-Ray's linear picture, and the PNG developed from it, while the frame is not yet whole.
+/// POV-Ray's linear picture, while the frame is not yet whole (the PNG developed from it is written
+/// whole, atomic_file.h).
 std::string temp_hdr(int frame) { return "." + frame_name(frame) + ".tmp.hdr"; }
-std::string temp_png(int frame) { return "." + frame_name(frame) + ".tmp.png"; }
 std::string log_name(int frame) { return "." + frame_name(frame) + ".log"; }
 
 void remove_quietly(const std::string& path) {
@@ -121,7 +121,6 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
 
   auto cleanup = [&](int frame) {
     remove_quietly(dir + temp_hdr(frame));
-    remove_quietly(dir + temp_png(frame));
     remove_quietly(dir + log_name(frame));
   };
   auto stop_all = [&] {
@@ -184,14 +183,8 @@ RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJ
       unreadable = "wrote a picture that cannot be read: " + unreadable;
     }
     if (success && picture_there && size > 0 && unreadable.empty()) {
-      if (!develop_to_png(std::move(image), dir + temp_png(frame), develop_error)) {
+      if (!develop_to_png(std::move(image), dir + png, develop_error)) {
         fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
-        continue;
-      }
-      remove_quietly(dir + temp_hdr(frame));
-      std::filesystem::rename(dir + temp_png(frame), dir + png, ec);
-      if (ec) {
-        fail(frame, "cannot write " + dir + png + ": " + ec.message());
         continue;
       }
       cleanup(frame);

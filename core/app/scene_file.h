@@ -1,10 +1,9 @@
 #pragma once
-// Reading and writing whole files, shared by both programs: a scene file (so that both say the same thing
-// about a scene they cannot read), the whole text of a log or progress file a child wrote, and a
-// text file written whole or not at all.
+// Reading whole files, shared by both programs: a scene file (so that both say the same thing about a
+// scene they cannot read) and the whole text of a log or progress file a child wrote. Files are
+// written with atomic_file.h.
 #include <optional>
 #include <string>
-#include <string_view>
 
 namespace bsim {
 
@@ -16,10 +15,5 @@ std::optional<std::string> read_scene_file(const std::string& path, std::string&
 /// The whole content of the file at `path`; empty when it is missing or cannot be read (a child's
 /// log or progress file that was never written reads as nothing to report).
 std::string read_text_file(const std::string& path);
-
-/// Writes `text` to `path` under a temporary name beside it, then renames it over `path`: a reader
-/// never sees half a file, and a failed write leaves `path` as it was. False with `error` set
-/// ("cannot write PATH: REASON") when it fails.
-bool write_text_file(const std::string& path, std::string_view text, std::string& error);
 
 }  // namespace bsim
