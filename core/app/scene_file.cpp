@@ -7,7 +7,10 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <filesystem>
 #include <iterator>
+
+#include "builtin_scene.h"
 
 namespace bsim {
 
@@ -49,6 +52,16 @@ std::optional<std::string> read_scene_file(const std::string& path, std::string&
     text.append(buffer, static_cast<std::size_t>(n));
   }
   return text;
+}
+
+SceneOrigin scene_origin(const std::optional<std::string>& path) {
+  if (!path) return {std::nullopt, "<built-in break.scn>", std::string(kBuiltinSceneName)};
+  return {*path, *path, std::filesystem::path(*path).stem().string()};
+}
+
+std::optional<std::string> read_scene_text(const SceneOrigin& origin, std::string& error) {
+  if (!origin.path) return std::string(builtin_scene_text());
+  return read_scene_file(*origin.path, error);
 }
 
 std::string read_text_file(const std::string& path) {
