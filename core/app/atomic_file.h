@@ -12,7 +12,8 @@
 namespace bsim {
 
 /// Writes `content` to `path` as above. The file keeps the permissions of the file it replaces, or
-/// `mode` when given; a new file gets the usual 0666 less the umask. False with `error` set
+/// `mode` when given; a new file gets the usual 0666 less the umask. A symbolic link at `path` is
+/// replaced, not followed (resolve it first to replace its target). False with `error` set
 /// ("cannot write PATH: REASON") when it fails.
 bool write_file_atomically(const std::string& path, std::string_view content, std::string& error,
                            std::optional<unsigned> mode = std::nullopt);
