@@ -83,9 +83,6 @@ std::vector<std::uint8_t> tone_map(const HdrImage& image);
 /// The whole pipeline on a picture: exposure and vignetting, glare, tone curve, film colour, sRGB.
 std::vector<std::uint8_t> develop(HdrImage image);
 
-/// The 8-bit RGB pixels as a PNG file's bytes.
-std::string encode_png(const std::vector<std::uint8_t>& rgb, int width, int height);
-
 /// Develops `image` into the PNG at `png_path`. False, with `error` naming the file, when it cannot
 /// be written; no half-written PNG is left behind.
 bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error);

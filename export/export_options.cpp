@@ -7,158 +7,153 @@ namespace bsim {
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: billiards-export [SCENE] [-o DIR] [options]
+constexpr const char* kUsageHead = R"(usage: billiards-export [SCENE] [-o DIR] [options]
 
 Simulates SCENE (default: the built-in break) and writes into DIR events.json, trajectory.csv,
 camera.csv, the POV-Ray frames, soundtrack.wav, the rendered frames and movie.mp4.
 
 options:
-  -o, --output DIR       output directory (default: out/<scene name>)
-  --events-only          write only events.json, trajectory.csv and camera.csv
-  --no-render            write the .pov frames and soundtrack.wav, but run neither POV-Ray nor ffmpeg
-  --fps N                frames per second, 1 to 1000 (default: 30)
-  --size WxH             frame size in pixels (default: 1280x720)
-  --quality draft|final  POV-Ray quality: draft is fast, final antialiased (default: final)
-  --jobs N               POV-Ray processes run in parallel, 1 to 1024 (default: one per core)
-  --audio-lead SECONDS   sounds start this long before their event, 0 to 1 (default: 0.005)
-  --music FILE           a music file mixed under the sound track (default: none)
-  --loudness LUFS|off    the sound track's integrated loudness, -40 to -10, or off (default: -16)
-  --strict               accept only the original scene language: no comments, spin, pocket or param
-  --quiet                print no progress or closing lines (errors and warnings still print)
-  --camera auto|scene    auto: film with the automatic director's camera script instead of the
-                         scene's own (default: scene)
-  -h, --help             show this help and exit
-  --version              show the version and exit
+)";
 
-rendering on a Slurm cluster (see README):
-  --farm slurm           write the inputs into DIR (on a shared file system) and submit the frames as
-                         a job array and the movie as a job that waits for it; print the job ids
-  --chunk N              frames a task renders (default: about three minutes of work)
-  --sbatch-option ARG    passed to sbatch, e.g. --sbatch-option=--partition=short (repeatable)
-  billiards-export DIR --farm status     frames rendered so far and the jobs in the queue
-  billiards-export DIR --farm assemble   check every frame and make movie.mp4 (the movie job)
-  billiards-export DIR --farm render --frames A-B   render the missing frames A to B (a task)
-
+constexpr const char* kUsageTail = R"(
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";
 
-/// One option of this program's own (the shared ones are read by read_arguments); false with
-/// `message` set when it is unknown or its value is bad.
-bool apply_option(ArgReader& reader, ExportOptions& o, std::string& message) {
-  const std::string& name = reader.word();
-  auto value = [&]() { return reader.value(message); };
-  auto bad = [&](const std::string& text, const std::string& expected) {
-    message = bad_value_message(name, text, expected);
-    return false;
-  };
-  if (name == "--events-only") return reader.no_value(message) && (o.events_only = true);
-  if (name == "--no-render") return reader.no_value(message) && (o.no_render = true);
-  if (name == "-o" || name == "--output") {
-    const auto v = value();
-    if (!v) return false;
-    if (v->empty()) return bad(*v, "a directory");
-    o.out_dir = *v;
-    return true;
-  }
-  if (name == "--quality") {
-    const auto v = value();
-    if (!v) return false;
-    if (*v == "draft")
-      o.quality = Quality::draft;
-    else if (*v == "final")
-      o.quality = Quality::final;
-    else
-      return bad(*v, "draft or final");
-    return true;
-  }
-  if (name == "--jobs") {
-    const auto v = value();
-    if (!v) return false;
-    const auto jobs = parse_int_option(*v, 1, kMaxJobs);
-    if (!jobs) return bad(*v, "a number of processes from 1 to " + std::to_string(kMaxJobs));
-    o.jobs = *jobs;
-    return true;
-  }
-  if (name == "--audio-lead") {
-    const auto v = value();
-    if (!v) return false;
-    const auto lead = parse_real_option(*v);
-    if (!lead || *lead < 0 || *lead > kMaxAudioLead) return bad(*v, "seconds from 0 to 1");
-    o.audio_lead = *lead;
-    return true;
-  }
-  if (name == "--music") {
-    const auto v = value();
-    if (!v) return false;
-    if (v->empty()) return bad(*v, "a file");
-    o.music_path = *v;
-    return true;
-  }
-  if (name == "--loudness") {
-    const auto v = value();
-    if (!v) return false;
-    if (*v == "off") {
-      o.loudness.reset();
-      return true;
-    }
-    const auto lufs = parse_real_option(*v);
-    if (!lufs || *lufs < kMinLoudness || *lufs > kMaxLoudness) return bad(*v, "LUFS from -40 to -10, or off");
-    o.loudness = *lufs;
-    return true;
-  }
-  if (name == "--farm") {
-    const auto v = value();
-    if (!v) return false;
-    static const std::vector<std::pair<std::string, FarmMode>> modes = {{"slurm", FarmMode::slurm},
-                                                                        {"status", FarmMode::status},
-                                                                        {"render", FarmMode::render},
-                                                                        {"assemble", FarmMode::assemble}};
-    for (const auto& [word, mode] : modes)
-      if (*v == word) return (o.farm = mode), true;
-    return bad(*v, "slurm, status, assemble or render");
-  }
-  if (name == "--chunk") {
-    const auto v = value();
-    if (!v) return false;
-    const auto chunk = parse_int_option(*v, 1, kMaxFarmChunk);
-    if (!chunk) return bad(*v, "a number of frames from 1 to " + std::to_string(kMaxFarmChunk));
-    o.chunk = *chunk;
-    return true;
-  }
-  if (name == "--sbatch-option") {
-    const auto v = value();
-    if (!v) return false;
-    if (v->empty()) return bad(*v, "an sbatch option");
-    o.sbatch_options.push_back(*v);
-    return true;
-  }
-  if (name == "--frames") {
-    const auto v = value();
-    if (!v) return false;
-    const std::size_t dash = v->find('-');
-    const auto first = parse_int_option(v->substr(0, dash), 0, 100000000);
-    const auto last = dash == std::string::npos ? first : parse_int_option(v->substr(dash + 1), 0, 100000000);
-    if (!first || !last || *last < *first) return bad(*v, "frames FIRST-LAST");
-    o.first_frame = *first;
-    o.last_frame = *last;
-    return true;
-  }
-  message = unknown_option_message(
-      name, {"-o", "--output", "--events-only", "--no-render", "--quality", "--jobs", "--audio-lead", "--music",
-             "--loudness", "--farm", "--chunk", "--sbatch-option", "--frames"});
+bool bad(std::string& message, const std::string& name, const std::string& text, const std::string& expected) {
+  message = bad_value_message(name, text, expected);
   return false;
 }
 
+/// --frames FIRST-LAST (or one frame).
+bool apply_frames(ExportOptions& o, const std::string& name, const std::string& v, std::string& m) {
+  const std::size_t dash = v.find('-');
+  const auto first = parse_int_option(v.substr(0, dash), 0, 100000000);
+  const auto last = dash == std::string::npos ? first : parse_int_option(v.substr(dash + 1), 0, 100000000);
+  if (!first || !last || *last < *first) return bad(m, name, v, "frames FIRST-LAST");
+  o.first_frame = *first;
+  o.last_frame = *last;
+  return true;
+}
+
+bool apply_farm(ExportOptions& o, const std::string& name, const std::string& v, std::string& m) {
+  static const std::vector<std::pair<std::string, FarmMode>> modes = {{"slurm", FarmMode::slurm},
+                                                                      {"status", FarmMode::status},
+                                                                      {"render", FarmMode::render},
+                                                                      {"assemble", FarmMode::assemble}};
+  for (const auto& [word, mode] : modes)
+    if (v == word) return (o.farm = mode), true;
+  return bad(m, name, v, "slurm, status, assemble or render");
+}
+
+bool apply_loudness(ExportOptions& o, const std::string& name, const std::string& v, std::string& m) {
+  if (v == "off") {
+    o.loudness.reset();
+    return true;
+  }
+  const auto lufs = parse_real_option(v);
+  if (!lufs || *lufs < kMinLoudness || *lufs > kMaxLoudness) return bad(m, name, v, "LUFS from -40 to -10, or off");
+  o.loudness = *lufs;
+  return true;
+}
+
+/// The rows of the farm: its options, the modes on a submitted directory and the hidden --frames.
+void add_farm_rows(OptionTable& table, ExportOptions& o) {
+  using S = const std::string&;
+  table.push_back({"", "", "", {}});
+  table.push_back({"", "", "rendering on a Slurm cluster (see README):", {}});
+  table.push_back({"--farm", "slurm",
+                   "write the inputs into DIR (on a shared file system) and submit the frames as\n"
+                   "a job array and the movie as a job that waits for it; print the job ids",
+                   [&o](S n, S v, std::string& m) { return apply_farm(o, n, v, m); }});
+  table.push_back(
+      {"--chunk", "N", "frames a task renders (default: about three minutes of work)", [&o](S n, S v, std::string& m) {
+         const auto chunk = parse_int_option(v, 1, kMaxFarmChunk);
+         if (!chunk) return bad(m, n, v, "a number of frames from 1 to " + std::to_string(kMaxFarmChunk));
+         o.chunk = *chunk;
+         return true;
+       }});
+  table.push_back({"--sbatch-option", "ARG", "passed to sbatch, e.g. --sbatch-option=--partition=short (repeatable)",
+                   [&o](S n, S v, std::string& m) {
+                     if (v.empty()) return bad(m, n, v, "an sbatch option");
+                     o.sbatch_options.push_back(v);
+                     return true;
+                   }});
+  table.push_back(
+      {"", "", "  billiards-export DIR --farm status     frames rendered so far and the jobs in the queue", {}});
+  table.push_back(
+      {"", "", "  billiards-export DIR --farm assemble   check every frame and make movie.mp4 (the movie job)", {}});
+  table.push_back(
+      {"", "", "  billiards-export DIR --farm render --frames A-B   render the missing frames A to B (a task)", {}});
+  table.push_back({"--frames", "A-B", "", [&o](S n, S v, std::string& m) { return apply_frames(o, n, v, m); }, false});
+}
+
 }  // namespace
+
+OptionTable export_option_table(ExportOptions& o) {
+  using S = const std::string&;
+  OptionTable table = {
+      {"-o, --output", "DIR", "output directory (default: out/<scene name>)",
+       [&o](S n, S v, std::string& m) {
+         if (v.empty()) return bad(m, n, v, "a directory");
+         o.out_dir = v;
+         return true;
+       }},
+      {"--events-only", "", "write only events.json, trajectory.csv and camera.csv",
+       [&o](S, S, std::string&) { return o.events_only = true; }},
+      {"--no-render", "", "write the .pov frames and soundtrack.wav, but run neither POV-Ray nor ffmpeg",
+       [&o](S, S, std::string&) { return o.no_render = true; }},
+      {"--fps", "N", "frames per second, 1 to 1000 (default: 30)", {}},
+      {"--size", "WxH", "frame size in pixels (default: 1280x720)", {}},
+      {"--quality", "draft|final", "POV-Ray quality: draft is fast, final antialiased (default: final)",
+       [&o](S n, S v, std::string& m) {
+         if (v != "draft" && v != "final") return bad(m, n, v, "draft or final");
+         o.quality = v == "draft" ? Quality::draft : Quality::final;
+         return true;
+       }},
+      {"--jobs", "N", "POV-Ray processes run in parallel, 1 to 1024 (default: one per core)",
+       [&o](S n, S v, std::string& m) {
+         const auto jobs = parse_int_option(v, 1, kMaxJobs);
+         if (!jobs) return bad(m, n, v, "a number of processes from 1 to " + std::to_string(kMaxJobs));
+         o.jobs = *jobs;
+         return true;
+       }},
+      {"--audio-lead", "SECONDS", "sounds start this long before their event, 0 to 1 (default: 0.005)",
+       [&o](S n, S v, std::string& m) {
+         const auto lead = parse_real_option(v);
+         if (!lead || *lead < 0 || *lead > kMaxAudioLead) return bad(m, n, v, "seconds from 0 to 1");
+         o.audio_lead = *lead;
+         return true;
+       }},
+      {"--music", "FILE", "a music file mixed under the sound track (default: none)",
+       [&o](S n, S v, std::string& m) {
+         if (v.empty()) return bad(m, n, v, "a file");
+         o.music_path = v;
+         return true;
+       }},
+      {"--loudness", "LUFS|off", "the sound track's integrated loudness, -40 to -10, or off (default: -16)",
+       [&o](S n, S v, std::string& m) { return apply_loudness(o, n, v, m); }},
+      {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
+      {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
+      {"--camera",
+       "auto|scene",
+       "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
+       {}},
+      {"-h, --help", "", "show this help and exit", {}},
+      {"--version", "", "show the version and exit", {}},
+  };
+  add_farm_rows(table, o);
+  return table;
+}
 
 CommandLineOutcome parse_export_options(const std::vector<std::string>& args, ExportOptions& options,
                                         std::string& message) {
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
   options.loudness = kDefaultLoudness;
-  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-export " BSIM_VERSION "\n", apply,
-                         message)) {
+  const OptionTable table = export_option_table(options);
+  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_table_option(reader, table, error); };
+  switch (read_arguments(args, options.scene_path, options, usage_text(kUsageHead, table, kUsageTail),
+                         "billiards-export " BSIM_VERSION "\n", apply, message)) {
     case ArgumentsOutcome::exit_success: return CommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return CommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

@@ -42,6 +42,10 @@ struct ExportOptions : SharedOptions {
   int first_frame = 0, last_frame = -1;     ///< --frames A-B (--farm render)
 };
 
+/// The program's option table (command_line.h): every option in --help's order, with what it does
+/// to `options`; it drives the dispatch, the usage and the "did you mean" suggestions.
+OptionTable export_option_table(ExportOptions& options);
+
 enum class CommandLineOutcome { run, exit_success, exit_usage };
 
 /// Parses argv[1..]. On exit_success (--help, --version) `message` is what to print on stdout;

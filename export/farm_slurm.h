@@ -12,6 +12,10 @@
 // the job ids), chunks.txt (one FIRST-LAST line per array task), copies.txt (`FRAME SOURCE`: a frame
 // that is the same as an earlier one), task.sh and movie.sh (the job scripts), a copy of
 // billiards-export and the jobs' logs (logs/).
+//
+// The code: farm_files (those files and the frames' pictures), slurm_client (sbatch, squeue and
+// scancel), farm_submit (the submission: this header's SlurmSubmission) and farm_modes (the job-side
+// modes: status, render, assemble).
 #include <string>
 #include <vector>
 

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "atomic_file.h"
 #include "child_process.h"
 #include "frames.h"
 #include "progress_reporter.h"
@@ -83,14 +84,9 @@ RunOutcome assemble_movie(const std::string& dir, const MovieSettings& settings,
   }
   progress.set_done(total);
   progress.finish();
-  std::error_code ec;
-  std::filesystem::rename(temp, dir + "/movie.mp4", ec);
+  const bool placed = move_into_place(temp, dir + "/movie.mp4", error);
   cleanup();
-  if (ec) {
-    error = "cannot write " + dir + "/movie.mp4: " + ec.message();
-    return RunOutcome::failed;
-  }
-  return RunOutcome::done;
+  return placed ? RunOutcome::done : RunOutcome::failed;
 }
 
 }  // namespace bsim

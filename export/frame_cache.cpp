@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "atomic_file.h"
+
 namespace fs = std::filesystem;
 
 namespace bsim {
@@ -66,9 +68,11 @@ void FrameCache::set(const std::string& png_name, std::uint64_t key) const {
   const std::string stored = picture(key);
   const std::string temp = stored + "." + std::to_string(::getpid()) + ".tmp";
   std::error_code ec;
+  std::string ignored;
   if (fs::copy_file(frames_ + "/" + png_name, temp, fs::copy_options::overwrite_existing, ec) && !ec)
-    fs::rename(temp, stored, ec);
-  if (ec) fs::remove(temp, ec);
+    move_into_place(temp, stored, ignored);
+  else
+    fs::remove(temp, ec);
 }
 
 namespace {

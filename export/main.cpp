@@ -8,7 +8,6 @@
 #include <iostream>
 #include <optional>
 
-#include "builtin_scene.h"
 #include "child_process.h"
 #include "export_options.h"
 #include "farm_slurm.h"
@@ -72,25 +71,17 @@ int run(const bsim::ExportOptions& options) {
   const bool on_farm = options.farm == bsim::FarmMode::slurm;
   if (options.farm != bsim::FarmMode::none && !on_farm) return bsim::run_farm_command(options);
   const auto start = std::chrono::steady_clock::now();
-  std::string text, name, shown_path;
-  if (options.scene_path) {
-    shown_path = *options.scene_path;
-    std::string error;
-    std::optional<std::string> read = bsim::read_scene_file(shown_path, error);
-    if (!read) {
-      std::cerr << error << "\n";
-      return 1;
-    }
-    text = std::move(*read);
-    name = std::filesystem::path(shown_path).stem().string();
-  } else {
-    text = std::string(bsim::builtin_scene_text());
-    name = std::string(bsim::kBuiltinSceneName);
-    shown_path = "<built-in break.scn>";
+  const bsim::SceneOrigin origin = bsim::scene_origin(options.scene_path);
+  const std::string &name = origin.name, &shown_path = origin.shown_path;
+  std::string error;
+  const std::optional<std::string> text = bsim::read_scene_text(origin, error);
+  if (!text) {
+    std::cerr << error << "\n";
+    return 1;
   }
 
   bsim::ShotResult loaded =
-      bsim::load_shot(text, name, {.strict = options.strict},
+      bsim::load_shot(*text, name, {.strict = options.strict},
                       options.auto_camera ? bsim::CameraChoice::automatic : bsim::CameraChoice::scene);
   for (const bsim::Diagnostic& d : loaded.diagnostics) std::cerr << bsim::format_diagnostic(d, shown_path) << "\n";
   if (!loaded.scripted()) return 1;
@@ -101,7 +92,6 @@ int run(const bsim::ExportOptions& options) {
   summary.simulating = bsim::seconds_since(start);
 
   // Every program the run needs is found before any work, so a missing one costs nothing.
-  std::string error;
   bsim::RunPrograms programs;
   bsim::ExportOptions staged = options;  // on the farm, this run renders nothing itself
   staged.no_render = staged.no_render || on_farm;

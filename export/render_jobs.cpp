@@ -5,13 +5,13 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
-#include <map>
 #include <regex>
 #include <sstream>
 
 #include "child_process.h"
 #include "develop.h"
 #include "pov_frame.h"
+#include "process_pool.h"
 #include "progress_reporter.h"
 #include "scene_file.h"
 
@@ -19,9 +19,9 @@ namespace bsim {
 
 namespace {
 
-/// POV-Ray's linear picture, and the PNG developed from it, while the frame is not yet whole.
+/// POV-Ray's linear picture, while the frame is not yet whole (the PNG developed from it is written
+/// whole, atomic_file.h).
 std::string temp_hdr(int frame) { return "." + frame_name(frame) + ".tmp.hdr"; }
-std::string temp_png(int frame) { return "." + frame_name(frame) + ".tmp.png"; }
 std::string log_name(int frame) { return "." + frame_name(frame) + ".log"; }
 
 void remove_quietly(const std::string& path) {
@@ -109,134 +109,171 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, int fr
   return args;
 }
 
-RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
-                         const RenderSettings& settings, FrameCache& cache, std::string& error) {
-  ProgressReporter progress("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
-                            progress_style(settings.quiet));
-  std::deque<Attempt> waiting;
-  for (const FrameJob& job : jobs) waiting.push_back({job, 1});
-  std::map<pid_t, Attempt> running;
-  RunOutcome outcome = RunOutcome::done;
-  const std::string dir = frames_dir + "/";
+namespace {
 
-  auto cleanup = [&](int frame) {
-    remove_quietly(dir + temp_hdr(frame));
-    remove_quietly(dir + temp_png(frame));
-    remove_quietly(dir + log_name(frame));
-  };
-  auto stop_all = [&] {
-    for (const auto& [pid, attempt] : running) {
-      stop_process(pid);
-      cleanup(attempt.job.frame);
+/// One call of render_frames: the frames waiting, the POV-Ray processes rendering, and what came of it.
+class FrameRendering {
+ public:
+  FrameRendering(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
+                 const RenderSettings& settings, FrameCache& cache, std::string& error)
+      : frames_dir_(frames_dir),
+        dir_(frames_dir + "/"),
+        settings_(settings),
+        cache_(cache),
+        error_(error),
+        pool_(settings.processes),
+        progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
+                  progress_style(settings.quiet)) {
+    for (const FrameJob& job : jobs) waiting_.push_back({job, 1});
+  }
+
+  RunOutcome run() {
+    while (!waiting_.empty() || !pool_.empty()) {
+      start_waiting();
+      if (pool_.empty()) break;
+      ProcessPool<Attempt>::Ended ended;
+      const auto waited = pool_.wait(std::chrono::seconds(1), ended);
+      if (waited == ProcessPool<Attempt>::Wait::still_running) {
+        progress_.tick();
+        continue;
+      }
+      if (waited == ProcessPool<Attempt>::Wait::interrupted) {  // Ctrl-C
+        stop_all();
+        outcome_ = RunOutcome::interrupted;
+        break;
+      }
+      if (!attempt_ended(ended)) break;
     }
-    running.clear();
-  };
-  auto fail = [&](int frame, const std::string& message) {
-    if (outcome == RunOutcome::done) {
-      error = message;
-      outcome = RunOutcome::failed;
+    progress_.finish();
+    if (outcome_ == RunOutcome::done && InterruptGuard::interrupted()) outcome_ = RunOutcome::interrupted;
+    return outcome_;
+  }
+
+ private:
+  void cleanup(int frame) {
+    remove_quietly(dir_ + temp_hdr(frame));
+    remove_quietly(dir_ + log_name(frame));
+  }
+  void stop_all() {
+    pool_.stop_all([&](const Attempt& attempt) { cleanup(attempt.job.frame); });
+  }
+  void fail(int frame, const std::string& message) {
+    if (outcome_ == RunOutcome::done) {
+      error_ = message;
+      outcome_ = RunOutcome::failed;
       stop_all();  // no point finishing the others: the movie cannot be made
     }
     cleanup(frame);
-  };
+  }
 
-  while (!waiting.empty() || !running.empty()) {
-    while (outcome == RunOutcome::done && !waiting.empty() &&
-           static_cast<int>(running.size()) < std::max(settings.processes, 1) && !InterruptGuard::interrupted()) {
-      const Attempt attempt = waiting.front();
-      waiting.pop_front();
-      const pid_t pid = start_process(povray_arguments(settings, attempt.job.frame), frames_dir,
-                                      dir + log_name(attempt.job.frame), error);
-      if (pid < 0) {
-        outcome = RunOutcome::failed;
+  /// Starts waiting frames while the pool has room and nothing has failed.
+  void start_waiting() {
+    while (outcome_ == RunOutcome::done && !waiting_.empty() && pool_.has_room() && !InterruptGuard::interrupted()) {
+      const Attempt attempt = waiting_.front();
+      waiting_.pop_front();
+      const int frame = attempt.job.frame;
+      if (!pool_.start(attempt, povray_arguments(settings_, frame), frames_dir_, dir_ + log_name(frame), error_)) {
+        outcome_ = RunOutcome::failed;
         break;
       }
-      running[pid] = attempt;
     }
-    if (running.empty()) break;
-    bool success = false;
-    int signal = 0;
-    const pid_t pid = wait_any(success, std::chrono::seconds(1), &signal);
-    if (pid == 0) {  // still rendering
-      progress.tick();
-      continue;
-    }
-    if (pid < 0) {  // Ctrl-C
-      stop_all();
-      outcome = RunOutcome::interrupted;
-      break;
-    }
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const Attempt attempt = it->second;
-    running.erase(it);
+  }
+
+  /// Handles an attempt whose POV-Ray ended: develops its picture, or retries or fails it. False when
+  /// the run stops here (Ctrl-C).
+  bool attempt_ended(const ProcessPool<Attempt>::Ended& ended) {
+    const Attempt& attempt = ended.job;
     const int frame = attempt.job.frame;
-    const std::string png = frame_name(frame) + ".png";
     std::error_code ec;
-    const auto size = std::filesystem::file_size(dir + temp_hdr(frame), ec);
+    const auto size = std::filesystem::file_size(dir_ + temp_hdr(frame), ec);
     const bool picture_there = !ec;
     // POV-Ray's picture, read back whole: one it wrote but that cannot be read is a failed attempt.
     HdrImage image;
-    std::string unreadable, develop_error;
-    if (success && picture_there && size > 0 && !read_hdr(dir + temp_hdr(frame), image, unreadable)) {
-      const std::string named = "cannot read " + dir + temp_hdr(frame) + ": ";
+    std::string unreadable;
+    if (ended.success && picture_there && size > 0 && !read_hdr(dir_ + temp_hdr(frame), image, unreadable)) {
+      const std::string named = "cannot read " + dir_ + temp_hdr(frame) + ": ";
       if (unreadable.rfind(named, 0) == 0) unreadable.erase(0, named.size());
       unreadable = "wrote a picture that cannot be read: " + unreadable;
     }
-    if (success && picture_there && size > 0 && unreadable.empty()) {
-      if (!develop_to_png(std::move(image), dir + temp_png(frame), develop_error)) {
-        fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
-        continue;
-      }
-      remove_quietly(dir + temp_hdr(frame));
-      std::filesystem::rename(dir + temp_png(frame), dir + png, ec);
-      if (ec) {
-        fail(frame, "cannot write " + dir + png + ": " + ec.message());
-        continue;
-      }
-      cleanup(frame);
-      cache.set(png, attempt.job.key);
-      progress.advance();
-      continue;
+    if (ended.success && picture_there && size > 0 && unreadable.empty()) {
+      developed(attempt, std::move(image));
+      return true;
     }
-
     if (InterruptGuard::interrupted()) {
       // Ctrl-C reaches POV-Ray too, which dies of it: the user stopping the run, not a failure.
       cleanup(frame);
       stop_all();
-      outcome = RunOutcome::interrupted;
-      break;
+      outcome_ = RunOutcome::interrupted;
+      return false;
     }
-    const std::string log_text = read_text_file(dir + log_name(frame));
+    const std::string log_text = read_text_file(dir_ + log_name(frame));
     if (const std::optional<PovParseError> parse = find_parse_error(log_text)) {
-      // The scene itself is wrong: another attempt would fail the same way.
-      if (outcome == RunOutcome::done) {
-        std::string file = parse->file.empty() ? frame_name(frame) + ".pov" : parse->file;
-        if (file.front() != '/')
-          file = (settings.shown_frames_dir.empty() ? frames_dir : settings.shown_frames_dir) + "/" + file;
-        const std::string line = parse->line > 0 ? ":" + std::to_string(parse->line) : "";
-        progress.finish();
-        progress.message(file + line + ": error: povray: " + parse->message);
-      }
-      fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
-      continue;
+      parse_failed(frame, *parse);
+      return true;
     }
     const std::string reason =
-        unreadable.empty() ? failure_reason(success, signal, picture_there, log_text) : unreadable;
-    if (outcome == RunOutcome::done && attempt.number < kRenderAttempts) {
+        unreadable.empty() ? failure_reason(ended.success, ended.signal, picture_there, log_text) : unreadable;
+    retry_or_fail(attempt, reason);
+    return true;
+  }
+
+  /// Develops a rendered frame into its PNG and records it in the frame store.
+  void developed(const Attempt& attempt, HdrImage image) {
+    const int frame = attempt.job.frame;
+    const std::string png = frame_name(frame) + ".png";
+    std::string develop_error;
+    if (!develop_to_png(std::move(image), dir_ + png, develop_error)) {
+      fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
+      return;
+    }
+    cleanup(frame);
+    cache_.set(png, attempt.job.key);
+    progress_.advance();
+  }
+
+  /// The scene itself is wrong: another attempt would fail the same way.
+  void parse_failed(int frame, const PovParseError& parse) {
+    if (outcome_ == RunOutcome::done) {
+      std::string file = parse.file.empty() ? frame_name(frame) + ".pov" : parse.file;
+      if (file.front() != '/')
+        file = (settings_.shown_frames_dir.empty() ? frames_dir_ : settings_.shown_frames_dir) + "/" + file;
+      const std::string line = parse.line > 0 ? ":" + std::to_string(parse.line) : "";
+      progress_.finish();
+      progress_.message(file + line + ": error: povray: " + parse.message);
+    }
+    fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
+  }
+
+  void retry_or_fail(const Attempt& attempt, const std::string& reason) {
+    const int frame = attempt.job.frame;
+    if (outcome_ == RunOutcome::done && attempt.number < kRenderAttempts) {
       cleanup(frame);
-      progress.message("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
-                       "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
-                       std::to_string(kRenderAttempts) + ")");
-      waiting.push_front({attempt.job, attempt.number + 1});
-      continue;
+      progress_.message("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
+                        "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
+                        std::to_string(kRenderAttempts) + ")");
+      waiting_.push_front({attempt.job, attempt.number + 1});
+      return;
     }
     fail(frame, shown_frame(frame) + " failed to render (" + std::to_string(attempt.number) +
                     (attempt.number == 1 ? " attempt): " : " attempts): ") + reason);
   }
-  progress.finish();
-  if (outcome == RunOutcome::done && InterruptGuard::interrupted()) outcome = RunOutcome::interrupted;
-  return outcome;
+
+  const std::string& frames_dir_;
+  const std::string dir_;
+  const RenderSettings& settings_;
+  FrameCache& cache_;
+  std::string& error_;
+  ProcessPool<Attempt> pool_;
+  ProgressReporter progress_;
+  std::deque<Attempt> waiting_;
+  RunOutcome outcome_ = RunOutcome::done;
+};
+
+}  // namespace
+
+RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
+                         const RenderSettings& settings, FrameCache& cache, std::string& error) {
+  return FrameRendering(frames_dir, jobs, total, settings, cache, error).run();
 }
 
 }  // namespace bsim

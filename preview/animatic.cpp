@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include "atomic_file.h"
 #include "child_process.h"
 #include "commands.h"
 #include "frames.h"
@@ -139,9 +140,9 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   progress.finish();
   std::signal(SIGPIPE, previous);
   std::filesystem::remove(wav);
-  std::error_code ec;
-  if (ok) std::filesystem::rename(partial, target, ec);
-  if (!ok || ec) {
+  if (ok) ok = move_into_place(partial, target, error);
+  if (!ok) {
+    std::error_code ec;
     std::filesystem::remove(partial, ec);
     std::cerr << "billiards-preview: error: " << (error.empty() ? "ffmpeg could not write " + target : error) << "\n";
     return 1;

@@ -16,6 +16,7 @@
 #include <numbers>
 #include <utility>
 
+#include "atomic_file.h"
 #include "ball_track.h"
 #include "camera_key.h"
 #include "camera_script.h"
@@ -164,28 +165,6 @@ std::string system_error(const std::string& what, const std::string& path) {
   return path + ": error: cannot " + what + ": " + std::strerror(errno);
 }
 
-/// Writes `content` to `target` through a temporary file in its directory, with mode `mode`.
-std::string write_via_rename(const fs::path& target, const std::string& content, mode_t mode) {
-  std::string temp = (target.parent_path() / ("." + target.filename().string() + ".XXXXXX")).string();
-  const int fd = mkstemp(temp.data());
-  if (fd < 0) return system_error("create a file beside it", target.string());
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    done += static_cast<std::size_t>(n);
-  }
-  std::string error;
-  if (done != content.size()) error = system_error("write", target.string());
-  if (error.empty() && fchmod(fd, mode) != 0) error = system_error("set the permissions of", target.string());
-  if (error.empty() && fsync(fd) != 0) error = system_error("write", target.string());
-  if (::close(fd) != 0 && error.empty()) error = system_error("write", target.string());
-  if (error.empty() && std::rename(temp.c_str(), target.c_str()) != 0) error = system_error("replace", target.string());
-  if (!error.empty()) ::unlink(temp.c_str());
-  return error;
-}
-
 }  // namespace
 
 NamedMoment name_moment(const Timeline& timeline, double t) {
@@ -288,8 +267,10 @@ std::string replace_scene_file(const std::string& path, const std::string& previ
   struct stat st {};
   if (::stat(target.c_str(), &st) != 0) return system_error("read", path);
   const mode_t mode = st.st_mode & 07777;
-  if (std::string error = write_via_rename(backup_path(target.string()), previous, mode); !error.empty()) return error;
-  return write_via_rename(target, text, mode);
+  std::string error;
+  if (!write_file_atomically(backup_path(target.string()), previous, error, mode)) return error;
+  if (!write_file_atomically(target.string(), text, error, mode)) return error;
+  return "";
 }
 
 void SceneEdits::record(std::string before, std::string after) {

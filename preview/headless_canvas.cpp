@@ -43,7 +43,7 @@ void HeadlessCanvas::end_2d() {
 }
 
 bool HeadlessCanvas::write_png(const std::string& path, std::string& error) {
-  return bsim::write_png(path, pixels(), width(), height(), error);
+  return write_gl_png(path, pixels(), width(), height(), error);
 }
 
 }  // namespace bsim

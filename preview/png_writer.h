@@ -1,5 +1,6 @@
 #pragma once
-// Writing RGB PNGs with stb, fast (compression level 1), into place atomically.
+// Writing what GL drew as a PNG: its RGBA rows, bottom row first, become the RGB rows, top row first,
+// of the one PNG encoder both programs share (png_file.h).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -7,8 +8,8 @@
 namespace bsim {
 
 /// RGBA pixels as GL reads them (bottom row first) to an RGB PNG at `path`. The file appears only
-/// complete: it is written beside `path` and renamed.
-bool write_png(const std::string& path, const std::vector<std::uint8_t>& rgba_bottom_up, int width, int height,
-               std::string& error);
+/// complete (atomic_file.h).
+bool write_gl_png(const std::string& path, const std::vector<std::uint8_t>& rgba_bottom_up, int width, int height,
+                  std::string& error);
 
 }  // namespace bsim

@@ -13,37 +13,31 @@ namespace bsim {
 
 namespace {
 
-constexpr const char* kUsage = R"(usage: billiards-preview [SCENE] [options]
+constexpr const char* kUsageHead = R"(usage: billiards-preview [SCENE] [options]
 
 Shows SCENE (default: the built-in break) as the scene's camera sees it. With no output option it
 opens the interactive window; otherwise it writes one picture or the animatic and exits.
 
 options:
-  --at SECONDS|event:N   write the frame at this time, or at the instant of event N (needs -o);
-                         give it several times for one picture per time
-  --timeline             write the timeline of events and camera interpolation windows (needs -o)
-  -o, --output FILE.png  the picture --at or --timeline writes; for several --at, a directory
-                         (DIR/: pictures at_2.500.png, at_event_3.png) or a name with %t
-                         (shot_%t.png: shot_2.500.png, shot_event_3.png)
-  --movie FILE.mp4       write the animatic: the whole shot at preview quality
-  --size WxH             picture, animatic or window size in pixels (default: 1280x720)
-                         without --size the window's picture is smaller if need be, to fit the screen
-  --fps N                animatic frames per second, 1 to 1000 (default: 30)
-  --overlay LIST         draw extras, comma-separated: paths, events, camera, table
-                         (the rails', pockets' and balls' numbers) (default: none)
-  --strict               accept only the original scene language: no comments, spin, pocket or param
-  --quiet                print no progress or closing lines (errors and warnings still print)
-  --camera auto|scene    auto: film with the automatic director's camera script instead of the
-                         scene's own (default: scene)
-  --write-camera FILE    write the automatic director's camera script as scene text (camera ...
-                         endcamera) to FILE, or to standard output for -; implies --camera auto
-  --quit-after SECONDS   interactive: close the window after this long (default: stay open)
-  --screenshot FILE.png  interactive: save the last frame shown when the window closes
-  -h, --help             show this help and exit
-  --version              show the version and exit
+)";
 
+constexpr const char* kUsageTail = R"(
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";
+
+bool bad(std::string& message, const std::string& name, const std::string& text, const std::string& expected) {
+  message = bad_value_message(name, text, expected);
+  return false;
+}
+
+/// What a file option does: a value that is not empty stored in `to`.
+auto store_file(std::optional<std::string>& to, const char* expected = "a file") {
+  return [&to, expected](const std::string& name, const std::string& v, std::string& m) {
+    if (v.empty()) return bad(m, name, v, expected);
+    to = v;
+    return true;
+  };
+}
 
 bool parse_time(const std::string& text, TimeSpec& at) {
   if (text.starts_with("event:")) {
@@ -77,49 +71,6 @@ bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
     if (comma == std::string_view::npos) return true;
     rest.remove_prefix(comma + 1);
   }
-}
-
-bool apply_option(ArgReader& reader, PreviewOptions& o, std::string& message) {
-  const std::string& name = reader.word();
-  auto bad = [&](const std::string& text, const std::string& expected) {
-    message = bad_value_message(name, text, expected);
-    return false;
-  };
-  if (name == "--timeline") return reader.no_value(message) && (o.timeline = true);
-  static const std::vector<std::string_view> kWithValue = {
-      "--at", "-o", "--output", "--movie", "--overlay", "--quit-after", "--screenshot", "--write-camera"};
-  if (std::find(kWithValue.begin(), kWithValue.end(), name) == kWithValue.end()) {
-    std::vector<std::string_view> own = kWithValue;
-    own.push_back("--timeline");
-    message = unknown_option_message(name, own);
-    return false;
-  }
-  const auto v = reader.value(message);
-  if (!v) return false;
-  if (name == "--at") {
-    TimeSpec at;
-    if (!parse_time(*v, at)) return bad(*v, "seconds from 0 (e.g. 2.5) or event:N (e.g. event:3)");
-    o.at.push_back(at);
-  } else if (name == "-o" || name == "--output") {
-    if (v->empty()) return bad(*v, "a file");
-    o.output = *v;
-  } else if (name == "--movie") {
-    if (v->empty()) return bad(*v, "a file");
-    o.movie = *v;
-  } else if (name == "--overlay") {
-    if (!parse_overlays(*v, o.overlays)) return bad(*v, "a comma-separated list of paths, events, camera, table");
-  } else if (name == "--quit-after") {
-    const auto seconds = parse_real_option(*v);
-    if (!seconds || *seconds <= 0) return bad(*v, "seconds greater than 0");
-    o.quit_after = *seconds;
-  } else if (name == "--write-camera") {
-    if (v->empty()) return bad(*v, "a file, or - for standard output");
-    o.write_camera = *v;
-  } else {  // --screenshot
-    if (v->empty()) return bad(*v, "a file");
-    o.screenshot = *v;
-  }
-  return true;
 }
 
 /// Whether `path` ends in `extension` (".png"), in any case.
@@ -202,6 +153,64 @@ bool check_combination(PreviewOptions& o, std::string& message) {
 
 }  // namespace
 
+OptionTable preview_option_table(PreviewOptions& o) {
+  using S = const std::string&;
+  return {
+      {"--at", "SECONDS|event:N",
+       "write the frame at this time, or at the instant of event N (needs -o);\n"
+       "give it several times for one picture per time",
+       [&o](S n, S v, std::string& m) {
+         TimeSpec at;
+         if (!parse_time(v, at)) return bad(m, n, v, "seconds from 0 (e.g. 2.5) or event:N (e.g. event:3)");
+         o.at.push_back(at);
+         return true;
+       }},
+      {"--timeline", "", "write the timeline of events and camera interpolation windows (needs -o)",
+       [&o](S, S, std::string&) { return o.timeline = true; }},
+      {"-o, --output", "FILE.png",
+       "the picture --at or --timeline writes; for several --at, a directory\n"
+       "(DIR/: pictures at_2.500.png, at_event_3.png) or a name with %t\n"
+       "(shot_%t.png: shot_2.500.png, shot_event_3.png)",
+       store_file(o.output)},
+      {"--movie", "FILE.mp4", "write the animatic: the whole shot at preview quality", store_file(o.movie)},
+      {"--size",
+       "WxH",
+       "picture, animatic or window size in pixels (default: 1280x720)\n"
+       "without --size the window's picture is smaller if need be, to fit the screen",
+       {}},
+      {"--fps", "N", "animatic frames per second, 1 to 1000 (default: 30)", {}},
+      {"--overlay", "LIST",
+       "draw extras, comma-separated: paths, events, camera, table\n"
+       "(the rails', pockets' and balls' numbers) (default: none)",
+       [&o](S n, S v, std::string& m) {
+         if (!parse_overlays(v, o.overlays))
+           return bad(m, n, v, "a comma-separated list of paths, events, camera, table");
+         return true;
+       }},
+      {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
+      {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
+      {"--camera",
+       "auto|scene",
+       "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
+       {}},
+      {"--write-camera", "FILE",
+       "write the automatic director's camera script as scene text (camera ...\n"
+       "endcamera) to FILE, or to standard output for -; implies --camera auto",
+       store_file(o.write_camera, "a file, or - for standard output")},
+      {"--quit-after", "SECONDS", "interactive: close the window after this long (default: stay open)",
+       [&o](S n, S v, std::string& m) {
+         const auto seconds = parse_real_option(v);
+         if (!seconds || *seconds <= 0) return bad(m, n, v, "seconds greater than 0");
+         o.quit_after = *seconds;
+         return true;
+       }},
+      {"--screenshot", "FILE.png", "interactive: save the last frame shown when the window closes",
+       store_file(o.screenshot)},
+      {"-h, --help", "", "show this help and exit", {}},
+      {"--version", "", "show the version and exit", {}},
+  };
+}
+
 std::string time_label(const TimeSpec& at) {
   if (at.event >= 0) return "event_" + std::to_string(at.event);
   char text[64];
@@ -212,9 +221,10 @@ std::string time_label(const TimeSpec& at) {
 PreviewCommandLineOutcome parse_preview_options(const std::vector<std::string>& args, PreviewOptions& options,
                                                 std::string& message) {
   options = PreviewOptions{};
-  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_option(reader, options, error); };
-  switch (read_arguments(args, options.scene_path, options, kUsage, "billiards-preview " BSIM_VERSION "\n", apply,
-                         message)) {
+  const OptionTable table = preview_option_table(options);
+  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_table_option(reader, table, error); };
+  switch (read_arguments(args, options.scene_path, options, usage_text(kUsageHead, table, kUsageTail),
+                         "billiards-preview " BSIM_VERSION "\n", apply, message)) {
     case ArgumentsOutcome::exit_success: return PreviewCommandLineOutcome::exit_success;
     case ArgumentsOutcome::exit_usage: return PreviewCommandLineOutcome::exit_usage;
     case ArgumentsOutcome::run: break;

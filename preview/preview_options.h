@@ -40,6 +40,10 @@ struct PreviewOptions : SharedOptions {
   std::optional<std::string> write_camera;  ///< --write-camera FILE: the director's script as text ("-": stdout)
 };
 
+/// The program's option table (command_line.h): every option in --help's order, with what it does
+/// to `options`; it drives the dispatch, the usage and the "did you mean" suggestions.
+OptionTable preview_option_table(PreviewOptions& options);
+
 enum class PreviewCommandLineOutcome { run, exit_success, exit_usage };
 
 /// Parses argv[1..]. exit_success: print `message` on stdout (help, version);

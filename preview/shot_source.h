@@ -1,19 +1,18 @@
 #pragma once
-// Where the scene comes from (a file or the built-in break) and turning it into a Shot.
+// Where the scene comes from (a file or the built-in break, scene_file.h) and turning it into a Shot.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "diagnostics.h"
+#include "scene_file.h"
 #include "shot.h"
 
 namespace bsim {
 
-struct SceneSource {
-  std::optional<std::string> path;  ///< none: the built-in break
-  std::string shown_path;           ///< how diagnostics name it
-  std::string name;                 ///< Scene::name
+/// The scene's origin (scene_file.h: its path, how it is shown, its name) and how to load it.
+struct SceneSource : SceneOrigin {
   bool strict = false;
   bool auto_camera = false;  ///< --camera auto: film with the automatic director's script
 };

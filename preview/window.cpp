@@ -229,7 +229,7 @@ bool save_screenshot(const std::string& path, int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   std::string error;
-  if (!write_png(path, pixels, width, height, error)) {
+  if (!write_gl_png(path, pixels, width, height, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return false;
   }

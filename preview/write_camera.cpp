@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "atomic_file.h"
 #include "director.h"
 #include "scene_file.h"
 #include "shot.h"
@@ -17,7 +18,7 @@ int run_write_camera(const std::string& path, const Shot& shot, bool quiet) {
     return std::cout ? 0 : 1;
   }
   std::string error;
-  if (!write_text_file(path, text, error)) {
+  if (!write_file_atomically(path, text, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
   }

@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <utility>
@@ -79,6 +80,55 @@ std::string unknown_option_message(std::string_view name, const std::vector<std:
   std::vector<std::string_view> known = {"--fps", "--size", "--strict", "--quiet", "--camera", "--help", "--version"};
   known.insert(known.end(), own.begin(), own.end());
   return "unknown option '" + std::string(name) + "'" + did_you_mean(name, known) + " (see --help)";
+}
+
+std::vector<std::string_view> option_names(const OptionRow& row) {
+  std::vector<std::string_view> names;
+  for (std::string_view rest = row.names; !rest.empty();) {
+    const std::size_t comma = rest.find(", ");
+    names.push_back(rest.substr(0, comma));
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
+  }
+  return names;
+}
+
+std::string usage_text(std::string_view head, const OptionTable& table, std::string_view tail) {
+  constexpr std::size_t kHelpColumn = 25;  // the help starts after this many characters
+  std::string text(head);
+  for (const OptionRow& row : table) {
+    if (!row.shown) continue;
+    if (row.names.empty()) {
+      text.append(row.help).append("\n");
+      continue;
+    }
+    std::string line = "  " + std::string(row.names);
+    if (!row.argument.empty()) line.append(" ").append(row.argument);
+    line.append(line.size() + 2 > kHelpColumn ? 2 : kHelpColumn - line.size(), ' ');
+    std::string_view help = row.help;
+    for (std::size_t end; (end = help.find('\n')) != std::string_view::npos; help.remove_prefix(end + 1)) {
+      line.append(help.substr(0, end)).append("\n").append(kHelpColumn, ' ');
+    }
+    text.append(line).append(help).append("\n");
+  }
+  return text.append(tail);
+}
+
+bool apply_table_option(ArgReader& reader, const OptionTable& table, std::string& message) {
+  const std::string& name = reader.word();
+  std::vector<std::string_view> own;
+  for (const OptionRow& row : table) {
+    if (!row.apply) continue;
+    const std::vector<std::string_view> names = option_names(row);
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      own.insert(own.end(), names.begin(), names.end());
+      continue;
+    }
+    if (row.argument.empty()) return reader.no_value(message) && row.apply(name, "", message);
+    const std::optional<std::string> value = reader.value(message);
+    return value && row.apply(name, *value, message);
+  }
+  message = unknown_option_message(name, own);
+  return false;
 }
 
 SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::string& message) {

@@ -2,6 +2,7 @@
 // Reading command-line arguments and their values, shared by both front ends so that they accept
 // the same forms (`--fps 24`, `--fps=24`, `--` before a scene path starting with '-') and say the
 // same things about bad values.
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,37 @@ std::string bad_value_message(std::string_view name, std::string_view text, std:
 /// "unknown option 'NAME' (see --help)", or "unknown option 'NAME'; did you mean 'OPTION'? (see --help)"
 /// when NAME looks like a misspelling of one of the program's `own` options or of the shared ones.
 std::string unknown_option_message(std::string_view name, const std::vector<std::string_view>& own = {});
+
+/// One row of a program's option table, which drives its dispatch, its usage (--help) and its
+/// "did you mean" suggestions: an option, with its names, the argument it takes, its help and what it
+/// does; or, with no names, a line of the usage printed as it is (a heading, a blank line, an example).
+struct OptionRow {
+  /// As --help shows them, comma-separated ("-o, --output"); empty for a line of text.
+  std::string_view names;
+  /// The argument's name in the usage ("DIR"); empty for a flag.
+  std::string_view argument;
+  /// The help: each '\n' starts another line in the help column. For a line of text, the line.
+  std::string_view help;
+  /// Applies the option given as `name` with its `value` (empty for a flag): false with `message`
+  /// set when the value is bad. Empty for the options read_arguments reads itself (the shared ones,
+  /// -h and --version).
+  std::function<bool(const std::string& name, const std::string& value, std::string& message)> apply;
+  /// Whether --help lists the row (an option the program's jobs use may be left out).
+  bool shown = true;
+};
+using OptionTable = std::vector<OptionRow>;
+
+/// The names of an option row: "-o, --output" gives {"-o", "--output"}.
+std::vector<std::string_view> option_names(const OptionRow& row);
+
+/// The usage text: `head`, then each shown row of `table` (an option as "  NAMES ARGUMENT" with its
+/// help from the 26th column on, a line of text as it is), then `tail`.
+std::string usage_text(std::string_view head, const OptionTable& table, std::string_view tail);
+
+/// Applies the reader's current option by its row of `table`: its value read (or, for a flag, none
+/// allowed) and handed to the row's `apply`. False with `message` set when the value is bad or the
+/// option is not in the table (then with the closest of the table's names suggested).
+bool apply_table_option(ArgReader& reader, const OptionTable& table, std::string& message);
 
 /// The options both programs take, with their defaults. apply_shared_option() reads and checks
 /// them, so each is parsed in one place and rejected in the same words by both.

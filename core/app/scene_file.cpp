@@ -5,10 +5,12 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+
+#include "builtin_scene.h"
 
 namespace bsim {
 
@@ -52,29 +54,19 @@ std::optional<std::string> read_scene_file(const std::string& path, std::string&
   return text;
 }
 
+SceneOrigin scene_origin(const std::optional<std::string>& path) {
+  if (!path) return {std::nullopt, "<built-in break.scn>", std::string(kBuiltinSceneName)};
+  return {*path, *path, std::filesystem::path(*path).stem().string()};
+}
+
+std::optional<std::string> read_scene_text(const SceneOrigin& origin, std::string& error) {
+  if (!origin.path) return std::string(builtin_scene_text());
+  return read_scene_file(*origin.path, error);
+}
+
 std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-bool write_text_file(const std::string& path, std::string_view text, std::string& error) {
-  const std::string temp = path + ".partial";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) {
-      error = "cannot write " + path + ": " + std::strerror(errno);
-      std::remove(temp.c_str());
-      return false;
-    }
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    error = "cannot write " + path + ": " + std::strerror(errno);
-    std::remove(temp.c_str());
-    return false;
-  }
-  return true;
 }
 
 }  // namespace bsim
