@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "bench/physics_print.h"
 #include "motion.h"
+#include "physics_print.h"
 
 using namespace bsim;
 

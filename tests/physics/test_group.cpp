@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "bench/random_scenes.h"
 #include "group.h"
 #include "motion.h"
+#include "random_scenes.h"
 #include "resolve.h"
 #include "shot.h"
 #include "shots.h"

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "bench/physics_print.h"
-#include "bench/random_scenes.h"
-#include "bench/shot_checks.h"
 #include "motion.h"
+#include "physics_print.h"
 #include "pocket_fall.h"
+#include "random_scenes.h"
+#include "shot_checks.h"
 #include "simulate.h"
 #include "timeline.h"
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "bench/random_scenes.h"
 #include "motion.h"
+#include "random_scenes.h"
 #include "resolve.h"
 #include "scene.h"
 #include "tolerance.h"
