@@ -89,25 +89,17 @@ double children_cpu() {
 /// dropping into its pocket, the wide closing shot (seconds of the default break).
 constexpr double kLookInstants[] = {0.5, 2.64, 2.8, 5.35, 10.0};
 
-int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::string& ffmpeg,
-                  const std::string& sheet) {
+/// One look's renders of the instants: CPU seconds for each.
+struct LookRun {
+  bsim::Look look;
+  const char* name;
+  std::vector<double> seconds;
+};
+
+/// Writes and renders `jobs` in each look of `runs` (in `dir`/the look's name), timing each frame.
+bool render_looks(const bsim::Shot& shot, const std::string& povray, const fs::path& dir,
+                  const std::vector<bsim::FrameJob>& jobs, int frames, LookRun (&runs)[2]) {
   const int fps = 30, width = 1280, height = 720;
-  const int frames = bsim::frame_count(shot.timeline.duration(), fps);
-  std::vector<bsim::FrameJob> jobs;
-  for (double t : kLookInstants) jobs.push_back({static_cast<int>(std::lround(t * fps)), 0});
-  int blurred = 0;
-  for (int k = 0; k < frames; ++k) blurred += bsim::blur_samples(shot, k, fps) > 1;
-  std::printf(
-      "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with motion blur "
-      "(%.0f%%)\n",
-      width, height, frames, frames - blurred, 100.0 * (frames - blurred) / frames, blurred, 100.0 * blurred / frames);
-  const fs::path dir = fs::temp_directory_path() / ("render-bench-looks-" + std::to_string(::getpid()));
-  struct LookRun {
-    bsim::Look look;
-    const char* name;
-    std::vector<double> seconds;
-  };
-  LookRun runs[] = {{bsim::Look::classic, "classic", {}}, {bsim::Look::photo, "photographic", {}}};
   for (LookRun& run : runs) {
     const fs::path frames_dir = dir / run.name;
     fs::create_directories(frames_dir);
@@ -126,11 +118,57 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
       const double before = children_cpu();
       if (bsim::render_frames(frames_dir.string(), {job}, frames, settings, cache, error) != bsim::RunOutcome::done) {
         std::fprintf(stderr, "render_bench: %s\n", error.c_str());
-        return 1;
+        return false;
       }
       run.seconds.push_back(children_cpu() - before);
     }
   }
+  return true;
+}
+
+/// The contact sheet: one row a look, the instants left to right, each a quarter of its size.
+bool write_sheet(const std::string& ffmpeg, const fs::path& dir, const std::vector<bsim::FrameJob>& jobs,
+                 const LookRun (&runs)[2], const std::string& sheet) {
+  std::vector<std::string> args = {ffmpeg, "-loglevel", "error", "-y"};
+  for (const LookRun& run : runs)
+    for (const bsim::FrameJob& job : jobs)
+      args.insert(args.end(), {"-i", (dir / run.name / (bsim::frame_name(job.frame) + ".png")).string()});
+  std::string filter, layout;
+  const std::size_t count = 2 * jobs.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    filter += "[" + std::to_string(i) + "]scale=480:270[s" + std::to_string(i) + "];";
+    const std::size_t col = i % jobs.size(), row = i / jobs.size();
+    layout += (i ? "|" : "") + std::to_string(col * 480) + "_" + std::to_string(row * 270);
+  }
+  for (std::size_t i = 0; i < count; ++i) filter += "[s" + std::to_string(i) + "]";
+  filter += "xstack=inputs=" + std::to_string(count) + ":layout=" + layout;
+  // ffmpeg runs in the scratch directory: the sheet's name as given is relative to ours.
+  args.insert(args.end(), {"-filter_complex", filter, "-frames:v", "1", "-q:v", "3", fs::absolute(sheet).string()});
+  std::string error;
+  const pid_t pid = bsim::start_process(args, dir.string(), (dir / "ffmpeg.log").string(), error);
+  if (pid < 0 || !bsim::wait_for(pid)) {
+    std::fprintf(stderr, "render_bench: ffmpeg could not write %s\n", sheet.c_str());
+    return false;
+  }
+  std::printf("wrote %s\n", sheet.c_str());
+  return true;
+}
+
+int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::string& ffmpeg,
+                  const std::string& sheet) {
+  const int fps = 30, width = 1280, height = 720;
+  const int frames = bsim::frame_count(shot.timeline.duration(), fps);
+  std::vector<bsim::FrameJob> jobs;
+  for (double t : kLookInstants) jobs.push_back({static_cast<int>(std::lround(t * fps)), 0});
+  int blurred = 0;
+  for (int k = 0; k < frames; ++k) blurred += bsim::blur_samples(shot, k, fps) > 1;
+  std::printf(
+      "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with motion blur "
+      "(%.0f%%)\n",
+      width, height, frames, frames - blurred, 100.0 * (frames - blurred) / frames, blurred, 100.0 * blurred / frames);
+  const fs::path dir = fs::temp_directory_path() / ("render-bench-looks-" + std::to_string(::getpid()));
+  LookRun runs[] = {{bsim::Look::classic, "classic", {}}, {bsim::Look::photo, "photographic", {}}};
+  if (!render_looks(shot, povray, dir, jobs, frames, runs)) return 1;
   std::printf("%-8s %-7s %-10s %14s %14s\n", "frame", "t (s)", "blur", "classic (s)", "photographic (s)");
   double sum[2] = {0, 0};
   for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -143,54 +181,57 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
   const double n = static_cast<double>(jobs.size());
   std::printf("mean s a frame on one core: classic %.2f, photographic %.2f (%.0f%% of classic)\n", sum[0] / n,
               sum[1] / n, 100 * sum[1] / sum[0]);
-  if (!sheet.empty()) {
-    // One row a look, the instants left to right, each a quarter of its size.
-    std::vector<std::string> args = {ffmpeg, "-loglevel", "error", "-y"};
-    for (const LookRun& run : runs)
-      for (const bsim::FrameJob& job : jobs)
-        args.insert(args.end(), {"-i", (dir / run.name / (bsim::frame_name(job.frame) + ".png")).string()});
-    std::string filter, layout;
-    const std::size_t count = 2 * jobs.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      filter += "[" + std::to_string(i) + "]scale=480:270[s" + std::to_string(i) + "];";
-      const std::size_t col = i % jobs.size(), row = i / jobs.size();
-      layout += (i ? "|" : "") + std::to_string(col * 480) + "_" + std::to_string(row * 270);
-    }
-    for (std::size_t i = 0; i < count; ++i) filter += "[s" + std::to_string(i) + "]";
-    filter += "xstack=inputs=" + std::to_string(count) + ":layout=" + layout;
-    // ffmpeg runs in the scratch directory: the sheet's name as given is relative to ours.
-    args.insert(args.end(), {"-filter_complex", filter, "-frames:v", "1", "-q:v", "3", fs::absolute(sheet).string()});
-    std::string error;
-    const pid_t pid = bsim::start_process(args, dir.string(), (dir / "ffmpeg.log").string(), error);
-    if (pid < 0 || !bsim::wait_for(pid)) {
-      std::fprintf(stderr, "render_bench: ffmpeg could not write %s\n", sheet.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", sheet.c_str());
-  }
+  if (!sheet.empty() && !write_sheet(ffmpeg, dir, jobs, runs, sheet)) return 1;
   fs::remove_all(dir);
   return 0;
+}
+
+/// What the command line asks for.
+struct BenchArgs {
+  int every = 1;
+  bsim::ExportOptions options;
+  bool looks = false;
+  std::string sheet;
+};
+
+BenchArgs read_args(int argc, char** argv) {
+  BenchArgs a;
+  a.options.quality = bsim::Quality::draft;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--looks")
+      a.looks = true;
+    else if (flag == "--sheet" && i + 1 < argc)
+      a.sheet = argv[++i];
+    else if (flag == "--every" && i + 1 < argc)
+      a.every = std::max(1, std::atoi(argv[++i]));
+    else if (flag == "--fps" && i + 1 < argc)
+      a.options.fps = std::max(1, std::atoi(argv[++i]));
+  }
+  return a;
+}
+
+/// What this machine gives two processes: three frames one after another, then six neighbouring
+/// frames (so as much work apiece) two at a time. The speed-up of the pair.
+double machine_speedup(const std::string& frames_dir, int frames, bsim::RenderSettings settings) {
+  std::vector<bsim::FrameJob> three, six;
+  for (int k = 0; k < 6; ++k) {
+    if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
+    six.push_back({frames / 2 + k, 0});
+  }
+  settings.processes = 1;
+  const RenderTiming alone = render(frames_dir, three, settings);
+  settings.processes = 2;
+  const RenderTiming pair = render(frames_dir, six, settings);
+  return 2 * alone.wall / pair.wall;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  int every = 1;
-  bsim::ExportOptions options;
-  options.quality = bsim::Quality::draft;
-  bool looks = false;
-  std::string sheet;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--looks")
-      looks = true;
-    else if (flag == "--sheet" && i + 1 < argc)
-      sheet = argv[++i];
-    else if (flag == "--every" && i + 1 < argc)
-      every = std::max(1, std::atoi(argv[++i]));
-    else if (flag == "--fps" && i + 1 < argc)
-      options.fps = std::max(1, std::atoi(argv[++i]));
-  }
+  const BenchArgs args = read_args(argc, argv);
+  const int every = args.every;
+  const bsim::ExportOptions& options = args.options;
   const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
   if (povray.empty() || ffmpeg.empty()) {
     std::fprintf(stderr, "render_bench: povray and ffmpeg are needed; run `bash .ci/install-deps`\n");
@@ -201,7 +242,7 @@ int main(int argc, char** argv) {
   auto start = Clock::now();
   bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
   if (!loaded.shot) return 1;
-  if (looks) return compare_looks(*loaded.shot, povray, ffmpeg, sheet);
+  if (args.looks) return compare_looks(*loaded.shot, povray, ffmpeg, args.sheet);
   const double load_time = seconds_since(start);
   const fs::path dir = fs::temp_directory_path() / ("render-bench-" + std::to_string(::getpid()));
   bsim::OutputStage stage;
@@ -223,19 +264,8 @@ int main(int argc, char** argv) {
               frames, options.fps, jobs.size());
   std::fflush(stdout);
 
-  // What this machine gives two processes: three frames one after another, then six neighbouring
-  // frames (so as much work apiece) two at a time.
   bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 1, ""};
-  std::vector<bsim::FrameJob> three, six;
-  for (int k = 0; k < 6; ++k) {
-    if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
-    six.push_back({frames / 2 + k, 0});
-  }
-  const RenderTiming alone = render(frames_dir, three, settings);
-  settings.processes = 2;
-  const RenderTiming pair = render(frames_dir, six, settings);
-  const double machine = 2 * alone.wall / pair.wall;
-
+  const double machine = machine_speedup(frames_dir, frames, settings);
   settings.processes = 1;
   const RenderTiming one = render(frames_dir, jobs, settings);
   std::printf("POV-Ray, --jobs 1: %.1f s (%.2f s a frame)\n", one.wall, one.wall / static_cast<double>(jobs.size()));

@@ -89,43 +89,13 @@ bool in_frame(const Shot& shot, double t, const Vec3& point) {
   return x >= kMargin * w && x <= (1 - kMargin) * w && y >= kMargin * h && y <= (1 - kMargin) * h;
 }
 
-/// Every check of the director's script for one shot.
-void check_shot(const std::string& name, const Scene& scene) {
-  CAPTURE(name);
-  DirectedCamera script;
-  const std::unique_ptr<Shot> shot = directed(scene, &script);
-  const Timeline& timeline = shot->timeline;
-  const CameraScript& camera = *shot->camera;
+/// Speed, clearance and the room, sampled finely, with every blend's ends.
+void check_camera_path(const Shot& shot) {
+  const Timeline& timeline = shot.timeline;
+  const CameraScript& camera = *shot.camera;
   const double duration = timeline.duration();
-  const double radius = shot->scene.physics.ball_radius;
-  const TableLayout layout = table_layout(shot->scene);
-
-  // No description shorter than about a second; every change a blend, none a cut.
-  REQUIRE(!camera.segments().empty());
-  for (const CameraSegment& s : camera.segments()) {
-    const double begin = s.shot == 0 ? 0.0 : s.begin;
-    CHECK(s.end - begin >= kMinDescriptionSeconds - 1e-9);
-  }
-  for (const CameraWindow& w : camera.windows()) CHECK(w.end - w.begin >= 0.3);
-
-  // Never across the line of action from one description to the next: the camera where the blend
-  // leaves the old description and where it arrives at the new one are on one side of the new
-  // description's line (or on the line).
-  REQUIRE(script.lines.size() == script.shots.size());
-  REQUIRE(script.subjects.size() == script.shots.size());
-  for (const CameraWindow& w : camera.windows()) {
-    const LineOfAction& line = script.lines[static_cast<std::size_t>(w.shot)];
-    // The line runs through the description's subject at its key, level.
-    const int subject = script.subjects[static_cast<std::size_t>(w.shot)];
-    REQUIRE(subject >= 0);
-    CHECK((line.point - timeline.motion_state(subject, w.event_time).position).norm() < 1e-3);
-    CHECK(std::abs(line.direction.norm() - 1) < 1e-9);
-    CHECK(line.direction.z() == 0);
-    const double a = line.side(camera.pose(w.begin).location), b = line.side(camera.pose(w.end).location);
-    CHECK_MESSAGE(!((a > 0.05 && b < -0.05) || (a < -0.05 && b > 0.05)), "crosses the line into description ", w.shot);
-  }
-
-  // Speed, clearance and the room, sampled finely, with every blend's ends.
+  const double radius = shot.scene.physics.ball_radius;
+  const TableLayout layout = table_layout(shot.scene);
   std::vector<double> times;
   for (int k = 0; k / kSpeedHz <= duration; ++k) times.push_back(k / kSpeedHz);
   for (const CameraWindow& w : camera.windows()) {
@@ -154,21 +124,25 @@ void check_shot(const std::string& name, const Scene& scene) {
   CHECK(nearest >= radius + kDirectorBallRoom);
   CHECK(lowest_over_table > layout.rail_top);
   CHECK(lowest > layout.rail_top);  // nowhere below the rails' top, over the table or beside it
+}
 
-  // The balls that matter in the picture while they move.
+/// The balls that matter in the picture while they move.
+void check_balls_seen(const Shot& shot) {
+  const Timeline& timeline = shot.timeline;
+  const double duration = timeline.duration();
   std::vector<double> drop(static_cast<std::size_t>(timeline.ball_count()), std::numeric_limits<double>::infinity());
   for (const PocketDrop& d : timeline.pocket_drops())
     drop[static_cast<std::size_t>(d.ball)] = std::min(drop[static_cast<std::size_t>(d.ball)], d.time);
   for (int b = 0; b < timeline.ball_count(); ++b) {
     const double dropped = drop[static_cast<std::size_t>(b)];
     const bool pocketed = std::isfinite(dropped);
-    if (!pocketed && b != shot->scene.cue.target) continue;
+    if (!pocketed && b != shot.scene.cue.target) continue;
     int travelling = 0, seen = 0;
     for (int k = 0; k / kPictureHz <= duration; ++k) {
       const double t = k / kPictureHz;
       if (!moving(timeline, b, t, dropped)) continue;
       ++travelling;
-      if (in_frame(*shot, t, timeline.motion_state(b, t).position)) ++seen;
+      if (in_frame(shot, t, timeline.motion_state(b, t).position)) ++seen;
     }
     if (travelling == 0) continue;
     const double share = double(seen) / travelling;
@@ -176,6 +150,43 @@ void check_shot(const std::string& name, const Scene& scene) {
     CAPTURE(share);
     CHECK(share >= (pocketed ? 0.8 : 0.6));
   }
+}
+
+/// Every check of the director's script for one shot.
+void check_shot(const std::string& name, const Scene& scene) {
+  CAPTURE(name);
+  DirectedCamera script;
+  const std::unique_ptr<Shot> shot = directed(scene, &script);
+  const Timeline& timeline = shot->timeline;
+  const CameraScript& camera = *shot->camera;
+
+  // No description shorter than about a second; every change a blend, none a cut.
+  REQUIRE(!camera.segments().empty());
+  for (const CameraSegment& s : camera.segments()) {
+    const double begin = s.shot == 0 ? 0.0 : s.begin;
+    CHECK(s.end - begin >= kMinDescriptionSeconds - 1e-9);
+  }
+  for (const CameraWindow& w : camera.windows()) CHECK(w.end - w.begin >= 0.3);
+
+  // Never across the line of action from one description to the next: the camera where the blend
+  // leaves the old description and where it arrives at the new one are on one side of the new
+  // description's line (or on the line).
+  REQUIRE(script.lines.size() == script.shots.size());
+  REQUIRE(script.subjects.size() == script.shots.size());
+  for (const CameraWindow& w : camera.windows()) {
+    const LineOfAction& line = script.lines[static_cast<std::size_t>(w.shot)];
+    // The line runs through the description's subject at its key, level.
+    const int subject = script.subjects[static_cast<std::size_t>(w.shot)];
+    REQUIRE(subject >= 0);
+    CHECK((line.point - timeline.motion_state(subject, w.event_time).position).norm() < 1e-3);
+    CHECK(std::abs(line.direction.norm() - 1) < 1e-9);
+    CHECK(line.direction.z() == 0);
+    const double a = line.side(camera.pose(w.begin).location), b = line.side(camera.pose(w.end).location);
+    CHECK_MESSAGE(!((a > 0.05 && b < -0.05) || (a < -0.05 && b > 0.05)), "crosses the line into description ", w.shot);
+  }
+
+  check_camera_path(*shot);
+  check_balls_seen(*shot);
 }
 
 /// The scene's text with its camera block replaced by `camera` (or appended when it has none).

@@ -59,17 +59,11 @@ inline Poly distance_poly(const Vec3& c, const Vec3& b, const Vec3& a, double d)
   return Poly{{dot2(c, c) - d * d, 2 * dot2(b, c), dot2(b, b) + 2 * dot2(a, c), 2 * dot2(a, b), dot2(a, a)}};
 }
 
-}  // namespace detail
-
-inline Faults find_faults(const Scene& scene, const Timeline& timeline) {
-  using namespace detail;
-  Faults faults;
-  const PhysicsParams& params = timeline.physics();
-  const double R = params.ball_radius, tol = kFaultTolerance;
-  const int n = timeline.ball_count();
-
+/// The breakpoints of the shot: every segment's start within the shot and every event, sorted. A
+/// non-finite segment start counts as a NaN.
+inline std::vector<double> breakpoints(const Timeline& timeline, Faults& faults) {
   std::vector<double> times;
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < timeline.ball_count(); ++i)
     for (const MotionSegment& seg : timeline.segments(i)) {
       if (!finite(seg.start) || !std::isfinite(seg.t0)) ++faults.nans;
       if (seg.t0 <= timeline.duration()) times.push_back(seg.t0);
@@ -77,7 +71,14 @@ inline Faults find_faults(const Scene& scene, const Timeline& timeline) {
   for (const Event& e : timeline.events()) times.push_back(e.time);
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
 
+/// At each event: no NaN, no energy created by a collision, no two balls on the bed overlapping.
+inline void check_events(const Timeline& timeline, Faults& faults) {
+  const PhysicsParams& params = timeline.physics();
+  const double R = params.ball_radius;
+  const int n = timeline.ball_count();
   for (const Event& e : timeline.events()) {
     for (const auto* list : {&e.before, &e.after})
       for (const BallState& s : *list)
@@ -96,62 +97,85 @@ inline Faults find_faults(const Scene& scene, const Timeline& timeline) {
         if (!on_bed(a) || !on_bed(b)) continue;
         const double d = std::hypot(a.position.x() - b.position.x(), a.position.y() - b.position.y());
         faults.deepest = std::max(faults.deepest, 2 * R - d);
-        if (d < 2 * R - tol) ++faults.overlaps;
+        if (d < 2 * R - kFaultTolerance) ++faults.overlaps;
       }
   }
+}
 
-  std::vector<double> reach;
-  for (const Rail& r : scene.rails) reach.push_back(cushion_reach(R, r.a.z()));
-  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
-    const double t = times[k], length = times[k + 1] - t;
-    std::vector<Path> paths;
-    std::vector<bool> live;
-    for (int i = 0; i < n; ++i) {
-      const BallState s = state_at(timeline, i, t);
-      live.push_back(on_bed(s));
-      paths.push_back(path_of(s, params));
+/// A ball moving along `p` for `length` seconds stays behind every cushion's nose (`reach` m from
+/// each rail's line) and clear of the rails' ends.
+inline void check_rails(const Scene& scene, const Path& p, double length, const std::vector<double>& reach,
+                        Faults& faults) {
+  const double tol = kFaultTolerance;
+  for (std::size_t r = 0; r < scene.rails.size(); ++r) {
+    const Rail& rail = scene.rails[r];
+    const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);
+    const double len = along.norm();
+    const Vec3 dir = along / len, inward(dir.y(), -dir.x(), 0);
+    const Vec3 rel(p.p.x() - rail.a.x(), p.p.y() - rail.a.y(), 0);
+    const Poly s{{inward.dot(rel) - reach[r], inward.dot(p.v), 0.5 * inward.dot(p.a), 0, 0}};
+    if (s.c[0] < -reach[r]) continue;  // behind this cushion (another part of the table)
+    const Roots crit = roots_in(s.derivative(), 0, length);
+    for (double tau : {0.0, length, crit.count ? crit.t[0] : 0.0}) {
+      const Vec3 at = p.at(tau);
+      const double u = dir.dot(Vec3(at.x() - rail.a.x(), at.y() - rail.a.y(), 0));
+      if (u >= 0 && u <= len) faults.deepest = std::max(faults.deepest, -s(tau));
+      if (u >= 0 && u <= len && s(tau) < -tol) {
+        ++faults.escapes;
+        break;
+      }
     }
-    for (int i = 0; i < n; ++i) {
-      if (!live[static_cast<std::size_t>(i)]) continue;
-      const Path& p = paths[static_cast<std::size_t>(i)];
-      const SweptBox box = swept_box(p, length);
-      for (int j = i + 1; j < n; ++j) {
-        const Path& q = paths[static_cast<std::size_t>(j)];
-        if (!live[static_cast<std::size_t>(j)] || (!p.moves() && !q.moves())) continue;
-        if (!boxes_within(box, swept_box(q, length), 2 * R)) continue;
-        const Poly f = distance_poly(q.p - p.p, q.v - p.v, 0.5 * (q.a - p.a), 2 * R);
-        const double low = minimum(f, length);
-        faults.deepest = std::max(faults.deepest, 2 * R - std::sqrt(std::max(0.0, low + 4 * R * R)));
-        if (low < -4 * R * tol) ++faults.missed;
-      }
-      if (!p.moves()) continue;
-      for (std::size_t r = 0; r < scene.rails.size(); ++r) {
-        const Rail& rail = scene.rails[r];
-        const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);
-        const double len = along.norm();
-        const Vec3 dir = along / len, inward(dir.y(), -dir.x(), 0);
-        const Vec3 rel(p.p.x() - rail.a.x(), p.p.y() - rail.a.y(), 0);
-        const Poly s{{inward.dot(rel) - reach[r], inward.dot(p.v), 0.5 * inward.dot(p.a), 0, 0}};
-        if (s.c[0] < -reach[r]) continue;  // behind this cushion (another part of the table)
-        const Roots crit = roots_in(s.derivative(), 0, length);
-        for (double tau : {0.0, length, crit.count ? crit.t[0] : 0.0}) {
-          const Vec3 at = p.at(tau);
-          const double u = dir.dot(Vec3(at.x() - rail.a.x(), at.y() - rail.a.y(), 0));
-          if (u >= 0 && u <= len) faults.deepest = std::max(faults.deepest, -s(tau));
-          if (u >= 0 && u <= len && s(tau) < -tol) {
-            ++faults.escapes;
-            break;
-          }
-        }
-        for (const Vec3* end : {&rail.a, &rail.b}) {
-          const Poly g = distance_poly(p.p - *end, p.v, 0.5 * p.a, reach[r]);
-          const double low = minimum(g, length);
-          faults.deepest = std::max(faults.deepest, reach[r] - std::sqrt(std::max(0.0, low + reach[r] * reach[r])));
-          if (low < -2 * reach[r] * tol) ++faults.escapes;
-        }
-      }
+    for (const Vec3* end : {&rail.a, &rail.b}) {
+      const Poly g = distance_poly(p.p - *end, p.v, 0.5 * p.a, reach[r]);
+      const double low = minimum(g, length);
+      faults.deepest = std::max(faults.deepest, reach[r] - std::sqrt(std::max(0.0, low + reach[r] * reach[r])));
+      if (low < -2 * reach[r] * tol) ++faults.escapes;
     }
   }
+}
+
+/// Over the stretch from `t` to `t + length`, where each ball's path is one quadratic: no two balls
+/// on the bed pass through each other, and no moving ball passes a cushion.
+inline void check_stretch(const Scene& scene, const Timeline& timeline, double t, double length,
+                          const std::vector<double>& reach, Faults& faults) {
+  const PhysicsParams& params = timeline.physics();
+  const double R = params.ball_radius;
+  const int n = timeline.ball_count();
+  std::vector<Path> paths;
+  std::vector<bool> live;
+  for (int i = 0; i < n; ++i) {
+    const BallState s = state_at(timeline, i, t);
+    live.push_back(on_bed(s));
+    paths.push_back(path_of(s, params));
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!live[static_cast<std::size_t>(i)]) continue;
+    const Path& p = paths[static_cast<std::size_t>(i)];
+    const SweptBox box = swept_box(p, length);
+    for (int j = i + 1; j < n; ++j) {
+      const Path& q = paths[static_cast<std::size_t>(j)];
+      if (!live[static_cast<std::size_t>(j)] || (!p.moves() && !q.moves())) continue;
+      if (!boxes_within(box, swept_box(q, length), 2 * R)) continue;
+      const Poly f = distance_poly(q.p - p.p, q.v - p.v, 0.5 * (q.a - p.a), 2 * R);
+      const double low = minimum(f, length);
+      faults.deepest = std::max(faults.deepest, 2 * R - std::sqrt(std::max(0.0, low + 4 * R * R)));
+      if (low < -4 * R * kFaultTolerance) ++faults.missed;
+    }
+    if (p.moves()) check_rails(scene, p, length, reach, faults);
+  }
+}
+
+}  // namespace detail
+
+inline Faults find_faults(const Scene& scene, const Timeline& timeline) {
+  using namespace detail;
+  Faults faults;
+  const std::vector<double> times = breakpoints(timeline, faults);
+  check_events(timeline, faults);
+  std::vector<double> reach;
+  for (const Rail& r : scene.rails) reach.push_back(cushion_reach(timeline.physics().ball_radius, r.a.z()));
+  for (std::size_t k = 0; k + 1 < times.size(); ++k)
+    check_stretch(scene, timeline, times[k], times[k + 1] - times[k], reach, faults);
   return faults;
 }
 
