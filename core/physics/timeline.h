@@ -48,13 +48,6 @@ class Timeline {
     return physics_ == o.physics_ && pocket_centres_ == o.pocket_centres_ && pocket_radii_ == o.pocket_radii_ &&
            segments_ == o.segments_ && events_ == o.events_ && drops_ == o.drops_;
   }
-  /// This timeline answering every query by integrating from the segment's start, with nothing
-  /// saved: the same values to the bit, only slower (the reference for checks and benchmarks).
-  Timeline direct() const {
-    Timeline copy = *this;
-    copy.steps_.reset();
-    return copy;
-  }
 
  private:
   struct SegmentSteps;

@@ -89,6 +89,16 @@ double children_cpu() {
 /// dropping into its pocket, the wide closing shot (seconds of the default break).
 constexpr double kLookInstants[] = {0.5, 2.64, 2.8, 5.35, 10.0};
 
+/// Whether frame `frame` is drawn with motion blur: a ball's streak, a swept stick or its copies.
+bool blurred_frame(const bsim::Shot& shot, int frame, int fps) {
+  std::ostringstream out;
+  bsim::write_pov_frame(shot, frame, fps, out);
+  const std::string text = out.str();
+  for (const char* blur : {"BallStreak(", "CueSweep(", "CueStickT("})
+    if (text.find(blur) != std::string::npos) return true;
+  return false;
+}
+
 /// One look's renders of the instants: CPU seconds for each.
 struct LookRun {
   bsim::Look look;
@@ -161,7 +171,7 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
   std::vector<bsim::FrameJob> jobs;
   for (double t : kLookInstants) jobs.push_back({static_cast<int>(std::lround(t * fps)), 0});
   int blurred = 0;
-  for (int k = 0; k < frames; ++k) blurred += bsim::blur_samples(shot, k, fps) > 1;
+  for (int k = 0; k < frames; ++k) blurred += blurred_frame(shot, k, fps);
   std::printf(
       "default break, final %dx%d, one POV-Ray process; %d frames: %d drawn once (%.0f%%), %d with motion blur "
       "(%.0f%%)\n",
@@ -172,9 +182,8 @@ int compare_looks(const bsim::Shot& shot, const std::string& povray, const std::
   std::printf("%-8s %-7s %-10s %14s %14s\n", "frame", "t (s)", "blur", "classic (s)", "photographic (s)");
   double sum[2] = {0, 0};
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    const int samples = bsim::blur_samples(shot, jobs[i].frame, fps);
     std::printf("%-8d %-7.2f %-10s %14.2f %14.2f\n", jobs[i].frame, jobs[i].frame / double(fps),
-                samples > 1 ? "blurred" : "none", runs[0].seconds[i], runs[1].seconds[i]);
+                blurred_frame(shot, jobs[i].frame, fps) ? "blurred" : "none", runs[0].seconds[i], runs[1].seconds[i]);
     sum[0] += runs[0].seconds[i];
     sum[1] += runs[1].seconds[i];
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "energy.h"
 #include "motion.h"
 #include "random_scenes.h"
 #include "resolve.h"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "energy.h"
 #include "group.h"
 #include "motion.h"
 #include "random_scenes.h"

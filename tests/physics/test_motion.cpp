@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "energy.h"
 #include "motion.h"
 #include "physics_print.h"
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "detect.h"
+#include "energy.h"
 #include "motion.h"
 #include "roots.h"
 #include "scene.h"
