@@ -324,28 +324,6 @@ std::vector<StickTravel> stick_travel(const std::vector<double>& along) {
   return pieces;
 }
 
-double stick_cover(double along, const std::vector<StickTravel>& pieces, double length) {
-  double cover = 0;
-  for (const StickTravel& piece : pieces) {
-    const double low = std::min(piece.from, piece.to),
-                 high = std::max(std::max(piece.from, piece.to), low + kStreakLeast);
-    cover += piece.share * std::max(0.0, std::min(high, along) - std::max(low, along - length)) / (high - low);
-  }
-  return std::clamp(cover, 0.0, 1.0);
-}
-
-double streak_cover(double along, double across, double length, double weight, double radius) {
-  const double half = std::sqrt(std::max(radius * radius - across * across, 0.0));
-  return std::clamp(weight * (std::min(along + half, length) - std::max(along - half, 0.0)), 0.0, 1.0);
-}
-
-int blur_samples(const Shot& shot, int frame, int fps) {
-  const FrameBlur blur = plan_blur(shot, frame_time(frame, fps), fps);
-  int most = blur.stick.travel.empty() ? blur.stick.copies : static_cast<int>(blur.stick.travel.size()) + 1;
-  for (int c : blur.ball_segments) most = std::max(most, c > 0 ? c + 1 : 1);
-  return most;
-}
-
 std::string frame_name(int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d", frame);

@@ -43,14 +43,6 @@ inline constexpr double kShutter = 0.5;
 /// still has its share of it.
 inline constexpr double kStreakLeast = 1e-4;
 
-/// What share of the open shutter a ball of `radius` covers the point of a streak's piece at
-/// (`along`, `across`) (m, in the picture, from the piece's start, along it and across it) when the
-/// piece is `length` long and weighted by `weight` (its share of the shutter's time over its length):
-/// weight times the length of the ball's centre line within the piece that lies within the ball's
-/// chord through the point. Integrated over the picture it is weight x length x pi radius^2: a
-/// streak's pieces together are one full ball. BallStreak in the shared include computes the same.
-double streak_cover(double along, double across, double length, double weight, double radius);
-
 /// Pixels the stick may move across its own axis while the shutter is open and still be drawn swept
 /// along it; beyond that it is drawn as copies.
 inline constexpr double kStickSidePixels = 1.0;
@@ -67,19 +59,7 @@ struct StickTravel {
 /// speed (within 3 %) joined into one.
 std::vector<StickTravel> stick_travel(const std::vector<double>& along);
 
-/// What share of the open shutter a stick `length` long that goes its way in `pieces` covers the
-/// point `along` m along its axis (as in StickTravel): for each piece, its share times the part of
-/// its way during which the point lies between the tip and the butt (the tip within [along - length,
-/// along]), a piece shorter than kStreakLeast taken as that long. CueSweep in the shared include
-/// computes the same.
-double stick_cover(double along, const std::vector<StickTravel>& pieces, double length);
-
 /// Writes frame `frame` of the shot, which shows t = frame / fps. Pocketed balls lie in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out);
-
-/// How many sub-frame instants frame `frame` builds its blur from: 1 when nothing in it moves more
-/// than kBlurPixels while the shutter is open (the frame is rendered once, as it is), else the most of
-/// its stick's copies or travel's ends and its balls' streak ends (2 for a straight streak).
-int blur_samples(const Shot& shot, int frame, int fps);
 
 }  // namespace bsim

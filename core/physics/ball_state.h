@@ -17,6 +17,12 @@ struct BallState {
   Vec3 spin{0, 0, 0};      ///< rad/s, angular velocity
   Quat orientation = Quat::Identity();
   Motion motion = Motion::stationary;
+
+  /// Every field the same (the orientation by its four coefficients, as Eigen's quaternion has no ==).
+  bool operator==(const BallState& o) const {
+    return position == o.position && velocity == o.velocity && spin == o.spin &&
+           orientation.coeffs() == o.orientation.coeffs() && motion == o.motion;
+  }
 };
 
 }  // namespace bsim

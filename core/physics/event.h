@@ -18,6 +18,7 @@ struct Contact {
   double time = 0;      ///< s, when the contact began (the group's instant plus its place in the phase)
   double speed = 0;     ///< m/s, the largest closing speed the contact reached
   Vec3 where{0, 0, 0};  ///< m, the contact point
+  bool operator==(const Contact&) const = default;
 };
 
 struct Event {
@@ -34,6 +35,7 @@ struct Event {
   /// group and `speed` being the largest contact speed.
   std::vector<Contact> contacts;
   bool grouped = false;  ///< ball-ball: resolved as a group collision (group.h), not as a pair alone
+  bool operator==(const Event&) const = default;
 };
 
 /// A ball dropping into a pocket: recorded, but not a numbered event (as in the seed).
@@ -41,6 +43,7 @@ struct PocketDrop {
   double time = 0;  ///< s, when the ball's centre crosses into the pocket
   int ball = 0;     ///< file-order index
   int pocket = 0;   ///< index into Scene::pockets
+  bool operator==(const PocketDrop&) const = default;
 };
 
 }  // namespace bsim

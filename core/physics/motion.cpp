@@ -283,9 +283,4 @@ std::vector<Quat> orientation_steps(const BallState& s, const PhysicsParams& par
   return steps;
 }
 
-double kinetic_energy(const BallState& s, const PhysicsParams& params) {
-  const double m = params.ball_mass, R = params.ball_radius;
-  return 0.5 * m * s.velocity.squaredNorm() + 0.5 * 0.4 * m * R * R * s.spin.squaredNorm();
-}
-
 }  // namespace bsim

@@ -62,7 +62,4 @@ Quat advance_orientation(const BallState& s, const PhysicsParams& params, double
 /// s, step of the orientation integration when the rotation axis turns (display only).
 inline constexpr double kOrientationStep = 1.0 / 60.0;
 
-/// J, kinetic energy (translation + rotation) of a solid ball.
-double kinetic_energy(const BallState& s, const PhysicsParams& params);
-
 }  // namespace bsim

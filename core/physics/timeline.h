@@ -17,6 +17,7 @@ struct MotionSegment {
   double t0 = 0;    ///< s
   BallState start;  ///< state at t0
   int pocket = -1;  ///< falling/pocketed: the pocket it drops into
+  bool operator==(const MotionSegment&) const = default;
 };
 
 class Timeline {
@@ -45,12 +46,11 @@ class Timeline {
     return segments_[static_cast<std::size_t>(ball)];
   }
   const PhysicsParams& physics() const { return physics_; }
-  /// This timeline answering every query by integrating from the segment's start, with nothing
-  /// saved: the same values to the bit, only slower (the reference for checks and benchmarks).
-  Timeline direct() const {
-    Timeline copy = *this;
-    copy.steps_.reset();
-    return copy;
+  /// The same shot: the same physics, pockets, segments, events and drops (the saved steps follow
+  /// from them).
+  bool operator==(const Timeline& o) const {
+    return physics_ == o.physics_ && pocket_centres_ == o.pocket_centres_ && pocket_radii_ == o.pocket_radii_ &&
+           segments_ == o.segments_ && events_ == o.events_ && drops_ == o.drops_;
   }
 
  private:

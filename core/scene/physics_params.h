@@ -26,6 +26,7 @@ struct PhysicsParams {
   double roll_decel() const { return mu_roll * g; }
   /// Angular deceleration of spin about the vertical axis, rad/s^2.
   double spin_decel() const { return 5.0 * mu_spin * g / (2.0 * ball_radius); }
+  bool operator==(const PhysicsParams&) const = default;
 };
 
 /// What a `param` name does to PhysicsParams; nullopt for an unknown name.

@@ -25,19 +25,6 @@ struct JawEnd {
 
 }  // namespace
 
-double PocketMouth::width_behind(double behind) const {
-  if (!jawed()) return 2 * drop_radius;
-  const Vec3 middle = (nose[0] + nose[1]) / 2;
-  double width = 0;
-  for (int i = 0; i < 2; ++i) {
-    // The facing's point `behind` along the axis, measured from the mouth's line.
-    const double run = (behind - (nose[i] - middle).dot(axis)) / facing[i].dot(axis);
-    const Vec3 p = nose[i] + run * facing[i];
-    width += std::abs((p - middle).dot(Vec3(-axis.y(), axis.x(), 0)));
-  }
-  return width;
-}
-
 bool PocketMouth::in_throat(const Vec3& p, double grow) const {
   const Vec3 q = flat(p);
   if ((q - throat_centre).norm() <= throat_radius + grow) return true;
@@ -47,10 +34,6 @@ bool PocketMouth::in_throat(const Vec3& p, double grow) const {
   for (int i = 0; i < 2; ++i)
     if ((q - nose[i]).dot(inward[i]) < -grow) return false;
   return true;
-}
-
-bool PocketMouth::in_hole(const Vec3& p, double grow) const {
-  return (flat(p) - centre).norm() <= drop_radius + grow || in_throat(p, grow);
 }
 
 PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {

@@ -214,13 +214,9 @@ struct PocketMouth {
   double turn() const { return radians(180 - facing_deg); }
   /// m between the jaws' nose ends (what the WPA calls the mouth).
   double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
-  /// m between the facings `behind` m behind the mouth, along the axis.
-  double width_behind(double behind) const;
   /// Whether plan point p (z ignored) lies in the opening the jaws and the throat leave, grown by `grow`
   /// m: between the facings behind the mouth, or in the round back.
   bool in_throat(const Vec3& p, double grow = 0) const;
-  /// Whether p lies in the throat or the drop circle (what the bed and the cup leave open), grown.
-  bool in_hole(const Vec3& p, double grow = 0) const;
 };
 
 /// How one end of a cushion is cut: square (no pocket) or along a jaw's facing.

@@ -25,10 +25,6 @@ std::array<Biquad, 2> k_weighting(int sample_rate);
 /// no block passes the absolute gate (silence, or shorter than one 400 ms block).
 std::optional<double> integrated_loudness(const AudioBuffer& audio);
 
-/// dBFS: the mean-square level of the quietest whole `window` seconds of `audio` (both channels),
-/// stepping by a quarter window; what "no digital silence" is checked with.
-double quietest_window_db(const AudioBuffer& audio, double window);
-
 /// Oversamples one channel 4x with a windowed-sinc interpolator and returns, for each input sample
 /// n, the largest magnitude among the input sample and the three interpolated points that follow it.
 std::vector<float> oversampled_peaks(const std::vector<float>& channel);

@@ -1,7 +1,7 @@
 // export_bench: where `billiards-export --events-only` spends its time on the built-in break, part by
 // part, beside a baseline run in the same process: the exporter as it was, every state integrated
-// from its segment's start (Timeline::direct()), the ball tracks' second pass over their samples, and
-// every trajectory.csv row formatted anew.
+// from its segment's start (test::DirectStates), the ball tracks' second pass over their samples, and
+// every trajectory.csv row formatted anew. Both build the camera script from the same timeline.
 //   export_bench [--fps N] [--runs N]
 #include <algorithm>
 #include <chrono>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "builtin_scene.h"
+#include "direct_states.h"
 #include "frames.h"
 #include "number_format.h"
 #include "outputs.h"
@@ -36,7 +37,8 @@ double median_ms(int runs, F&& f) {
 }
 
 /// trajectory.csv as the exporter wrote it before: every number of every row formatted on its own.
-void write_trajectory_baseline(const bsim::Timeline& timeline, int fps, std::ostream& out) {
+void write_trajectory_baseline(const bsim::Timeline& timeline, const bsim::test::DirectStates& states, int fps,
+                               std::ostream& out) {
   out << "time,ball,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,state\n";
   const int frames = bsim::frame_count(timeline.duration(), fps);
   std::string row;
@@ -44,7 +46,7 @@ void write_trajectory_baseline(const bsim::Timeline& timeline, int fps, std::ost
     const double t = bsim::frame_time(k, fps);
     const std::string time = bsim::format_number(t);
     for (int i = 0; i < timeline.ball_count(); ++i) {
-      const bsim::BallState s = timeline.state(i, t);
+      const bsim::BallState s = states.state(i, t);
       const bsim::Quat& q = s.orientation;
       row = time + ',' + std::to_string(i);
       for (double v : {s.position.x(), s.position.y(), s.position.z(), s.velocity.x(), s.velocity.y(), s.velocity.z(),
@@ -61,13 +63,14 @@ void write_trajectory_baseline(const bsim::Timeline& timeline, int fps, std::ost
 /// The second pass the camera's ball tracks made before: the position at every 2 ms sample of the
 /// path, each from the timeline again (a pocketed ball's from its fall's entry up to where it drops
 /// from sight).
-double track_second_pass(const bsim::Timeline& timeline, const std::vector<std::pair<int, double>>& tracks) {
+double track_second_pass(const bsim::Timeline& timeline, const bsim::test::DirectStates& states,
+                         const std::vector<std::pair<int, double>>& tracks) {
   double sum = 0;
   const double step = 1.0 / 500.0, duration = timeline.duration();
   const int samples = static_cast<int>(std::ceil(duration / step)) + 1;
   for (const auto& [ball, hidden] : tracks)
     for (int i = 0; i < samples; ++i)
-      sum += timeline.motion_state(ball, std::min(std::min(i * step, duration), hidden)).position.x();
+      sum += states.motion_state(ball, std::min(std::min(i * step, duration), hidden)).position.x();
   return sum;
 }
 
@@ -99,7 +102,8 @@ int main(int argc, char** argv) {
   bsim::Shot now, baseline;
   now.scene = baseline.scene = shot.scene;
   now.timeline = shot.timeline;
-  baseline.timeline = shot.timeline.direct();
+  baseline.timeline = shot.timeline;
+  const bsim::test::DirectStates direct(shot.scene, shot.timeline);
 
   // The balls the camera watches, and when each drops from sight.
   std::vector<std::pair<int, double>> tracks;
@@ -122,7 +126,7 @@ int main(int argc, char** argv) {
   });
   const double camera_base = median_ms(runs, [&] {
     baseline.camera = bsim::CameraScript::build(baseline.scene, baseline.timeline, diagnostics);
-    sink = sink + track_second_pass(baseline.timeline, tracks);
+    sink = sink + track_second_pass(baseline.timeline, direct, tracks);
     out.str("");
     bsim::write_camera_csv(baseline, fps, out);
     base_camera = out.str();
@@ -134,7 +138,7 @@ int main(int argc, char** argv) {
   });
   const double trajectory_base = median_ms(runs, [&] {
     out.str("");
-    write_trajectory_baseline(baseline.timeline, fps, out);
+    write_trajectory_baseline(baseline.timeline, direct, fps, out);
     base_trajectory = out.str();
   });
 

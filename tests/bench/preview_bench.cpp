@@ -81,6 +81,34 @@ std::string load_average() {
   return buffer;
 }
 
+/// The snapshot process at `at` seconds, `runs` times after one untimed run (files into the page
+/// cache): prints the timings; false when a run fails.
+bool time_snapshots(const std::string& preview, const char* at, int runs, const std::filesystem::path& dir,
+                    const std::string& log) {
+  std::vector<double> wall, cpu;
+  bool ok = true;
+  const std::string png = (dir / "snapshot.png").string();
+  run({preview, "--at", at, "--size", "1280x720", "-o", png}, log);
+  for (int k = 0; k < runs; ++k) {
+    const Run r = run({preview, "--at", at, "--size", "1280x720", "-o", png}, log);
+    if (r.status != 0) {
+      std::fprintf(stderr, "bench_preview: billiards-preview --at %s failed (status %d):\n%s", at, r.status,
+                   bsim::test::read_file(log).value_or("").c_str());
+      ok = false;
+      break;
+    }
+    wall.push_back(r.wall);
+    cpu.push_back(r.cpu);
+  }
+  if (!wall.empty())
+    std::printf(
+        "snapshot process (--at %s -o FILE.png, %zu runs): wall median %.3f s, min %.3f s, max %.3f s; "
+        "CPU median %.3f s\n",
+        at, wall.size(), median(wall), *std::min_element(wall.begin(), wall.end()),
+        *std::max_element(wall.begin(), wall.end()), median(cpu));
+  return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,27 +153,7 @@ int main(int argc, char** argv) {
   std::printf("billiards-preview on the built-in break (%.2f s, %zu events), 1280x720; load average %s\n", duration,
               shot.shot->timeline.events().size(), load_average().c_str());
 
-  int status = 0;
-  std::vector<double> wall, cpu;
-  const std::string png = (dir / "snapshot.png").string();
-  run({preview, "--at", at, "--size", "1280x720", "-o", png}, log);  // once untimed: files into the page cache
-  for (int k = 0; k < runs; ++k) {
-    const Run r = run({preview, "--at", at, "--size", "1280x720", "-o", png}, log);
-    if (r.status != 0) {
-      std::fprintf(stderr, "bench_preview: billiards-preview --at %s failed (status %d):\n%s", at, r.status,
-                   bsim::test::read_file(log).value_or("").c_str());
-      status = 1;
-      break;
-    }
-    wall.push_back(r.wall);
-    cpu.push_back(r.cpu);
-  }
-  if (!wall.empty())
-    std::printf(
-        "snapshot process (--at %s -o FILE.png, %zu runs): wall median %.3f s, min %.3f s, max %.3f s; "
-        "CPU median %.3f s\n",
-        at, wall.size(), median(wall), *std::min_element(wall.begin(), wall.end()),
-        *std::max_element(wall.begin(), wall.end()), median(cpu));
+  int status = time_snapshots(preview, at, runs, dir, log) ? 0 : 1;
 
   if (movie) {
     const Run r = run({preview, "--movie", (dir / "break.mp4").string()}, log);

@@ -88,6 +88,21 @@ void print_shares(double load_time, double write_time, double encode_time, const
       speedup, machine, 100 * speedup / machine);
 }
 
+/// What this machine gives two processes: three frames one after another, then six neighbouring
+/// frames (so as much work apiece) two at a time. The speed-up of the pair.
+double machine_speedup(const std::string& frames_dir, int frames, bsim::RenderSettings settings) {
+  std::vector<bsim::FrameJob> three, six;
+  for (int k = 0; k < 6; ++k) {
+    if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
+    six.push_back({frames / 2 + k, 0});
+  }
+  settings.processes = 1;
+  const RenderTiming alone = render(frames_dir, three, settings);
+  settings.processes = 2;
+  const RenderTiming pair = render(frames_dir, six, settings);
+  return 2 * alone.wall / pair.wall;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -132,19 +147,8 @@ int main(int argc, char** argv) {
               frames, options.fps, jobs.size());
   std::fflush(stdout);
 
-  // What this machine gives two processes: three frames one after another, then six neighbouring
-  // frames (so as much work apiece) two at a time.
   bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 1, ""};
-  std::vector<bsim::FrameJob> three, six;
-  for (int k = 0; k < 6; ++k) {
-    if (k % 2 == 0) three.push_back({frames / 2 + k, 0});
-    six.push_back({frames / 2 + k, 0});
-  }
-  const RenderTiming alone = render(frames_dir, three, settings);
-  settings.processes = 2;
-  const RenderTiming pair = render(frames_dir, six, settings);
-  const double machine = 2 * alone.wall / pair.wall;
-
+  const double machine = machine_speedup(frames_dir, frames, settings);
   settings.processes = 1;
   const RenderTiming one = render(frames_dir, jobs, settings);
   std::printf("POV-Ray, --jobs 1: %.1f s (%.2f s a frame)\n", one.wall, one.wall / static_cast<double>(jobs.size()));

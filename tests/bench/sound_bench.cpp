@@ -24,6 +24,7 @@
 #include "rolling.h"
 #include "room.h"
 #include "shot.h"
+#include "sound_meter.h"
 #include "sound_mix.h"
 #include "sound_synth.h"
 #include "soundtrack.h"
@@ -275,7 +276,7 @@ void break_figures() {
   mix_soundtrack(source, {.lead = 0.005, .music_path = {}, .loudness = kDefaultLoudness}, n, track, error);
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   std::printf("finished: %.2f LUFS (target %.0f), true peak %.2f dBTP, quietest 100 ms %.1f dBFS, made in %.0f ms\n\n",
-              loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), quietest_window_db(track, 0.1), ms);
+              loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), test::quietest_window_db(track, 0.1), ms);
 }
 
 }  // namespace

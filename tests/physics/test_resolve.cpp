@@ -4,9 +4,10 @@
 
 #include <cmath>
 
-#include "bench/physics_print.h"
-#include "bench/random_scenes.h"
+#include "energy.h"
 #include "motion.h"
+#include "physics_print.h"
+#include "random_scenes.h"
 #include "resolve.h"
 #include "scene.h"
 #include "tolerance.h"

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "bench/random_scenes.h"
 #include "builtin_scene.h"
 #include "camera_clearance.h"
 #include "camera_key_text.h"
 #include "director.h"
 #include "files.h"
+#include "random_scenes.h"
 #include "scene_parse.h"
 #include "shot.h"
 #include "support.h"

@@ -19,6 +19,7 @@
 #include "shot.h"
 #include "shots.h"
 #include "simulate.h"
+#include "sound_meter.h"
 #include "sound_mix.h"
 #include "sound_synth.h"
 #include "soundtrack.h"
@@ -283,7 +284,7 @@ TEST_SUITE("sound") {
       REQUIRE(integrated_loudness(audio).has_value());
       CHECK(std::abs(*integrated_loudness(audio) - target) < 1.0);
       CHECK(to_db(true_peak(audio)) < -1.0);
-      CHECK(quietest_window_db(audio, 0.1) > -70.0);
+      CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
 
       const std::string path = (dir.path / "track.wav").string();
       REQUIRE(write_wav(path, audio, error));
@@ -332,7 +333,7 @@ TEST_SUITE("sound") {
     REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
                            {.lead = 0.005, .music_path = {}, .loudness = std::nullopt}, samples, audio, error));
     CHECK(to_db(true_peak(audio)) <= kTruePeakCeilingDb + 0.01);
-    CHECK(quietest_window_db(audio, 0.1) > -70.0);
+    CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
   }
 
   TEST_CASE("the room: its tone is continuous at its level, its reverberation short and the same every time") {
@@ -341,7 +342,7 @@ TEST_SUITE("sound") {
     for (std::size_t i = 0; i < tone.left.size(); ++i)
       sum += 0.5 * (tone.left[i] * tone.left[i] + tone.right[i] * tone.right[i]);
     CHECK(10 * std::log10(sum / kSampleRate) == doctest::Approx(kRoomToneDb).epsilon(0.001));
-    CHECK(quietest_window_db(tone, 0.1) > kRoomToneDb - 3);
+    CHECK(test::quietest_window_db(tone, 0.1) > kRoomToneDb - 3);
     CHECK(room_tone(1000, 3).left == room_tone(1000, 3).left);
 
     std::vector<float> send(kSampleRate, 0.0f);

@@ -8,11 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "bench/random_scenes.h"
 #include "fixtures.h"
 #include "frames.h"
 #include "number_format.h"
 #include "outputs.h"
+#include "random_scenes.h"
 #include "shot.h"
 #include "support.h"
 

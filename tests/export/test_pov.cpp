@@ -26,9 +26,12 @@
 #include "pov_table.h"
 #include "shot.h"
 #include "shots.h"
+#include "shutter_cover.h"
 #include "support.h"
 
 using namespace bsim;
+using bsim::test::stick_cover;
+using bsim::test::streak_cover;
 namespace fs = std::filesystem;
 
 namespace {
@@ -196,12 +199,10 @@ TEST_SUITE("pov") {
   TEST_CASE("a fast ball is drawn as its streak over the shutter, a still frame once") {
     const auto shot = load(kTinyScene);
     // Before the strike nothing moves: every ball once, no streak.
-    CHECK(blur_samples(*shot, 0, 30) == 1);
     CHECK(frame_text(*shot, 0).find("BallStreak") == std::string::npos);
     // Just after it the cue ball runs at 1.2 m/s: many pixels while the shutter is open, in a straight
     // line, so one capsule as long as the way the ball goes in half a frame.
     const int after = static_cast<int>(std::ceil(shot->timeline.cue_time() * 30)) + 1;
-    CHECK(blur_samples(*shot, after, 30) >= 2);
     const std::string text = frame_text(*shot, after);
     CHECK(text.find("BallShadow") != std::string::npos);
     const std::size_t streak = text.find("object { BallStreak(0, ");
@@ -251,7 +252,6 @@ TEST_SUITE("pov") {
     CHECK(text.find("object { CueShadow matrix <") != std::string::npos);
     CHECK(text.find("// blurred: swept along its axis") != std::string::npos);
     CHECK(text.find("CueStickT") == std::string::npos);  // no copies
-    CHECK(blur_samples(*shot, swept, 30) >= 2);
   }
 
   TEST_CASE("a stick swung across the picture is drawn as copies that cast no shadow, and one unseen stick does") {
@@ -381,6 +381,48 @@ TEST_SUITE("pov") {
     }
     CHECK(i == xs.size());
     CHECK(fading > 20);  // the probes lie along both ends' fades
+  }
+
+  TEST_CASE("POV-Ray's StreakCover of a ball's streak is the C++ streak_cover") {
+    test::require_program("povray");
+    const auto shot = load(kTinyScene);
+    const double r = shot->scene.physics.ball_radius;
+    // Points along and across short, middling and long pieces, inside the ball's chord and beyond,
+    // and a piece of no length (a ball at rest for a quarter of the shutter); as the frame writes
+    // numbers (to the micrometre).
+    std::vector<std::vector<double>> probes;  // along, across, length, weight
+    for (double length : {0.002, 0.03, 0.3})
+      for (int i = 0; i <= 12; ++i)
+        for (double across : {0.0, 0.5 * r, 0.9 * r, 1.1 * r})
+          probes.push_back({-r + (length + 2 * r) * i / 12, across, length, 1 / length});
+    probes.push_back({0.0, 0.0, kStreakLeast, 0.25 / kStreakLeast});
+    for (std::vector<double>& p : probes)
+      for (double& x : p) x = std::stod(pov_number(x));
+    test::TempDir dir;
+    std::ostringstream include;
+    write_pov_include(shot->scene, Quality::draft, include);
+    REQUIRE(test::write_file(dir.path / std::string(kPovIncludeName), include.str()));
+    std::string probe = "#version 3.7;\n#include \"" + std::string(kPovIncludeName) + "\"\n";
+    for (const std::vector<double>& p : probes)
+      probe += "#debug concat(\"cover \", str(StreakCover(" + pov_number(p[0]) + ", " + pov_number(p[1]) + ", " +
+               pov_number(p[2]) + ", " + pov_number(p[3]) + "), 0, 9), \"\\n\")\n";
+    REQUIRE(test::write_file(dir.path / "probe.pov", probe));
+    const test::CommandResult result =
+        test::run_command("cd '" + dir.path.string() + "' && povray -D +FN +WT1 +Iprobe.pov +Oprobe.png +W1 +H1");
+    REQUIRE_MESSAGE(result.exit_code == 0, result.err);
+    std::istringstream lines(result.err);
+    std::size_t i = 0, partly = 0;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("cover ", 0) != 0) continue;
+      REQUIRE(i < probes.size());
+      const std::vector<double>& p = probes[i];
+      const double expected = test::streak_cover(p[0], p[1], p[2], p[3], r);
+      CHECK(std::stod(line.substr(6)) == doctest::Approx(expected).epsilon(1e-6));
+      partly += expected > 0.01 && expected < 0.99;
+      ++i;
+    }
+    CHECK(i == probes.size());
+    CHECK(partly > 20);  // the probes lie where the streak lets some through
   }
 
   TEST_CASE("two renders of one frame are the same picture") {

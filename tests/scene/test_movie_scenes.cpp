@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "builtin_scene.h"
+#include "energy.h"
 #include "files.h"
 #include "motion.h"
 #include "shot.h"

@@ -6,8 +6,9 @@
 
 #include <cmath>
 
-#include "bench/random_scenes.h"
+#include "energy.h"
 #include "motion.h"
+#include "random_scenes.h"
 #include "resolve.h"
 #include "scene.h"
 #include "tolerance.h"

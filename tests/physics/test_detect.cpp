@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "bench/physics_print.h"
 #include "detect.h"
+#include "physics_print.h"
 #include "scene.h"
 
 using namespace bsim;

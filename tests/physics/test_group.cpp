@@ -7,9 +7,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "bench/random_scenes.h"
+#include "energy.h"
 #include "group.h"
 #include "motion.h"
+#include "random_scenes.h"
 #include "resolve.h"
 #include "shot.h"
 #include "shots.h"

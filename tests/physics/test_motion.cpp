@@ -4,8 +4,9 @@
 
 #include <cmath>
 
-#include "bench/physics_print.h"
+#include "energy.h"
 #include "motion.h"
+#include "physics_print.h"
 
 using namespace bsim;
 
