@@ -112,7 +112,6 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const std::v
   if (!balls_ok || !events_ok) return std::nullopt;
 
   CameraScript script;
-  script.scene_ = &scene;
   script.timeline_ = &timeline;
   script.shots_ = shots;
   std::vector<double> times;

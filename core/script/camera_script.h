@@ -58,7 +58,6 @@ class CameraScript {
  private:
   CameraPose interpolate(const CameraWindow& window, double t) const;
 
-  const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
   std::vector<CameraShot> shots_;
   std::vector<CameraSegment> segments_;

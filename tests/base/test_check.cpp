@@ -62,7 +62,8 @@ TEST_SUITE("check") {
     CHECK(kept.message.empty());
     const Stopped broken = run_child([] { BSIM_EXPECT(1 + 1 == 3, "arithmetic"); });
     CHECK(broken.aborted);
-    CHECK(broken.message.find("test_check.cpp:") != std::string::npos);
+    CHECK(broken.message.find("tests/base/test_check.cpp:") != std::string::npos);
+    CHECK(broken.message.front() != '/');  // the path in the tree, not where it was built
     CHECK(broken.message.find(": internal error: arithmetic (expected: 1 + 1 == 3)") != std::string::npos);
   }
 
