@@ -19,7 +19,7 @@ inline constexpr double kMusicUnderEffects = 12.0;
 struct SoundOptions {
   double lead = 0.0;       ///< s, sounds play this much before their event (default chosen in export)
   std::string music_path;  ///< optional music bed (any format libsndfile reads); empty for none
-  std::optional<double> loudness = kDefaultLoudness;  ///< LUFS of the finished track; none: not normalised
+  SoundLevel level;        ///< how the finished track's level is set (default: calibrated)
 };
 
 /// Mixes the effects (and music) into exactly `sample_count` samples per channel.

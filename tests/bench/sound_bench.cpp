@@ -273,10 +273,12 @@ void break_figures() {
   AudioBuffer track;
   std::string error;
   const auto t0 = Clock::now();
-  mix_soundtrack(source, {.lead = 0.005, .music_path = {}, .loudness = kDefaultLoudness}, n, track, error);
+  mix_soundtrack(source, {.lead = 0.005, .music_path = {}, .level = {}}, n, track, error);
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  std::printf("finished: %.2f LUFS (target %.0f), true peak %.2f dBTP, quietest 100 ms %.1f dBFS, made in %.0f ms\n\n",
-              loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), test::quietest_window_db(track, 0.1), ms);
+  std::printf(
+      "finished: %.2f LUFS (calibrated: the break at %.0f), true peak %.2f dBTP, quietest 100 ms %.1f dBFS, made in "
+      "%.0f ms\n\n",
+      loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), test::quietest_window_db(track, 0.1), ms);
 }
 
 }  // namespace

@@ -176,8 +176,8 @@ TEST_SUITE("sound") {
     const double lead = 0.005;
     AudioBuffer audio;
     std::string error;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, audio, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {.lead = lead, .music_path = {}, .level = {}},
+                           samples, audio, error));
     CHECK(audio.left.size() == samples);
     CHECK(audio.right.size() == samples);
 
@@ -202,8 +202,8 @@ TEST_SUITE("sound") {
     CHECK(rail_seen);
 
     AudioBuffer again;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, again, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {.lead = lead, .music_path = {}, .level = {}},
+                           samples, again, error));
     CHECK(again.left == audio.left);
     CHECK(again.right == audio.right);
   }
@@ -279,8 +279,10 @@ TEST_SUITE("sound") {
       CAPTURE(target);
       AudioBuffer audio;
       std::string error;
-      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                             {.lead = 0.005, .music_path = {}, .loudness = target}, samples, audio, error));
+      REQUIRE(mix_soundtrack(
+          {shot->scene, shot->timeline, *shot->camera},
+          {.lead = 0.005, .music_path = {}, .level = {.mode = LevelMode::normalised, .loudness = target}}, samples,
+          audio, error));
       REQUIRE(integrated_loudness(audio).has_value());
       CHECK(std::abs(*integrated_loudness(audio) - target) < 1.0);
       CHECK(to_db(true_peak(audio)) < -1.0);
@@ -312,8 +314,8 @@ TEST_SUITE("sound") {
     AudioBuffer audio;
     std::string error;
     const double lead = 0.005;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, audio, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {.lead = lead, .music_path = {}, .level = {}},
+                           samples, audio, error));
     int hits = 0;
     for (const Event& e : shot->timeline.events()) {
       if (e.type != EventType::cue && e.type != EventType::ball_ball && e.type != EventType::ball_rail) continue;
@@ -331,7 +333,8 @@ TEST_SUITE("sound") {
     AudioBuffer audio;
     std::string error;
     REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = 0.005, .music_path = {}, .loudness = std::nullopt}, samples, audio, error));
+                           {.lead = 0.005, .music_path = {}, .level = {.mode = LevelMode::off}}, samples, audio,
+                           error));
     CHECK(to_db(true_peak(audio)) <= kTruePeakCeilingDb + 0.01);
     CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
   }
@@ -410,15 +413,17 @@ TEST_SUITE("sound") {
     CHECK_FALSE(load_music_bed((dir.path / "none.ogg").string(), 100, music, error));
     CHECK(error.find("none.ogg") != std::string::npos);
 
-    // Under the effects of a shot: the track still comes to its loudness, and it is the same bytes
-    // every time it is made.
+    // Under the effects of a shot: the track still comes to the loudness asked for, and it is the
+    // same bytes every time it is made.
     const auto shot = test::load_clean(kScene, "sound");
     const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
     std::string bytes[2];
     for (int k = 0; k < 2; ++k) {
       AudioBuffer track;
-      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                             {.lead = 0.005, .music_path = path, .loudness = kDefaultLoudness}, samples, track, error));
+      REQUIRE(mix_soundtrack(
+          {shot->scene, shot->timeline, *shot->camera},
+          {.lead = 0.005, .music_path = path, .level = {.mode = LevelMode::normalised, .loudness = kDefaultLoudness}},
+          samples, track, error));
       REQUIRE(integrated_loudness(track).has_value());
       CHECK(std::abs(*integrated_loudness(track) - kDefaultLoudness) < 1.0);
       const std::string wav = (dir.path / ("track" + std::to_string(k) + ".wav")).string();
