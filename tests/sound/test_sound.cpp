@@ -79,26 +79,47 @@ std::uint32_t le32(const std::string& bytes, std::size_t at) {
 }  // namespace
 
 TEST_SUITE("sound") {
-  TEST_CASE("a Hertz contact is shorter the faster the balls meet (about 460, 350, 290 us at 0.5, 2, 5 m/s)") {
+  TEST_CASE("a Hertz contact is shorter the faster the balls meet (about 450, 340, 280 us at 0.5, 2, 5 m/s)") {
     const PhysicsParams physics;
-    CHECK(click_contact_time(physics, 0.5) == doctest::Approx(461e-6).epsilon(0.03));
-    CHECK(click_contact_time(physics, 2.0) == doctest::Approx(349e-6).epsilon(0.03));
-    CHECK(click_contact_time(physics, 5.0) == doctest::Approx(291e-6).epsilon(0.03));
+    CHECK(click_contact_time(physics, 0.5) == doctest::Approx(448e-6).scale(0).epsilon(0.01));
+    CHECK(click_contact_time(physics, 2.0) == doctest::Approx(340e-6).scale(0).epsilon(0.01));
+    CHECK(click_contact_time(physics, 5.0) == doctest::Approx(283e-6).scale(0).epsilon(0.01));
   }
 
-  TEST_CASE("the click's contact time is the physics' Hertz contact, for the sound's own ball material") {
-    const PhysicsParams physics;
+  TEST_CASE("the click is the physics' one Hertz contact: the scene's k_hertz and ball set its length and colour") {
+    PhysicsParams physics;
     // k_hertz's default is the stiffness of its documented material (E = 5.84 GPa, nu = 0.34).
     CHECK(hertz_stiffness(5.84e9, 0.34, physics.ball_radius) == doctest::Approx(physics.k_hertz).epsilon(0.001));
-    // The sound's material (E = 5.4 GPa, nu = 0.35) as the scene's k_hertz: the same contact time but for
-    // the sound's time factor, 2.87 where the physics' is 2.868.
-    PhysicsParams sound_material = physics;
-    sound_material.k_hertz = hertz_stiffness(5.4e9, 0.35, physics.ball_radius);
-    const double rounding = 2.87 / (kHertzTimeFactor * std::pow(15.0 / 16.0, 0.4));
-    CHECK(rounding == doctest::Approx(1.0).epsilon(0.001));
     for (double speed : {0.5, 2.0, 5.0})
-      CHECK(click_contact_time(physics, speed) ==
-            doctest::Approx(hertz_contact_time(speed, sound_material) * rounding).epsilon(1e-12));
+      CHECK(click_contact_time(physics, speed) == hertz_contact_time(speed, physics));
+    // A ball of a four times stiffer material: a shorter contact (4^-0.4), and a brighter click, its
+    // RMS frequency (from the energy of its slope) higher and its ring after 2 ms weaker.
+    PhysicsParams stiff = physics;
+    stiff.k_hertz *= 4;
+    CHECK(click_contact_time(stiff, 2.0) == doctest::Approx(click_contact_time(physics, 2.0) * std::pow(4.0, -0.4)));
+    auto rms_frequency = [](const std::vector<float>& wave) {
+      double slope = 0, level = 0;
+      for (std::size_t i = 1; i < wave.size(); ++i) {
+        slope += (wave[i] - wave[i - 1]) * (wave[i] - wave[i - 1]);
+        level += wave[i] * wave[i];
+      }
+      return kSampleRate / (2 * 3.141592653589793) * std::sqrt(slope / level);
+    };
+    auto ring = [](const std::vector<float>& wave) {
+      double e = 0;
+      for (std::size_t i = sample_at(0.002); i < wave.size(); ++i) e += wave[i] * wave[i];
+      return e;
+    };
+    const std::vector<float> soft = synth_impact(SoundKind::ball_ball, 2.0, 7, physics, kSampleRate);
+    const std::vector<float> hard = synth_impact(SoundKind::ball_ball, 2.0, 7, stiff, kSampleRate);
+    CAPTURE(rms_frequency(soft));
+    CAPTURE(rms_frequency(hard));
+    CHECK(rms_frequency(hard) > 1.1 * rms_frequency(soft));
+    CHECK(ring(hard) < 0.7 * ring(soft));
+    // A heavier ball of the same material presses longer: a longer click.
+    PhysicsParams heavy = physics;
+    heavy.ball_mass *= 2;
+    CHECK(click_contact_time(heavy, 2.0) > 1.2 * click_contact_time(physics, 2.0));
   }
 
   TEST_CASE("every kind of sound gets louder with speed, and its peak is its gain") {
