@@ -1,13 +1,15 @@
 // The sound track: each sound starts at its event, louder for faster hits, on the side of the
 // picture where it happens; the rolling heard while a ball rolls and not after; a room under it all;
-// brought to its loudness with the true peak under -1 dBTP (by our meter and by ffmpeg's); exactly
-// as long as the shot, the same bytes every time.
+// one calibrated level for every shot (the break at -16 LUFS, a softer hit never above a harder one,
+// a soft shot well under the break), or on request brought to a loudness, the true peak under
+// -1 dBTP (by our meter and by ffmpeg's); exactly as long as the shot, the same bytes every time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
+#include "builtin_scene.h"
 #include "fixtures.h"
 #include "hertz.h"
 #include "loudness.h"
@@ -74,6 +76,31 @@ std::uint32_t le32(const std::string& bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (int k = 3; k >= 0; --k) v = v << 8 | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
   return v;
+}
+
+/// A two-ball shot under the hover camera: the cue ball from (-0.4, 0) at `speed` m/s along +x
+/// into a ball at (0, `offset`) (0 head-on; towards 2R a thin cut).
+std::string two_balls(double speed, double offset) {
+  return "cue 0 0\nball 0 -0.4 0 0.028575  " + std::to_string(speed) + " 0 0  1 0 0 0\nball 1 0.0 " +
+         std::to_string(offset) + " 0.028575  0 0 0  1 0 0 0\n" + test::fixtures::kHoverCamera;
+}
+
+/// The finished track of a shot, with no lead (each sound starts at its event), at `level`.
+AudioBuffer track_of(const Shot& shot, const SoundLevel& level = {}, double lead = 0) {
+  const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
+  AudioBuffer audio;
+  std::string error;
+  REQUIRE(mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = lead, .music_path = {}, .level = level},
+                         samples, audio, error));
+  return audio;
+}
+
+/// The highest peak on `audio` within 5 ms of the start of each event of type `type`.
+double hit_peak(const Shot& shot, const AudioBuffer& audio, EventType type) {
+  double p = 0;
+  for (const Event& e : shot.timeline.events())
+    if (e.type == type) p = std::max(p, peak(audio, e.time, e.time + 0.005));
+  return p;
 }
 
 }  // namespace
@@ -324,6 +351,49 @@ TEST_SUITE("sound") {
       CHECK(std::abs(ffmpeg_loudness - target) < 1.0);
       CHECK(ffmpeg_peak < -1.0);
     }
+  }
+
+  TEST_CASE("at the calibrated level the built-in break measures -16 LUFS, its true peak under -1 dBTP") {
+    const auto shot = test::load_clean(builtin_scene_text(), "break");
+    const AudioBuffer audio = track_of(*shot, {}, 0.005);
+    REQUIRE(integrated_loudness(audio).has_value());
+    CHECK(*integrated_loudness(audio) == doctest::Approx(kDefaultLoudness).scale(0).epsilon(0.5 / 16));
+    CHECK(to_db(true_peak(audio)) < -1.0);
+  }
+
+  TEST_CASE("at the calibrated level a softer hit never peaks above a harder one of its kind, across shots") {
+    // The cue and the click at 0.5 and at 3 m/s.
+    const auto slow = test::load_clean(two_balls(0.5, 0), "slow"), fast = test::load_clean(two_balls(3.0, 0), "fast");
+    const AudioBuffer slow_track = track_of(*slow), fast_track = track_of(*fast);
+    for (EventType type : {EventType::cue, EventType::ball_ball}) {
+      CAPTURE(static_cast<int>(type));
+      const double soft = hit_peak(*slow, slow_track, type), hard = hit_peak(*fast, fast_track, type);
+      REQUIRE(soft > 0);
+      CHECK(soft < hard);
+    }
+    // Head-on and a thin cut (about 70 degrees) at one cue speed: the cut's click is the softer one.
+    const auto head = test::load_clean(two_balls(1.5, 0), "head"),
+               thin = test::load_clean(two_balls(1.5, 0.054), "cut");
+    const AudioBuffer head_track = track_of(*head), thin_track = track_of(*thin);
+    CHECK(hit_peak(*thin, thin_track, EventType::ball_ball) < hit_peak(*head, head_track, EventType::ball_ball));
+  }
+
+  TEST_CASE("at the calibrated level a soft two-ball tap is at least 8 LU under the break, over the same room") {
+    // The tap: the cue ball at 0.8 m/s from (-0.6, 0) into a ball at (0.2, 0.01).
+    const auto tap = test::load_clean(std::string("cue 0 0\n"
+                                                  "ball 0 -0.6 0 0.028575  0.8 0 0  1 0 0 0\n"
+                                                  "ball 1 0.2 0.01 0.028575  0 0 0  1 0 0 0\n") +
+                                          test::fixtures::kHoverCamera,
+                                      "tap");
+    const auto brk = test::load_clean(builtin_scene_text(), "break");
+    const AudioBuffer tap_track = track_of(*tap), break_track = track_of(*brk);
+    REQUIRE(integrated_loudness(tap_track).has_value());
+    REQUIRE(integrated_loudness(break_track).has_value());
+    CHECK(*integrated_loudness(tap_track) <= *integrated_loudness(break_track) - 8.0);
+    // The room tone is the same in both: their quietest 100 ms (the room alone) agree, at the tone's level.
+    const double tap_room = test::quietest_window_db(tap_track, 0.1);
+    CHECK(tap_room == doctest::Approx(test::quietest_window_db(break_track, 0.1)).scale(0).epsilon(0.25 / 55));
+    CHECK(std::abs(tap_room - kRoomToneDb) < 3.0);
   }
 
   TEST_CASE("at the target loudness every contact still stands out of the rumble and the room before it") {
