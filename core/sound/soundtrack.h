@@ -1,7 +1,7 @@
 #pragma once
 // The sound track: the impacts (sound_mix.h) and the rolling (rolling.h) heard from the camera, the
-// room's reverberation and tone (room.h), optionally a music bed under them, brought to a loudness
-// with its true peak limited (mastering.h).
+// room's reverberation and tone (room.h), optionally a music bed under them, at one calibrated level
+// for every shot or brought to a loudness, its true peak kept under a ceiling (mastering.h).
 #include <cstddef>
 #include <optional>
 #include <string>

@@ -265,11 +265,11 @@ void break_figures() {
   mix_rolling(source, rolling, &send);
   add_reverb(send, reverb);
   const AudioBuffer tone = room_tone(n, 1);
-  std::printf("the built-in break's sound track (%.1f s), before the loudness stage:\n", shot.timeline.duration());
+  std::printf("the built-in break's sound track (%.1f s), before the level stage:\n", shot.timeline.duration());
   std::printf("  impacts   %6.1f LUFS  true peak %6.1f dBTP\n", loudness_of(impacts), to_db(true_peak(impacts)));
   std::printf("  rolling   %6.1f LUFS  true peak %6.1f dBTP\n", loudness_of(rolling), to_db(true_peak(rolling)));
   std::printf("  reverb    %6.1f LUFS\n", loudness_of(reverb));
-  std::printf("  room tone %6.1f LUFS  (fixed, after the loudness stage)\n", loudness_of(tone));
+  std::printf("  room tone %6.1f LUFS  (fixed, after the level stage)\n", loudness_of(tone));
   AudioBuffer track;
   std::string error;
   const auto t0 = Clock::now();
