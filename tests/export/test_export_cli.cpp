@@ -9,6 +9,7 @@
 #include "export_options.h"
 #include "fixtures.h"
 #include "mastering.h"
+#include "run_summary.h"
 #include "support.h"
 
 using namespace bsim;
@@ -122,6 +123,25 @@ TEST_SUITE("export command line") {
     REQUIRE(parse({"--help"}, o, message) == CommandLineOutcome::exit_success);
     CHECK(message.find("--loudness LUFS|off") != std::string::npos);
     CHECK(message.find("(default: one calibrated level for every shot") != std::string::npos);
+  }
+
+  TEST_CASE("run.json says which sound level was used") {
+    test::TempDir dir;
+    const std::string path = (dir.path / "run.json").string();
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{}, R"("sound": {"level": "calibrated", "target_lufs": null, )"},
+        {{"--loudness", "-23"}, R"("sound": {"level": "normalised", "target_lufs": -23.00, )"},
+        {{"--loudness", "off"}, R"("sound": {"level": "off", "target_lufs": null, )"}};
+    for (const auto& [args, expected] : cases) {
+      CAPTURE(expected);
+      ExportOptions o;
+      std::string message, error;
+      REQUIRE(parse(args, o, message) == CommandLineOutcome::run);
+      RunSummary summary;
+      summary.loudness_lufs = -20.0;
+      REQUIRE(write_run_summary(summary, o, dir.path.string(), error));
+      CHECK(test::require_file(path).find(expected) != std::string::npos);
+    }
   }
 
   TEST_CASE("--help lists every option with its default; --version names the program") {
