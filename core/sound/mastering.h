@@ -8,8 +8,7 @@
 namespace bsim {
 
 /// LUFS: the level AES TD1004 ("Loudness of audio streaming and network file playback") recommends
-/// for media played online. The calibrated gain brings the built-in break to it, and it is what
-/// `--loudness` normalises to when given no other value.
+/// for media played online. The calibrated gain brings the built-in break to it.
 inline constexpr double kDefaultLoudness = -16.0;
 /// dBTP, the finished track's true peak stays at or under this: EBU R128 asks for at most -1 dBTP,
 /// and half a dB more leaves room for meters that oversample differently and for 16-bit rounding.
@@ -34,7 +33,8 @@ inline constexpr double kCalibratedGainDb = 29.0;
 inline constexpr double kCompressorThresholdDb = -11.7;
 inline constexpr double kCompressorRatio = 6.0;
 inline constexpr double kCompressorKneeDb = 6.0;
-/// s: the limiter's look-ahead (its gain ramps down over twice this before a peak) and release.
+/// s: the look-ahead of the limiter and of the compressor (their gain ramps down over twice this
+/// before a peak) and their release.
 inline constexpr double kLimiterLookahead = 0.0025;
 inline constexpr double kLimiterRelease = 0.08;
 
