@@ -47,12 +47,12 @@ bool apply_farm(ExportOptions& o, const std::string& name, const std::string& v,
 
 bool apply_loudness(ExportOptions& o, const std::string& name, const std::string& v, std::string& m) {
   if (v == "off") {
-    o.loudness.reset();
+    o.level = {.mode = LevelMode::off, .loudness = kDefaultLoudness};
     return true;
   }
   const auto lufs = parse_real_option(v);
   if (!lufs || *lufs < kMinLoudness || *lufs > kMaxLoudness) return bad(m, name, v, "LUFS from -40 to -10, or off");
-  o.loudness = *lufs;
+  o.level = {.mode = LevelMode::normalised, .loudness = *lufs};
   return true;
 }
 
@@ -130,7 +130,9 @@ OptionTable export_option_table(ExportOptions& o) {
          o.music_path = v;
          return true;
        }},
-      {"--loudness", "LUFS|off", "the sound track's integrated loudness, -40 to -10, or off (default: -16)",
+      {"--loudness", "LUFS|off",
+       "bring this shot's sound track to this integrated loudness, -40 to -10,\nor off: the mix's own "
+       "level (default: one calibrated level for every shot,\nthe built-in break at -16 LUFS)",
        [&o](S n, S v, std::string& m) { return apply_loudness(o, n, v, m); }},
       {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
@@ -149,7 +151,6 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
                                         std::string& message) {
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
-  options.loudness = kDefaultLoudness;
   const OptionTable table = export_option_table(options);
   const auto apply = [&](ArgReader& reader, std::string& error) { return apply_table_option(reader, table, error); };
   switch (read_arguments(args, options.scene_path, options, usage_text(kUsageHead, table, kUsageTail),

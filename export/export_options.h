@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "command_line.h"
+#include "mastering.h"
 
 namespace bsim {
 
@@ -35,7 +36,7 @@ struct ExportOptions : SharedOptions {
   int jobs = 0;             ///< 0: one per core
   double audio_lead = 0.0;  ///< s; set to the documented default by the parser
   std::string music_path;
-  std::optional<double> loudness;  ///< LUFS of the sound track; none: not normalised (set by the parser)
+  SoundLevel level;  ///< how the sound track's level is set (default: calibrated)
   FarmMode farm = FarmMode::none;
   int chunk = 0;                            ///< --chunk: frames a farm task renders; 0: chosen from size and quality
   std::vector<std::string> sbatch_options;  ///< --sbatch-option, in order

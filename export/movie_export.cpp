@@ -151,7 +151,7 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
   const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
   AudioBuffer audio;
   if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
-                      {.lead = options.audio_lead, .music_path = options.music_path, .loudness = options.loudness},
+                      {.lead = options.audio_lead, .music_path = options.music_path, .level = options.level},
                       samples, audio, error))
     return false;
   summary.loudness_lufs = integrated_loudness(audio);

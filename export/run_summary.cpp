@@ -126,7 +126,9 @@ bool write_run_summary(const RunSummary& s, const ExportOptions& o, const std::s
       << "  \"seconds\": {\"simulating\": " << seconds(s.simulating) << ", \"writing\": " << seconds(s.writing)
       << ", \"rendering\": " << seconds(s.rendering) << ", \"encoding\": " << seconds(s.encoding)
       << ", \"total\": " << seconds(total) << "},\n"
-      << "  \"sound\": {\"loudness_lufs\": " << (s.loudness_lufs ? decibels(*s.loudness_lufs) : std::string("null"))
+      << "  \"sound\": {\"level\": \"" << level_mode_name(o.level.mode) << "\", \"target_lufs\": "
+      << (o.level.mode == LevelMode::normalised ? decibels(o.level.loudness) : std::string("null"))
+      << ", \"loudness_lufs\": " << (s.loudness_lufs ? decibels(*s.loudness_lufs) : std::string("null"))
       << ", \"true_peak_dbtp\": " << decibels(s.true_peak_dbtp) << "},\n"
       << "  \"tools\": {\"povray\": " << json_string(s.povray_version)
       << ", \"ffmpeg\": " << json_string(s.ffmpeg_version) << "},\n"

@@ -90,8 +90,8 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const auto samples = static_cast<std::size_t>(frames) * kSampleRate / static_cast<std::size_t>(fps);
   AudioBuffer audio;
   const std::filesystem::path wav = temporary_file(".wav");
-  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = kAnimaticAudioLead, .music_path = {}},
-                      samples, audio, error) ||
+  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
+                      {.lead = kAnimaticAudioLead, .music_path = {}, .level = {}}, samples, audio, error) ||
       !write_wav(wav.string(), audio, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;

@@ -40,18 +40,11 @@ std::vector<double> moving_average(const std::vector<double>& x, std::size_t hal
   return out;
 }
 
-/// The limiter's gain for the program scaled by `gain`: at every sample at most what keeps the
-/// oversampled peak `envelope` (of the unscaled program) plus the floor's peak under `ceiling`.
-/// Each sample's need is held over the look-ahead on both sides and then averaged over it, which
-/// never exceeds the need anywhere (each averaged value is a minimum over a span holding it), then
-/// released with a one-pole recovery.
-std::vector<double> limiter_gain(const std::vector<double>& envelope, double gain, double headroom, int rate) {
-  const std::size_t n = envelope.size();
-  std::vector<double> need(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double peak = gain * envelope[i];
-    need[i] = peak > headroom ? headroom / peak : 1.0;
-  }
+/// Smooths a sample-by-sample gain `need` without ever exceeding it: each sample's need is held
+/// over the look-ahead on both sides and then averaged over it (each averaged value is a minimum
+/// over a span holding it), then released with a one-pole recovery; returned times `gain`.
+std::vector<double> smooth_gain(const std::vector<double>& need, double gain, int rate) {
+  const std::size_t n = need.size();
   const auto half = static_cast<std::size_t>(std::llround(kLimiterLookahead * rate));
   std::vector<double> smooth = moving_average(sliding_min(need, half), half);
   const double recover = 1 - std::exp(-1 / (kLimiterRelease * rate));
@@ -61,6 +54,44 @@ std::vector<double> limiter_gain(const std::vector<double>& envelope, double gai
     smooth[i] = gain * r;
   }
   return smooth;
+}
+
+/// The limiter's gain for the program scaled by `gain`: at every sample at most what keeps the
+/// oversampled peak `envelope` (of the unscaled program) plus the floor's peak under `ceiling`.
+std::vector<double> limiter_gain(const std::vector<double>& envelope, double gain, double headroom, int rate) {
+  const std::size_t n = envelope.size();
+  std::vector<double> need(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double peak = gain * envelope[i];
+    need[i] = peak > headroom ? headroom / peak : 1.0;
+  }
+  return smooth_gain(need, gain, rate);
+}
+
+/// dB: the compressor's output level for a peak at `x` dBFS (soft knee, then 1/ratio), never over
+/// `ceiling_db`. Strictly growing in x up to the ceiling.
+double compressed_level(double x, double ceiling_db) {
+  const double over = x - kCompressorThresholdDb, half_knee = kCompressorKneeDb / 2;
+  double y = x;
+  if (over > half_knee) {
+    y = kCompressorThresholdDb + over / kCompressorRatio;
+  } else if (over > -half_knee) {
+    const double into = over + half_knee;
+    y = x + (1 / kCompressorRatio - 1) * into * into / (2 * kCompressorKneeDb);
+  }
+  return std::min(y, ceiling_db);
+}
+
+/// The calibrated level's gain: kCalibratedGainDb, times the compressor's gain for the program's
+/// oversampled peak `envelope` (the floor's peak taken off the ceiling), smoothed as the limiter's.
+std::vector<double> compressor_gain(const std::vector<double>& envelope, double headroom, int rate) {
+  const double gain = from_db(kCalibratedGainDb), ceiling_db = to_db(headroom);
+  std::vector<double> need(envelope.size());
+  for (std::size_t i = 0; i < envelope.size(); ++i) {
+    const double x = to_db(gain * envelope[i]);
+    need[i] = from_db(compressed_level(x, ceiling_db) - x);
+  }
+  return smooth_gain(need, gain, rate);
 }
 
 void mix_into(const AudioBuffer& program, const std::vector<double>& gain, const AudioBuffer& floor, AudioBuffer& out) {
@@ -81,35 +112,61 @@ void scale(AudioBuffer& audio, double gain) {
 
 }  // namespace
 
-void master(AudioBuffer& program, const AudioBuffer& floor, std::optional<double> target) {
+const char* level_mode_name(LevelMode mode) {
+  switch (mode) {
+    case LevelMode::calibrated: return "calibrated";
+    case LevelMode::normalised: return "normalised";
+    case LevelMode::off: return "off";
+  }
+  return "?";
+}
+
+namespace {
+
+/// Brings `program` plus `floor` to the integrated loudness `target` into `out`, limited.
+void normalise(const AudioBuffer& program, const std::vector<double>& envelope, double headroom,
+               const AudioBuffer& floor, double target, AudioBuffer& out) {
+  const std::optional<double> measured = integrated_loudness(program);
+  if (!measured) {
+    mix_into(program, std::vector<double>(envelope.size(), 1.0), floor, out);
+    return;
+  }
+  double gain_db = std::min(target - *measured, kMaxLoudnessGainDb);
+  // What the limiter takes off lowers the loudness: measure again and correct. Each step divides the
+  // shortfall by how much the last step of gain raised the loudness (the secant), since the harder
+  // the limiter works the less a dB of gain brings.
+  double previous_gain = 0, previous_loudness = *measured;
+  for (int round = 0; round < 12; ++round) {
+    mix_into(program, limiter_gain(envelope, from_db(gain_db), headroom, program.sample_rate), floor, out);
+    const std::optional<double> loudness = integrated_loudness(out);
+    if (!loudness || std::abs(*loudness - target) < 0.05) break;
+    const double step = gain_db - previous_gain;
+    const double slope = std::abs(step) > 1e-9 ? std::clamp((*loudness - previous_loudness) / step, 0.2, 1.0) : 1.0;
+    const double next = std::min(gain_db + (target - *loudness) / slope, kMaxLoudnessGainDb);
+    if (next == gain_db) break;
+    previous_gain = gain_db;
+    previous_loudness = *loudness;
+    gain_db = next;
+  }
+}
+
+}  // namespace
+
+void master(AudioBuffer& program, const AudioBuffer& floor, const SoundLevel& level) {
   const double ceiling = from_db(kTruePeakCeilingDb);
   const std::size_t n = std::min(program.left.size(), program.right.size());
   AudioBuffer out;
-  const std::optional<double> measured = target ? integrated_loudness(program) : std::nullopt;
-  if (!measured) {
+  if (level.mode == LevelMode::off) {
     mix_into(program, std::vector<double>(n, 1.0), floor, out);
   } else {
     std::vector<double> envelope(n);
     const std::vector<float> left = oversampled_peaks(program.left), right = oversampled_peaks(program.right);
     for (std::size_t i = 0; i < n; ++i) envelope[i] = std::max(left[i], right[i]);
     const double headroom = std::max(0.1 * ceiling, ceiling - true_peak(floor));
-    double gain_db = std::min(*target - *measured, kMaxLoudnessGainDb);
-    // What the limiter takes off lowers the loudness: measure again and correct. Each step divides the
-    // shortfall by how much the last step of gain raised the loudness (the secant), since the harder
-    // the limiter works the less a dB of gain brings.
-    double previous_gain = 0, previous_loudness = *measured;
-    for (int round = 0; round < 12; ++round) {
-      mix_into(program, limiter_gain(envelope, from_db(gain_db), headroom, program.sample_rate), floor, out);
-      const std::optional<double> loudness = integrated_loudness(out);
-      if (!loudness || std::abs(*loudness - *target) < 0.05) break;
-      const double step = gain_db - previous_gain;
-      const double slope = std::abs(step) > 1e-9 ? std::clamp((*loudness - previous_loudness) / step, 0.2, 1.0) : 1.0;
-      const double next = std::min(gain_db + (*target - *loudness) / slope, kMaxLoudnessGainDb);
-      if (next == gain_db) break;
-      previous_gain = gain_db;
-      previous_loudness = *loudness;
-      gain_db = next;
-    }
+    if (level.mode == LevelMode::normalised)
+      normalise(program, envelope, headroom, floor, level.loudness, out);
+    else
+      mix_into(program, compressor_gain(envelope, headroom, program.sample_rate), floor, out);
   }
   // A last guard: the gain's own movement can lift a peak between samples a hair.
   const double peak = true_peak(out);

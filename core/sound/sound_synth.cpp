@@ -15,16 +15,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The click's Hertz contact (hertz.h) with the constants the sound track has always used, not yet the
-// scene's: a later change feeds it the scene's `param k_hertz` (hertz_pair) and ball material, and
-// the physics' kHertzTimeFactor, which changes the track.
-// Phenolic resin, the usual ball material: Young's modulus (Pa) and Poisson's ratio.
-constexpr double kBallYoungModulus = 5.4e9;
-constexpr double kBallPoisson = 0.35;
-/// The click's contact time factor: 2.87 in the form 2.87 (m*^2 / (R* E*^2 v))^(1/5) it was written
-/// in, which is kHertzTimeFactor (15/16)^(2/5) = 2.868 rounded to three figures.
-double click_time_factor() { return 2.87 / std::pow(15.0 / 16.0, 0.4); }
-
 /// A damped mode: frequency (Hz), decay time constant (s), weight relative to the loudest mode.
 struct Mode {
   double frequency;
@@ -236,8 +226,7 @@ std::uint64_t SoundRandom::next() {
 double SoundRandom::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 double click_contact_time(const PhysicsParams& physics, double speed) {
-  const HertzPair pair{physics.ball_mass, hertz_stiffness(kBallYoungModulus, kBallPoisson, physics.ball_radius)};
-  return hertz_contact_time(std::max(speed, 1e-3), pair, click_time_factor());
+  return hertz_contact_time(std::max(speed, 1e-3), hertz_pair(physics));
 }
 
 double impact_gain(SoundKind kind, double speed) {

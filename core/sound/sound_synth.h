@@ -34,7 +34,9 @@ class SoundRandom {
 };
 
 /// s, duration of the Hertz contact (hertz.h) a ball-ball click is made of, for two equal balls
-/// closing at `speed` m/s: the scene's ball mass and radius, the sound's own ball material.
+/// closing at `speed` m/s: the physics' own contact, with the scene's ball mass and `param k_hertz`
+/// (its balls' material). A stiffer or lighter ball makes a shorter click, and a brighter one: the
+/// click's pulse is that short, and the ring after it weaker (sound_synth.cpp, ball_click).
 double click_contact_time(const PhysicsParams& physics, double speed);
 
 /// Peak amplitude of a sound of this kind at this speed (m/s), before panning: strictly growing

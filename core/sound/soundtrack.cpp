@@ -41,12 +41,14 @@ bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::s
   add_reverb(send, out);
   if (!options.music_path.empty()) {
     // The bed sits kMusicUnderEffects under the effects (or under the target if nothing is heard).
+    // Calibrated, the effects are measured as they will be heard, at the calibrated gain.
     const std::optional<double> music_loudness = integrated_loudness(music);
     const std::optional<double> effects = integrated_loudness(out);
-    const double wanted = (effects ? *effects : options.loudness.value_or(kDefaultLoudness)) - kMusicUnderEffects;
+    const double heard = options.level.mode == LevelMode::calibrated ? kCalibratedGainDb : 0.0;
+    const double wanted = (effects ? *effects - heard : options.level.loudness) - kMusicUnderEffects;
     if (music_loudness) add(out, music, from_db(wanted - *music_loudness));
   }
-  master(out, room_tone(sample_count, kRoomSeed), options.loudness);
+  master(out, room_tone(sample_count, kRoomSeed), options.level);
   return true;
 }
 

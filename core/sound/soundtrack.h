@@ -1,7 +1,7 @@
 #pragma once
 // The sound track: the impacts (sound_mix.h) and the rolling (rolling.h) heard from the camera, the
-// room's reverberation and tone (room.h), optionally a music bed under them, brought to a loudness
-// with its true peak limited (mastering.h).
+// room's reverberation and tone (room.h), optionally a music bed under them, at one calibrated level
+// for every shot or brought to a loudness, its true peak kept under a ceiling (mastering.h).
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -19,7 +19,7 @@ inline constexpr double kMusicUnderEffects = 12.0;
 struct SoundOptions {
   double lead = 0.0;       ///< s, sounds play this much before their event (default chosen in export)
   std::string music_path;  ///< optional music bed (any format libsndfile reads); empty for none
-  std::optional<double> loudness = kDefaultLoudness;  ///< LUFS of the finished track; none: not normalised
+  SoundLevel level;        ///< how the finished track's level is set (default: calibrated)
 };
 
 /// Mixes the effects (and music) into exactly `sample_count` samples per channel.

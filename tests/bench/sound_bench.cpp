@@ -265,18 +265,20 @@ void break_figures() {
   mix_rolling(source, rolling, &send);
   add_reverb(send, reverb);
   const AudioBuffer tone = room_tone(n, 1);
-  std::printf("the built-in break's sound track (%.1f s), before the loudness stage:\n", shot.timeline.duration());
+  std::printf("the built-in break's sound track (%.1f s), before the level stage:\n", shot.timeline.duration());
   std::printf("  impacts   %6.1f LUFS  true peak %6.1f dBTP\n", loudness_of(impacts), to_db(true_peak(impacts)));
   std::printf("  rolling   %6.1f LUFS  true peak %6.1f dBTP\n", loudness_of(rolling), to_db(true_peak(rolling)));
   std::printf("  reverb    %6.1f LUFS\n", loudness_of(reverb));
-  std::printf("  room tone %6.1f LUFS  (fixed, after the loudness stage)\n", loudness_of(tone));
+  std::printf("  room tone %6.1f LUFS  (fixed, after the level stage)\n", loudness_of(tone));
   AudioBuffer track;
   std::string error;
   const auto t0 = Clock::now();
-  mix_soundtrack(source, {.lead = 0.005, .music_path = {}, .loudness = kDefaultLoudness}, n, track, error);
+  mix_soundtrack(source, {.lead = 0.005, .music_path = {}, .level = {}}, n, track, error);
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  std::printf("finished: %.2f LUFS (target %.0f), true peak %.2f dBTP, quietest 100 ms %.1f dBFS, made in %.0f ms\n\n",
-              loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), test::quietest_window_db(track, 0.1), ms);
+  std::printf(
+      "finished: %.2f LUFS (calibrated: the break at %.0f), true peak %.2f dBTP, quietest 100 ms %.1f dBFS, made in "
+      "%.0f ms\n\n",
+      loudness_of(track), kDefaultLoudness, to_db(true_peak(track)), test::quietest_window_db(track, 0.1), ms);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "export_options.h"
 #include "fixtures.h"
 #include "mastering.h"
+#include "run_summary.h"
 #include "support.h"
 
 using namespace bsim;
@@ -108,20 +109,39 @@ TEST_SUITE("export command line") {
     CHECK(rejection({"a.scn", "b.scn"}) == "more than one scene given: 'a.scn' and 'b.scn'");
   }
 
-  TEST_CASE("--loudness takes LUFS from -40 to -10 or off, -16 by default") {
+  TEST_CASE("--loudness takes LUFS from -40 to -10 or off; by default the level is the calibrated one") {
     ExportOptions o;
     std::string message;
     REQUIRE(parse({}, o, message) == CommandLineOutcome::run);
-    CHECK(o.loudness == kDefaultLoudness);
+    CHECK(o.level.mode == LevelMode::calibrated);
     REQUIRE(parse({"--loudness", "-23"}, o, message) == CommandLineOutcome::run);
-    CHECK(o.loudness == -23.0);
+    CHECK(o.level == SoundLevel{.mode = LevelMode::normalised, .loudness = -23.0});
     REQUIRE(parse({"--loudness=off"}, o, message) == CommandLineOutcome::run);
-    CHECK_FALSE(o.loudness.has_value());
+    CHECK(o.level.mode == LevelMode::off);
     for (const char* bad : {"-9", "-41", "loud", "nan", ""})
       CHECK(rejection({"--loudness", bad}).find("expected LUFS from -40 to -10, or off") != std::string::npos);
     REQUIRE(parse({"--help"}, o, message) == CommandLineOutcome::exit_success);
     CHECK(message.find("--loudness LUFS|off") != std::string::npos);
-    CHECK(message.find("(default: -16)") != std::string::npos);
+    CHECK(message.find("(default: one calibrated level for every shot") != std::string::npos);
+  }
+
+  TEST_CASE("run.json says which sound level was used") {
+    test::TempDir dir;
+    const std::string path = (dir.path / "run.json").string();
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{}, R"("sound": {"level": "calibrated", "target_lufs": null, )"},
+        {{"--loudness", "-23"}, R"("sound": {"level": "normalised", "target_lufs": -23.00, )"},
+        {{"--loudness", "off"}, R"("sound": {"level": "off", "target_lufs": null, )"}};
+    for (const auto& [args, expected] : cases) {
+      CAPTURE(expected);
+      ExportOptions o;
+      std::string message, error;
+      REQUIRE(parse(args, o, message) == CommandLineOutcome::run);
+      RunSummary summary;
+      summary.loudness_lufs = -20.0;
+      REQUIRE(write_run_summary(summary, o, dir.path.string(), error));
+      CHECK(test::require_file(path).find(expected) != std::string::npos);
+    }
   }
 
   TEST_CASE("--help lists every option with its default; --version names the program") {

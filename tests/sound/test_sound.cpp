@@ -1,13 +1,15 @@
 // The sound track: each sound starts at its event, louder for faster hits, on the side of the
 // picture where it happens; the rolling heard while a ball rolls and not after; a room under it all;
-// brought to its loudness with the true peak under -1 dBTP (by our meter and by ffmpeg's); exactly
-// as long as the shot, the same bytes every time.
+// one calibrated level for every shot (the break at -16 LUFS, a softer hit never above a harder one,
+// a soft shot well under the break), or on request brought to a loudness, the true peak under
+// -1 dBTP (by our meter and by ffmpeg's); exactly as long as the shot, the same bytes every time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
+#include "builtin_scene.h"
 #include "fixtures.h"
 #include "hertz.h"
 #include "loudness.h"
@@ -76,29 +78,75 @@ std::uint32_t le32(const std::string& bytes, std::size_t at) {
   return v;
 }
 
+/// A two-ball shot under the hover camera: the cue ball from (-0.4, 0) at `speed` m/s along +x
+/// into a ball at (0, `offset`) (0 head-on; towards 2R a thin cut).
+std::string two_balls(double speed, double offset) {
+  return "cue 0 0\nball 0 -0.4 0 0.028575  " + std::to_string(speed) + " 0 0  1 0 0 0\nball 1 0.0 " +
+         std::to_string(offset) + " 0.028575  0 0 0  1 0 0 0\n" + test::fixtures::kHoverCamera;
+}
+
+/// The finished track of a shot, with no lead (each sound starts at its event), at `level`.
+AudioBuffer track_of(const Shot& shot, const SoundLevel& level = {}, double lead = 0) {
+  const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
+  AudioBuffer audio;
+  std::string error;
+  REQUIRE(mix_soundtrack({shot.scene, shot.timeline, *shot.camera}, {.lead = lead, .music_path = {}, .level = level},
+                         samples, audio, error));
+  return audio;
+}
+
+/// The highest peak on `audio` within 5 ms of the start of each event of type `type`.
+double hit_peak(const Shot& shot, const AudioBuffer& audio, EventType type) {
+  double p = 0;
+  for (const Event& e : shot.timeline.events())
+    if (e.type == type) p = std::max(p, peak(audio, e.time, e.time + 0.005));
+  return p;
+}
+
 }  // namespace
 
 TEST_SUITE("sound") {
-  TEST_CASE("a Hertz contact is shorter the faster the balls meet (about 460, 350, 290 us at 0.5, 2, 5 m/s)") {
+  TEST_CASE("a Hertz contact is shorter the faster the balls meet (about 450, 340, 280 us at 0.5, 2, 5 m/s)") {
     const PhysicsParams physics;
-    CHECK(click_contact_time(physics, 0.5) == doctest::Approx(461e-6).epsilon(0.03));
-    CHECK(click_contact_time(physics, 2.0) == doctest::Approx(349e-6).epsilon(0.03));
-    CHECK(click_contact_time(physics, 5.0) == doctest::Approx(291e-6).epsilon(0.03));
+    CHECK(click_contact_time(physics, 0.5) == doctest::Approx(448e-6).scale(0).epsilon(0.01));
+    CHECK(click_contact_time(physics, 2.0) == doctest::Approx(340e-6).scale(0).epsilon(0.01));
+    CHECK(click_contact_time(physics, 5.0) == doctest::Approx(283e-6).scale(0).epsilon(0.01));
   }
 
-  TEST_CASE("the click's contact time is the physics' Hertz contact, for the sound's own ball material") {
-    const PhysicsParams physics;
+  TEST_CASE("the click is the physics' one Hertz contact: the scene's k_hertz and ball set its length and colour") {
+    PhysicsParams physics;
     // k_hertz's default is the stiffness of its documented material (E = 5.84 GPa, nu = 0.34).
     CHECK(hertz_stiffness(5.84e9, 0.34, physics.ball_radius) == doctest::Approx(physics.k_hertz).epsilon(0.001));
-    // The sound's material (E = 5.4 GPa, nu = 0.35) as the scene's k_hertz: the same contact time but for
-    // the sound's time factor, 2.87 where the physics' is 2.868.
-    PhysicsParams sound_material = physics;
-    sound_material.k_hertz = hertz_stiffness(5.4e9, 0.35, physics.ball_radius);
-    const double rounding = 2.87 / (kHertzTimeFactor * std::pow(15.0 / 16.0, 0.4));
-    CHECK(rounding == doctest::Approx(1.0).epsilon(0.001));
     for (double speed : {0.5, 2.0, 5.0})
-      CHECK(click_contact_time(physics, speed) ==
-            doctest::Approx(hertz_contact_time(speed, sound_material) * rounding).epsilon(1e-12));
+      CHECK(click_contact_time(physics, speed) == hertz_contact_time(speed, physics));
+    // A ball of a four times stiffer material: a shorter contact (4^-0.4), and a brighter click, its
+    // RMS frequency (from the energy of its slope) higher and its ring after 2 ms weaker.
+    PhysicsParams stiff = physics;
+    stiff.k_hertz *= 4;
+    CHECK(click_contact_time(stiff, 2.0) == doctest::Approx(click_contact_time(physics, 2.0) * std::pow(4.0, -0.4)));
+    auto rms_frequency = [](const std::vector<float>& wave) {
+      double slope = 0, level = 0;
+      for (std::size_t i = 1; i < wave.size(); ++i) {
+        slope += (wave[i] - wave[i - 1]) * (wave[i] - wave[i - 1]);
+        level += wave[i] * wave[i];
+      }
+      return kSampleRate / (2 * 3.141592653589793) * std::sqrt(slope / level);
+    };
+    auto ring = [](const std::vector<float>& wave) {
+      double e = 0;
+      for (std::size_t i = sample_at(0.002); i < wave.size(); ++i) e += wave[i] * wave[i];
+      return e;
+    };
+    const std::vector<float> soft = synth_impact(SoundKind::ball_ball, 2.0, 7, physics, kSampleRate);
+    const std::vector<float> hard = synth_impact(SoundKind::ball_ball, 2.0, 7, stiff, kSampleRate);
+    CAPTURE(rms_frequency(soft));
+    CAPTURE(rms_frequency(hard));
+    CHECK(rms_frequency(hard) > 1.1 * rms_frequency(soft));
+    CHECK(ring(hard) < 0.7 * ring(soft));
+    // A heavier ball of the same material presses longer: a longer click.
+    PhysicsParams heavy = physics;
+    heavy.ball_mass *= 2;
+    CHECK(click_contact_time(heavy, 2.0) > 1.2 * click_contact_time(physics, 2.0));
   }
 
   TEST_CASE("every kind of sound gets louder with speed, and its peak is its gain") {
@@ -176,8 +224,8 @@ TEST_SUITE("sound") {
     const double lead = 0.005;
     AudioBuffer audio;
     std::string error;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, audio, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {.lead = lead, .music_path = {}, .level = {}},
+                           samples, audio, error));
     CHECK(audio.left.size() == samples);
     CHECK(audio.right.size() == samples);
 
@@ -202,8 +250,8 @@ TEST_SUITE("sound") {
     CHECK(rail_seen);
 
     AudioBuffer again;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, again, error));
+    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera}, {.lead = lead, .music_path = {}, .level = {}},
+                           samples, again, error));
     CHECK(again.left == audio.left);
     CHECK(again.right == audio.right);
   }
@@ -279,8 +327,10 @@ TEST_SUITE("sound") {
       CAPTURE(target);
       AudioBuffer audio;
       std::string error;
-      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                             {.lead = 0.005, .music_path = {}, .loudness = target}, samples, audio, error));
+      REQUIRE(mix_soundtrack(
+          {shot->scene, shot->timeline, *shot->camera},
+          {.lead = 0.005, .music_path = {}, .level = {.mode = LevelMode::normalised, .loudness = target}}, samples,
+          audio, error));
       REQUIRE(integrated_loudness(audio).has_value());
       CHECK(std::abs(*integrated_loudness(audio) - target) < 1.0);
       CHECK(to_db(true_peak(audio)) < -1.0);
@@ -303,26 +353,68 @@ TEST_SUITE("sound") {
     }
   }
 
-  TEST_CASE("at the target loudness every contact still stands out of the rumble and the room before it") {
-    // The loudness stage raises the rolling and the room with the clicks but limits only the
-    // clicks' peaks: a hit must still rise well above the 10 ms before it (four times, 12 dB), and not
-    // only in its first fraction of a millisecond (a meter reading 1 ms windows may miss that).
-    const auto shot = test::load_clean(kScene, "sound");
-    const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
-    AudioBuffer audio;
-    std::string error;
-    const double lead = 0.005;
-    REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = lead, .music_path = {}, .loudness = kDefaultLoudness}, samples, audio, error));
-    int hits = 0;
-    for (const Event& e : shot->timeline.events()) {
-      if (e.type != EventType::cue && e.type != EventType::ball_ball && e.type != EventType::ball_rail) continue;
-      const double t = e.time - lead;
-      CAPTURE(e.time);
-      CHECK(peak(audio, t + 0.001, t + 0.006) > 4 * peak(audio, t - 0.012, t - 0.003));
-      ++hits;
+  TEST_CASE("at the calibrated level the built-in break measures -16 LUFS, its true peak under -1 dBTP") {
+    const auto shot = test::load_clean(builtin_scene_text(), "break");
+    const AudioBuffer audio = track_of(*shot, {}, 0.005);
+    REQUIRE(integrated_loudness(audio).has_value());
+    CHECK(*integrated_loudness(audio) == doctest::Approx(kDefaultLoudness).scale(0).epsilon(0.5 / 16));
+    CHECK(to_db(true_peak(audio)) < -1.0);
+  }
+
+  TEST_CASE("at the calibrated level a softer hit never peaks above a harder one of its kind, across shots") {
+    // The cue and the click at 0.5 and at 3 m/s.
+    const auto slow = test::load_clean(two_balls(0.5, 0), "slow"), fast = test::load_clean(two_balls(3.0, 0), "fast");
+    const AudioBuffer slow_track = track_of(*slow), fast_track = track_of(*fast);
+    for (EventType type : {EventType::cue, EventType::ball_ball}) {
+      CAPTURE(static_cast<int>(type));
+      const double soft = hit_peak(*slow, slow_track, type), hard = hit_peak(*fast, fast_track, type);
+      REQUIRE(soft > 0);
+      CHECK(soft < hard);
     }
-    CHECK(hits >= 3);
+    // Head-on and a thin cut (about 70 degrees) at one cue speed: the cut's click is the softer one.
+    const auto head = test::load_clean(two_balls(1.5, 0), "head"),
+               thin = test::load_clean(two_balls(1.5, 0.054), "cut");
+    const AudioBuffer head_track = track_of(*head), thin_track = track_of(*thin);
+    CHECK(hit_peak(*thin, thin_track, EventType::ball_ball) < hit_peak(*head, head_track, EventType::ball_ball));
+  }
+
+  TEST_CASE("at the calibrated level a soft two-ball tap is at least 8 LU under the break, over the same room") {
+    // The tap: the cue ball at 0.8 m/s from (-0.6, 0) into a ball at (0.2, 0.01).
+    const auto tap = test::load_clean(std::string("cue 0 0\n"
+                                                  "ball 0 -0.6 0 0.028575  0.8 0 0  1 0 0 0\n"
+                                                  "ball 1 0.2 0.01 0.028575  0 0 0  1 0 0 0\n") +
+                                          test::fixtures::kHoverCamera,
+                                      "tap");
+    const auto brk = test::load_clean(builtin_scene_text(), "break");
+    const AudioBuffer tap_track = track_of(*tap), break_track = track_of(*brk);
+    REQUIRE(integrated_loudness(tap_track).has_value());
+    REQUIRE(integrated_loudness(break_track).has_value());
+    CHECK(*integrated_loudness(tap_track) <= *integrated_loudness(break_track) - 8.0);
+    // The room tone is the same in both: their quietest 100 ms (the room alone) agree, at the tone's level.
+    const double tap_room = test::quietest_window_db(tap_track, 0.1);
+    CHECK(tap_room == doctest::Approx(test::quietest_window_db(break_track, 0.1)).scale(0).epsilon(0.25 / 55));
+    CHECK(std::abs(tap_room - kRoomToneDb) < 3.0);
+  }
+
+  TEST_CASE("at either level every contact still stands out of the rumble and the room before it") {
+    // The level stage raises the rolling and the room with the clicks but compresses or limits only
+    // the clicks' peaks: a hit must still rise well above the 10 ms before it (four times, 12 dB), and
+    // not only in its first fraction of a millisecond (a meter reading 1 ms windows may miss that).
+    const auto shot = test::load_clean(kScene, "sound");
+    const double lead = 0.005;
+    for (const SoundLevel& level : {SoundLevel{}, SoundLevel{.mode = LevelMode::normalised}}) {
+      CAPTURE(level_mode_name(level.mode));
+      const AudioBuffer audio = track_of(*shot, level, lead);
+      int hits = 0;
+      for (const Event& e : shot->timeline.events()) {
+        if (e.type != EventType::cue && e.type != EventType::ball_ball && e.type != EventType::ball_rail) continue;
+        const double t = e.time - lead;
+        CAPTURE(e.time);
+        CHECK(peak(audio, t + 0.001, t + 0.006) > 4 * peak(audio, t - 0.012, t - 0.003));
+        ++hits;
+      }
+      CHECK(hits >= 3);
+    }
   }
 
   TEST_CASE("with --loudness off the track keeps its level, only kept under the true-peak ceiling") {
@@ -331,7 +423,8 @@ TEST_SUITE("sound") {
     AudioBuffer audio;
     std::string error;
     REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                           {.lead = 0.005, .music_path = {}, .loudness = std::nullopt}, samples, audio, error));
+                           {.lead = 0.005, .music_path = {}, .level = {.mode = LevelMode::off}}, samples, audio,
+                           error));
     CHECK(to_db(true_peak(audio)) <= kTruePeakCeilingDb + 0.01);
     CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
   }
@@ -410,15 +503,17 @@ TEST_SUITE("sound") {
     CHECK_FALSE(load_music_bed((dir.path / "none.ogg").string(), 100, music, error));
     CHECK(error.find("none.ogg") != std::string::npos);
 
-    // Under the effects of a shot: the track still comes to its loudness, and it is the same bytes
-    // every time it is made.
+    // Under the effects of a shot: the track still comes to the loudness asked for, and it is the
+    // same bytes every time it is made.
     const auto shot = test::load_clean(kScene, "sound");
     const auto samples = static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate));
     std::string bytes[2];
     for (int k = 0; k < 2; ++k) {
       AudioBuffer track;
-      REQUIRE(mix_soundtrack({shot->scene, shot->timeline, *shot->camera},
-                             {.lead = 0.005, .music_path = path, .loudness = kDefaultLoudness}, samples, track, error));
+      REQUIRE(mix_soundtrack(
+          {shot->scene, shot->timeline, *shot->camera},
+          {.lead = 0.005, .music_path = path, .level = {.mode = LevelMode::normalised, .loudness = kDefaultLoudness}},
+          samples, track, error));
       REQUIRE(integrated_loudness(track).has_value());
       CHECK(std::abs(*integrated_loudness(track) - kDefaultLoudness) < 1.0);
       const std::string wav = (dir.path / ("track" + std::to_string(k) + ".wav")).string();
