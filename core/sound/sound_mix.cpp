@@ -93,11 +93,10 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
     }
     if (e.type == EventType::ball_ball) {
       // A collision clicks once for each of its contacts, at its own time and speed (those of a group
-      // gentler than a numbered event are not heard). A pair's click is seeded by its first ball.
+      // gentler than a numbered event are not heard). Each click is seeded by its two balls.
       for (const Contact& c : e.contacts)
         if (c.speed >= kMinEventSpeed)
-          cues.push_back(event_cue(shot, kind, c.time, c.speed, c.where,
-                                   cue_seed(kind, e.index, e.grouped ? c.a * 16 + c.b : c.a)));
+          cues.push_back(event_cue(shot, kind, c.time, c.speed, c.where, cue_seed(kind, e.index, c.a * 16 + c.b)));
       continue;
     }
     const int ball = e.balls.empty() ? 0 : e.balls.front();
