@@ -132,7 +132,9 @@ TEST_SUITE("export command line") {
         {{}, R"("sound": {"level": "calibrated", "target_lufs": null, )"},
         {{"--loudness", "-23"}, R"("sound": {"level": "normalised", "target_lufs": -23.00, )"},
         {{"--loudness", "off"}, R"("sound": {"level": "off", "target_lufs": null, )"}};
-    for (const auto& [args, expected] : cases) {
+    for (const auto& sound_case : cases) {
+      const std::vector<std::string>& args = sound_case.first;
+      const std::string& expected = sound_case.second;  // a plain reference: CAPTURE's lambda may not take a binding
       CAPTURE(expected);
       ExportOptions o;
       std::string message, error;
