@@ -12,8 +12,11 @@
 #include "command_line.h"
 #include "export_options.h"
 #include "preview_options.h"
+#include "option_rejection.h"
 
 using namespace bsim;
+using bsim::test::export_rejection;
+using bsim::test::preview_rejection;
 
 namespace {
 
@@ -47,20 +50,6 @@ void check_dispatch(const std::function<OptionTable(Options&)>& make_table,
       CHECK(sample->second.took(o));
     }
   }
-}
-
-std::string export_rejection(const std::vector<std::string>& args) {
-  ExportOptions o;
-  std::string message;
-  CHECK(parse_export_options(args, o, message) == CommandLineOutcome::exit_usage);
-  return message;
-}
-
-std::string preview_rejection(const std::vector<std::string>& args) {
-  PreviewOptions o;
-  std::string message;
-  CHECK(parse_preview_options(args, o, message) == PreviewCommandLineOutcome::exit_usage);
-  return message;
 }
 
 }  // namespace
