@@ -68,18 +68,22 @@ std::vector<double> limiter_gain(const std::vector<double>& envelope, double gai
   return smooth_gain(need, gain, rate);
 }
 
-/// dB: the compressor's output level for a peak at `x` dBFS (soft knee, then 1/ratio), never over
-/// `ceiling_db`. Strictly growing in x up to the ceiling.
+/// dB: one soft-knee stage's output for an input at `x` dB: above `threshold` it grows `ratio` times
+/// slower, entering over kCompressorKneeDb (Giannoulis, Massberg & Reiss 2012, eq. 4). Strictly
+/// growing in x.
+double soft_knee(double x, double threshold, double ratio) {
+  const double over = x - threshold, half_knee = kCompressorKneeDb / 2;
+  if (over > half_knee) return threshold + over / ratio;
+  if (over <= -half_knee) return x;
+  const double into = over + half_knee;
+  return x + (1 / ratio - 1) * into * into / (2 * kCompressorKneeDb);
+}
+
+/// dB: the compressor's output level for a peak at `x` dBFS: the gentle stage, then the steeper one
+/// for the break's loudest, never over `ceiling_db`. Strictly growing in x up to the ceiling.
 double compressed_level(double x, double ceiling_db) {
-  const double over = x - kCompressorThresholdDb, half_knee = kCompressorKneeDb / 2;
-  double y = x;
-  if (over > half_knee) {
-    y = kCompressorThresholdDb + over / kCompressorRatio;
-  } else if (over > -half_knee) {
-    const double into = over + half_knee;
-    y = x + (1 / kCompressorRatio - 1) * into * into / (2 * kCompressorKneeDb);
-  }
-  return std::min(y, ceiling_db);
+  const double gentle = soft_knee(x, kCompressorThresholdDb, kCompressorRatio);
+  return std::min(soft_knee(gentle, kCompressorUpperThresholdDb, kCompressorUpperRatio), ceiling_db);
 }
 
 /// The calibrated level's gain: kCalibratedGainDb, times the compressor's gain for the program's

@@ -17,21 +17,25 @@ inline constexpr double kTruePeakCeilingDb = -1.5;
 inline constexpr double kMaxLoudnessGainDb = 60.0;
 /// dB, the one fixed gain every shot's effects get by default. Calibrated once on the built-in break
 /// (`billiards-export --no-render`, measured with ffmpeg's ebur128=peak=true): with the compressor
-/// below it measures -16.0 LUFS (kDefaultLoudness, within 0.5 LU), its true peak -2.0 dBTP. The
-/// break's mix peaks 35 dB above its loudness (clicks are short), so its loudest click, 46.5 dB over
-/// full scale after this gain, comes out of the compressor at -2 dBFS, just under the ceiling.
-/// Recalibrate it when a sound's own level changes (tests/sound/test_sound.cpp checks the break).
-inline constexpr double kCalibratedGainDb = 29.0;
-/// The calibrated level's compressor on the oversampled peak envelope: above kCompressorThresholdDb
-/// (dBFS) a peak grows kCompressorRatio times slower, entering over a soft knee kCompressorKneeDb
-/// wide (the gain computer of Giannoulis, Massberg & Reiss, "Digital dynamic range compressor
-/// design", JAES 2012). Its curve grows strictly with the input, so a harder hit still peaks higher;
-/// only what would still pass the true-peak ceiling (a shot harder than the break) is held at it.
-/// The threshold and ratio were chosen together with the gain: the break's loudest peak reaches
-/// -2 dBFS, not the ceiling, and 6:1 is the gentlest ratio that then brings the break to -16 LUFS
-/// (at 5:1 it stays near -17 LUFS however high the gain).
-inline constexpr double kCompressorThresholdDb = -11.7;
-inline constexpr double kCompressorRatio = 6.0;
+/// below it measures -16 LUFS (kDefaultLoudness, within 0.5 LU). A click is far peakier than its
+/// loudness (a recorded click's peak stands 18 dB over its first 100 ms), and the break's loudness is
+/// that of its loudest half second, the rack's burst of clicks: its mix peaks about 27 dB above its
+/// loudness. Recalibrate it when a sound's own level changes (tests/sound/test_sound.cpp checks the
+/// break).
+inline constexpr double kCalibratedGainDb = 14.0;
+/// The calibrated level's compressor on the oversampled peak envelope, two soft-knee stages (the gain
+/// computer of Giannoulis, Massberg & Reiss, "Digital dynamic range compressor design", JAES 2012),
+/// each kCompressorKneeDb wide. Everything under kCompressorThresholdDb (dBFS) passes untouched: a
+/// soft or medium shot's hits (a 3 m/s click peaks near -6 dBFS after the gain, a 0.5 m/s one near
+/// -16). Above it a peak grows kCompressorRatio times slower, and above kCompressorUpperThresholdDb,
+/// which only a break's burst reaches, kCompressorUpperRatio times slower again. The curve grows
+/// strictly with the input, so a harder hit always peaks higher; only what would still pass the
+/// true-peak ceiling (a shot harder than the break) is held at it. Chosen with the gain: the break
+/// at -16 LUFS, its loudest peak under -2 dBTP, and a 3 m/s click still 10 dB over a 0.5 m/s one.
+inline constexpr double kCompressorThresholdDb = -9.0;
+inline constexpr double kCompressorRatio = 2.0;
+inline constexpr double kCompressorUpperThresholdDb = -4.0;
+inline constexpr double kCompressorUpperRatio = 8.0;
 inline constexpr double kCompressorKneeDb = 6.0;
 /// s: the look-ahead of the limiter and of the compressor (their gain ramps down over twice this
 /// before a peak) and their release.

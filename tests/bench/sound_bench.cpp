@@ -126,6 +126,17 @@ Shape shape(const Mono& m) {
   return {1000.0 * static_cast<double>(a90 - a10) / m.rate, stays_under(0.1), stays_under(0.01)};
 }
 
+/// dB: the peak over the RMS of the first `seconds` (the balance of the click and its ring).
+double crest_db(const Mono& m, double seconds) {
+  const std::size_t n = std::min(m.x.size(), static_cast<std::size_t>(seconds * m.rate));
+  double top = 0, sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    top = std::max(top, std::abs(m.x[i]));
+    sum += m.x[i] * m.x[i];
+  }
+  return n > 0 && sum > 0 ? 20 * std::log10(top / std::sqrt(sum / static_cast<double>(n))) : 0.0;
+}
+
 Mono our_click(double speed) {
   const PhysicsParams physics;
   const std::vector<float> s = synth_impact(SoundKind::ball_ball, speed, 7, physics, kSampleRate);
@@ -306,13 +317,13 @@ int main(int argc, char** argv) {
   std::printf("ball-ball click: recorded (%s) vs ours\n", recording.c_str());
   std::printf(
       "centroid: over the first 50 ms below 11 kHz (the recording's band), over all, and over the first 3 ms\n");
-  std::printf("%-22s %14s %14s %14s %14s %12s\n", "", "centroid <11k", "centroid all", "first 3 ms", "attack 10-90",
-              "decay -20/-40");
+  std::printf("%-22s %14s %14s %14s %14s %14s %12s\n", "", "centroid <11k", "centroid all", "first 3 ms",
+              "attack 10-90", "decay -20/-40", "peak/100 ms");
   auto row = [](const std::string& name, const Mono& m) {
     const Shape s = shape(m);
-    std::printf("%-22s %11.0f Hz %11.0f Hz %11.0f Hz %11.2f ms %6.1f/%.1f ms\n", name.c_str(),
+    std::printf("%-22s %11.0f Hz %11.0f Hz %11.0f Hz %11.2f ms %6.1f/%.1f ms %9.1f dB\n", name.c_str(),
                 spectral_centroid(m, 11025), spectral_centroid(m, m.rate / 2.0),
-                spectral_centroid(m, m.rate / 2.0, 0.003), s.attack_ms, s.decay_ms, s.decay40_ms);
+                spectral_centroid(m, m.rate / 2.0, 0.003), s.attack_ms, s.decay_ms, s.decay40_ms, crest_db(m, 0.1));
   };
   row("recorded", recorded);
   for (double speed : {0.5, 2.0, 5.0}) {
