@@ -117,7 +117,7 @@ class Settler {
 
   bool feasible(Point p, double radius, const Slot& slot) const {
     constexpr double kSlack = 1e-12;
-    if (distance(p, {slot.x, slot.y}) > 0.5) return false;
+    if (distance(p, {slot.x, slot.y}) > 1.0) return false;
     for (const Placed& other : placed_)
       if (distance(p, other.centre) < contact(radius, other) - kSlack) return false;
     for (const FrameSide& side : sides_)
@@ -208,7 +208,7 @@ std::vector<RackedBall> rack_balls(const RackSpec& spec) {
   // Each ball's radius in nominal radii, by painted number, uniform within the tolerance.
   std::vector<double> radius(all.size() + 1, 1.0);
   for (std::size_t n = 1; n < radius.size(); ++n) {
-    const double drawn = 1.0 + (2.0 * random.uniform() - 1.0) * kBallDiameterTolerance;
+    const double drawn = 1.0 + (2.0 * random.uniform() - 1.0) * spec.tolerance;
     if (!spec.tight) radius[n] = drawn;
   }
   std::vector<RackedBall> out;

@@ -39,7 +39,8 @@ struct RackSpec {
   RackGame game = RackGame::eight_ball;
   std::uint64_t seed = 0;
   bool tight = false;
-  double radius = 0.028575;  ///< the physics' nominal ball radius, m
+  double radius = 0.028575;                   ///< the physics' nominal ball radius, m
+  double tolerance = kBallDiameterTolerance;  ///< diameters within +- this fraction (larger: pictures only)
 };
 
 struct RackedBall {
