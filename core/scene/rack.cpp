@@ -46,7 +46,9 @@ std::size_t slot_at(const std::vector<Slot>& all, int row, int column) {
   return 0;
 }
 
-/// Which painted number goes in each slot, by the game's rules (WPA racking rules), the rest at random:
+/// Which painted number goes in each slot, by the game's rules (WPA World Standardized Rules, the racks
+/// of Eight Ball, Nine Ball and Ten Ball, rule 9.2: "the one ball at the apex ... the ten ball in the
+/// middle of the triangle", the others "without purposeful or intentional pattern"), the rest at random:
 /// 8-ball the 8 in the middle of the third row, a stripe and a solid in the back corners (which corner
 /// from the seed); 9-ball the 1 at the apex, the 9 in the middle of the diamond; 10-ball the 1 at the
 /// apex, the 10 in the middle of the third row.
