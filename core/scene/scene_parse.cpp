@@ -12,6 +12,7 @@
 #include <string>
 
 #include "camera_key_text.h"
+#include "rack.h"
 #include "scene_lexer.h"
 #include "scene_validate.h"
 #include "spelling.h"
@@ -24,7 +25,7 @@ namespace {
 constexpr std::size_t kMaxErrors = 30;
 
 constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
-constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param"};
+constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack"};
 enum class NumberStatus { ok, not_number, not_finite };
 
 NumberStatus parse_double(std::string_view text, double& out) {
@@ -214,7 +215,7 @@ class Parser {
     if (in_camera_) return camera_entry();
     const Token& t = lexed_.tokens[pos_++];
     const std::string_view k = t.text;
-    if (options_.strict && (k == "pocket" || k == "spin" || k == "param"))
+    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack"))
       fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
     if (k == "cue") return cue(t);
     if (k == "ball") return ball(t);
@@ -223,6 +224,7 @@ class Parser {
     if (k == "pocket") return pocket(t);
     if (k == "spin") return spin(t);
     if (k == "param") return param(t);
+    if (k == "rack") return rack(t);
     if (k == "endcamera") fail(t.loc, "found 'endcamera' without a 'camera' before it");
     if (k == "event" || k == "hover" || k == "look" || k == "follow")
       fail(t.loc, "found '" + std::string(k) + "' outside a camera description; expected one of " +
@@ -257,6 +259,10 @@ class Parser {
     if (auto seen = ball_lines_.find(b.number); seen != ball_lines_.end())
       fail(tokens.number, "ball number " + std::to_string(b.number) + " is already used by the ball on line " +
                               std::to_string(seen->second));
+    if (rack_ && b.number >= 1 && b.number <= rack_ball_count(rack_->spec.game))
+      fail(tokens.number, "ball number " + std::to_string(b.number) + " is already in the " +
+                              std::string(rack_game_name(rack_->spec.game)) + " rack on line " +
+                              std::to_string(rack_->loc.line));
     b.position = vector("the ball's {} position", &tokens.position_x, &tokens.position_z);
     b.velocity = vector("the ball's {} velocity");
     SourceLoc w_loc;
@@ -333,6 +339,41 @@ class Parser {
                                   "); the last value is used"});
     param_lines_[key] = keyword.loc.line;
     params_.emplace_back(spec->name, value);
+  }
+
+  /// `rack <game> [seed <n>] [tight]` (rack.h): the balls are made in finish(), once params are known.
+  void rack(const Token& keyword) {
+    RackLine line;
+    line.loc = keyword.loc;
+    const Token& game = take("a game (8ball, 9ball or 10ball)");
+    const std::optional<RackGame> known = rack_game(game.text);
+    if (!known)
+      fail_at_value(game, "expected a game (8ball, 9ball or 10ball), found " + quote_token(game.text) +
+                              did_you_mean(game.text, {kRackGameNames.begin(), kRackGameNames.end()}));
+    line.spec.game = *known;
+    bool seeded = false;
+    while (!at_end() && (peek().text == "seed" || peek().text == "tight")) {
+      const Token& option = take("a rack option");
+      if (option.text == "tight") {
+        line.spec.tight = true;
+        continue;
+      }
+      SourceLoc seed_loc;
+      const long long seed = integer("the rack's seed", &seed_loc);
+      if (seed < 0 || seeded)
+        fail(seed_loc, seeded ? "the rack has a seed already"
+                              : "expected a seed of 0 or more, found " + quote_token(lexed_.tokens[pos_ - 1].text));
+      line.spec.seed = static_cast<std::uint64_t>(seed);
+      seeded = true;
+    }
+    if (rack_)
+      fail(keyword.loc, "a scene has one rack, and there is already one on line " + std::to_string(rack_->loc.line));
+    for (const auto& [number, ball_line] : ball_lines_)
+      if (number >= 1 && number <= rack_ball_count(line.spec.game))
+        fail(game.loc, "the " + std::string(game.text) + " rack holds ball " + std::to_string(number) +
+                           ", which the ball on line " + std::to_string(ball_line) + " already paints");
+    line.at = scene_.balls.size();
+    rack_ = line;
   }
 
   void camera(const Token& keyword) {
@@ -474,15 +515,55 @@ class Parser {
   void finish() {
     if (in_camera_ && !too_many_errors_)
       error(scene_.camera_loc, "the camera description has no 'endcamera'; expected 'endcamera', found end of file");
+    for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
+    if (scene_.rails.empty()) scene_.rails = standard_rails();
+    if (scene_.pockets.empty()) scene_.pockets = standard_pockets();
+    if (rack_) add_rack();
     for (std::size_t i = 0; i < map_.spins.size(); ++i) {
       const auto index = static_cast<std::size_t>(map_.spins[i].ball);
       if (index < scene_.balls.size()) scene_.balls[index].spin = spins_[i];
     }
-    for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
-    if (scene_.rails.empty()) scene_.rails = standard_rails();
-    if (scene_.pockets.empty()) scene_.pockets = standard_pockets();
   }
 
+ private:
+  /// The rack's balls at the rack line's place in file order, by painted number; an error at the rack
+  /// line when they do not all fit inside the cushions.
+  void add_rack() {
+    const RackLine& line = *rack_;
+    RackSpec spec = line.spec;
+    spec.radius = scene_.physics.ball_radius;
+    Scene alone;  // the rack by itself on the scene's table, checked as ball lines are
+    alone.physics = scene_.physics;
+    alone.rails = scene_.rails;
+    SceneSourceMap alone_map;
+    alone_map.rails = map_.rails;
+    std::vector<SceneSourceMap::BallTokens> tokens;
+    bool finite = true;
+    for (const RackedBall& r : rack_balls(spec)) {
+      Ball b;
+      b.number = r.number;
+      b.position = Vec3(r.x, r.y, spec.radius);
+      b.loc = line.loc;
+      finite = finite && b.position.allFinite();
+      alone.balls.push_back(b);
+      tokens.push_back({line.loc, line.loc, line.loc});
+    }
+    alone_map.balls = tokens;
+    std::vector<Diagnostic> found;
+    if (finite) validate_scene(alone, alone_map, found);
+    const auto misfit = std::find_if(found.begin(), found.end(), [&](const Diagnostic& d) {
+      return d.severity == Severity::error && d.loc.line == line.loc.line && d.loc.column == line.loc.column;
+    });
+    const std::string game(rack_game_name(spec.game));
+    if (!finite) error(line.loc, "the " + game + " rack does not fit inside the cushions (ball radius too large)");
+    if (misfit != found.end())
+      error(line.loc, "the " + game + " rack does not fit inside the cushions: " + misfit->message);
+    const auto at = static_cast<std::ptrdiff_t>(std::min(line.at, scene_.balls.size()));
+    scene_.balls.insert(scene_.balls.begin() + at, alone.balls.begin(), alone.balls.end());
+    map_.balls.insert(map_.balls.begin() + at, tokens.begin(), tokens.end());
+  }
+
+ public:
  private:
   LexedText lexed_;
   const ParseOptions& options_;
@@ -496,6 +577,12 @@ class Parser {
   SceneSourceMap map_;
   std::vector<Vec3> spins_;  ///< parallel to map_.spins
   std::map<int, int> ball_lines_;
+  struct RackLine {
+    RackSpec spec;
+    SourceLoc loc;       ///< the `rack` keyword
+    std::size_t at = 0;  ///< how many balls come before it in the file
+  };
+  std::optional<RackLine> rack_;
   std::map<std::string_view, int> param_lines_;
   std::vector<std::pair<std::string_view, double>> params_;
 };

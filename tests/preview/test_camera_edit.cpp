@@ -326,18 +326,18 @@ TEST_SUITE("camera edit") {
     CHECK(camera_key_label("at 3", painted) == "at 3");
     CHECK(camera_key_label("cue", painted) == "cue");
 
-    // The built-in break: ball 11 is the 12, ball 5 the 8.
+    // The built-in break: its rack gives every ball its painted number as its index.
     ShotResult r = load_shot(builtin_scene_text(), "break");
     REQUIRE(r.shot);
     const TimelineData data = timeline_data(*r.shot);
     REQUIRE(data.camera.size() == 5);
-    CHECK(data.camera[2].label == "follow ball 11 (12)");
-    CHECK(data.camera[3].label == "look ball 5 (8)");
-    CHECK(data.camera[4].key == "pocket 5");
-    CHECK(camera_key_label(data.camera[2].key, data.painted) == "third cushion 11 (12)");
+    CHECK(data.camera[2].label == "follow ball 3");
+    CHECK(data.camera[3].label == "look ball 1");
+    CHECK(data.camera[4].key == "pocket 1");
+    CHECK(camera_key_label(data.camera[2].key, data.painted) == "third cushion 3");
     bool group_named = false;
     for (const TimelineEventMark& e : data.events)
-      group_named = group_named || e.label.find("11 (12)") != std::string::npos;
+      group_named = group_named || e.label.find(" 15") != std::string::npos;
     CHECK(group_named);
     // Every drop is a moment a camera key names.
     for (const TimelineDrop& d : data.drops)

@@ -35,31 +35,32 @@ bool pocketed(const Shot& shot, int ball, int pocket) {
 }  // namespace
 
 TEST_SUITE("movie scenes") {
-  TEST_CASE(
-      "the built-in break is scenes/break.scn: a tight rack broken at 10.7 m/s that opens, with a follow camera") {
+  TEST_CASE("the built-in break is scenes/break.scn: a real rack broken at 10.7 m/s that opens, with a follow camera") {
     CHECK(std::string(builtin_scene_text()) == scene_file("break.scn"));
     const auto shot = load_clean(std::string(builtin_scene_text()), "break");
     const Scene& scene = shot->scene;
     const Timeline& timeline = shot->timeline;
     REQUIRE(scene.balls.size() == 16);
-    // A tight rack: every object ball touches a neighbour.
+    // A real rack: every object ball within a few tenths of a millimetre of a neighbour, none overlapping.
     const double R = scene.physics.ball_radius;
     for (std::size_t i = 1; i < 16; ++i) {
       double nearest = 1e9;
       for (std::size_t j = 1; j < 16; ++j)
         if (j != i) nearest = std::min(nearest, (scene.balls[i].position - scene.balls[j].position).norm());
-      CHECK(nearest == doctest::Approx(2 * R).epsilon(1e-6));
+      CHECK(nearest >= 2 * R - 1e-12);
+      CHECK(nearest < 2 * R + 0.5e-3);
     }
     // A real break speed (pros average 10.7 m/s).
     const double speed = scene.balls[0].velocity.norm();
     CHECK(speed >= 8.0);
     CHECK(speed <= 11.0);
-    // The cue ball meets the rack in one group collision, and no ball takes half the rack's energy.
+    // The cue ball meets the rack in one group collision of the balls that touch or nearly touch (a
+    // ball with a wider gap joins later), and no ball takes half the rack's energy.
     const Event* hit = nullptr;
     for (const Event& e : timeline.events())
       if (!hit && e.type == EventType::ball_ball) hit = &e;
     REQUIRE(hit);
-    CHECK(hit->balls.size() == 16);
+    CHECK(hit->balls.size() >= 12);
     CHECK(hit->contacts.size() >= 15);
     double rack = 0, largest = 0;
     for (std::size_t k = 0; k < hit->balls.size(); ++k) {
@@ -87,7 +88,7 @@ TEST_SUITE("movie scenes") {
     // Balls drop, and the cue ball stays on the table.
     CHECK(!timeline.pocket_drops().empty());
     for (const PocketDrop& d : timeline.pocket_drops()) CHECK(d.ball != 0);
-    CHECK(pocketed(*shot, ball_numbered(*shot, 8), 1));
+    CHECK(pocketed(*shot, ball_numbered(*shot, 1), 4));
     bool follows = false;
     for (const CameraShot& c : scene.camera) follows = follows || c.mode == CameraMode::follow;
     CHECK(follows);

@@ -152,22 +152,22 @@ TEST_SUITE("camera_keys") {
     const Timeline timeline = simulate(*parse_scene(balls, "break").scene);
     const Event& group = timeline.events().at(2);
     REQUIRE_FALSE(group.contacts.empty());
-    // Ball 2 (the 9) behind the apex: its contact with the apex ball begins inside the group.
+    // Ball 4 behind the apex ball, the 2: its contact with the apex ball begins inside the group.
     std::optional<double> apex, second_row;
     for (const Contact& c : group.contacts) {
-      if (c.a == 0 && c.b == 1 && !apex) apex = c.time;
-      if (c.a == 1 && c.b == 2 && !second_row) second_row = c.time;
+      if (c.a == 0 && c.b == 2 && !apex) apex = c.time;
+      if (c.a == 2 && c.b == 4 && !second_row) second_row = c.time;
     }
     REQUIRE(apex);
     REQUIRE(second_row);
-    CHECK(instant(balls, "hit 0 1") == *apex);
-    CHECK(instant(balls, "hit 2 1") == *second_row);
+    CHECK(instant(balls, "hit 0 2") == *apex);
+    CHECK(instant(balls, "hit 4 2") == *second_row);
     CHECK(*second_row > group.time);
 
     REQUIRE_FALSE(timeline.pocket_drops().empty());
     const PocketDrop& drop = timeline.pocket_drops().front();
     CHECK(instant(balls, "pocket " + std::to_string(drop.ball)) == drop.time);
-    CHECK(instant(balls, "cushion 11") == cushion_times(timeline, 11).at(0));
+    CHECK(instant(balls, "cushion 3") == cushion_times(timeline, 3).at(0));
   }
 
   TEST_CASE("the camera script blends on the keys' instants exactly as on event times") {

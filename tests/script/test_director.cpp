@@ -224,10 +224,10 @@ TEST_SUITE("director") {
     CHECK((stroke.location - cue).dot(aim) < -0.5);
     CHECK(stroke.location.z() > cue.z() + 0.3);
     CHECK((stroke.target - stroke.location).dot(aim) > 0);
-    // The 8 (ball 5), the last ball down, watched from the contact that sets it going; then wide as it drops.
-    CHECK(script.shots[1].ball == 5);
+    // The 1 (ball 1), the last ball down, watched from the contact that sets it going; then wide as it drops.
+    CHECK(script.shots[1].ball == 1);
     CHECK(script.shots[1].mode != CameraMode::hover);
-    CHECK(camera_key_text(script.shots[2].key) == "pocket 5");
+    CHECK(camera_key_text(script.shots[2].key) == "pocket 1");
     CHECK(script.shots[2].mode == CameraMode::hover);
   }
 

@@ -478,7 +478,13 @@ TEST_SUITE("sound") {
     CHECK(*integrated_loudness(tap_track) <= *integrated_loudness(break_track) - 8.0);
     // The room tone is the same in both: their quietest 100 ms (the room alone) agree, at the tone's level.
     const double tap_room = test::quietest_window_db(tap_track, 0.1);
-    CHECK(tap_room == doctest::Approx(test::quietest_window_db(break_track, 0.1)).scale(0).epsilon(0.25 / 55));
+    // Over the same stretch of time: the room tone is one noise, and a longer track has more 100 ms
+    // windows of it to find a quieter one in (the break's 10 s dip to -56.1 dB where its first 8 s,
+    // the tap's length, give -55.7).
+    AudioBuffer break_start = break_track;
+    break_start.left.resize(std::min(break_start.left.size(), tap_track.left.size()));
+    break_start.right.resize(break_start.left.size());
+    CHECK(tap_room == doctest::Approx(test::quietest_window_db(break_start, 0.1)).scale(0).epsilon(0.25 / 55));
     CHECK(std::abs(tap_room - kRoomToneDb) < 3.0);
   }
 
