@@ -27,7 +27,8 @@ done
 dpkg-deb -c "$deb" | awk '{print $NF}' > "$tmp/files"
 for file in ./usr/bin/billiards-export ./usr/bin/billiards-preview ./usr/share/man/man1/billiards-export.1 \
             ./usr/share/man/man1/billiards-preview.1 ./usr/share/bash-completion/completions/billiards-export \
-            ./usr/share/bash-completion/completions/billiards-preview ./usr/share/billiards-sim/scenes/break.scn; do
+            ./usr/share/bash-completion/completions/billiards-preview ./usr/share/billiards-sim/scenes/break.scn \
+            ./usr/share/doc/billiards-sim/copyright; do
   grep -qxF "$file" "$tmp/files" || fail "the package lacks $file"
 done
 # Nothing else in usr/bin (no test or generator program), nothing outside usr/.
