@@ -19,6 +19,9 @@ constexpr const char* kUsageTail = R"(
 exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 )";
 
+/// --quality's presets, in the order of Quality's values.
+constexpr std::string_view kQualityPresets = "draft|final";
+
 bool bad(std::string& message, const std::string& name, const std::string& text, const std::string& expected) {
   message = bad_value_message(name, text, expected);
   return false;
@@ -104,10 +107,11 @@ OptionTable export_option_table(ExportOptions& o) {
        [&o](S, S, std::string&) { return o.no_render = true; }},
       {"--fps", "N", "frames per second, 1 to 1000 (default: 30)", {}},
       {"--size", "WxH", "frame size in pixels (default: 1280x720)", {}},
-      {"--quality", "draft|final", "POV-Ray quality: draft is fast, final antialiased (default: final)",
+      {"--quality", kQualityPresets, "POV-Ray quality: draft is fast, final antialiased (default: final)",
        [&o](S n, S v, std::string& m) {
-         if (v != "draft" && v != "final") return bad(m, n, v, "draft or final");
-         o.quality = v == "draft" ? Quality::draft : Quality::final;
+         const auto preset = choice_index(kQualityPresets, v);
+         if (!preset) return bad(m, n, v, "draft or final");
+         o.quality = *preset == 0 ? Quality::draft : Quality::final;
          return true;
        }},
       {"--jobs", "N", "POV-Ray processes run in parallel, 1 to 1024 (default: one per core)",
@@ -137,7 +141,7 @@ OptionTable export_option_table(ExportOptions& o) {
       {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",
-       "auto|scene",
+       kCameraChoices,
        "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
        {}},
       {"-h, --help", "", "show this help and exit", {}},

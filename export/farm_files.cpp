@@ -120,33 +120,44 @@ std::string chunks_text(const std::vector<std::pair<int, int>>& chunks) {
   return chunk_lines;
 }
 
+namespace {
+
+/// The lines of a job script that choose the program it runs: billiards-export as installed on the
+/// node (the Debian package, README "Rendering on a Slurm cluster") when it is this very version,
+/// otherwise the copy submitted with the run. The job's log names the one chosen.
+std::string program_choice(const std::string& quoted_dir) {
+  return "dir=" + quoted_dir +
+         "\n"
+         "program=\"$dir/" +
+         kProgram +
+         "\"\n"
+         "installed=$(command -v billiards-export || true)\n"
+         "if [ -n \"$installed\" ] && [ \"$(\"$installed\" --version 2>/dev/null || true)\" = " +
+         sh_quote("billiards-export " BSIM_VERSION) +
+         " ]; then\n"
+         "  program=$installed\n"
+         "fi\n"
+         "echo \"running $program\" >&2\n";
+}
+
+}  // namespace
+
 std::string task_script(const std::string& dir) {
-  const std::string quoted_dir = sh_quote(dir);
   return "#!/bin/sh\n"
          "# A task of the frame array (billiards-export --farm slurm): renders the frames of its chunk,\n"
          "# line SLURM_ARRAY_TASK_ID + 1 of chunks.txt (FIRST-LAST), that are not rendered yet.\n"
-         "set -eu\n"
-         "dir=" +
-         quoted_dir +
-         "\n"
-         "frames=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" \"$dir/" +
-         kChunks +
+         "set -eu\n" +
+         program_choice(sh_quote(dir)) + "frames=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" \"$dir/" + kChunks +
          "\")\n"
-         "exec \"$dir/" +
-         kProgram + "\" \"$dir\" --farm render --frames \"$frames\"\n";
+         "exec \"$program\" \"$dir\" --farm render --frames \"$frames\"\n";
 }
 
 std::string movie_script(const std::string& dir) {
-  const std::string quoted_dir = sh_quote(dir);
   return "#!/bin/sh\n"
          "# The movie job (billiards-export --farm slurm): runs when every task of the frame array has\n"
          "# ended; checks every frame, names the missing ones, and encodes movie.mp4 as a local run does.\n"
-         "set -eu\n"
-         "dir=" +
-         quoted_dir +
-         "\n"
-         "exec \"$dir/" +
-         kProgram + "\" \"$dir\" --farm assemble\n";
+         "set -eu\n" +
+         program_choice(sh_quote(dir)) + "exec \"$program\" \"$dir\" --farm assemble\n";
 }
 
 std::string task_log(const std::string& dir, const FarmConf& conf, int frame) {

@@ -104,7 +104,8 @@ bool stage_farm_files(const std::string& dir, const OutputStage& stage, const Fa
       !write_file_atomically(stage.path(kTaskScript), task_script(dir), error) ||
       !write_file_atomically(stage.path(kMovieScript), movie_script(dir), error))
     return false;
-  // The jobs run this very program from DIR: nothing on the nodes but povray and ffmpeg is assumed.
+  // The jobs run the billiards-export installed on the node when it is this version, otherwise this
+  // copy: then nothing on the nodes but povray and ffmpeg is assumed.
   const std::string self = fs::read_symlink("/proc/self/exe", ec).string();
   if (ec || !fs::copy_file(self, stage.path(kProgram), ec) || ec) {
     error = "cannot copy billiards-export into " + stage.path(kProgram) + (ec ? ": " + ec.message() : "");

@@ -52,22 +52,19 @@ bool parse_time(const std::string& text, TimeSpec& at) {
   return true;
 }
 
+/// --overlay's names, in the order of the flags below.
+constexpr std::string_view kOverlayNames = "paths|events|camera|table";
+
 bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
   std::string_view rest = text;
   if (rest.empty()) return false;
+  bool PreviewOverlays::*const flags[] = {&PreviewOverlays::paths, &PreviewOverlays::events, &PreviewOverlays::camera,
+                                          &PreviewOverlays::table};
   while (true) {
     const auto comma = rest.find(',');
-    const std::string_view item = rest.substr(0, comma);
-    if (item == "paths")
-      overlays.paths = true;
-    else if (item == "events")
-      overlays.events = true;
-    else if (item == "camera")
-      overlays.camera = true;
-    else if (item == "table")
-      overlays.table = true;
-    else
-      return false;
+    const auto index = choice_index(kOverlayNames, rest.substr(0, comma));
+    if (!index) return false;
+    overlays.*flags[*index] = true;
     if (comma == std::string_view::npos) return true;
     rest.remove_prefix(comma + 1);
   }
@@ -186,11 +183,12 @@ OptionTable preview_option_table(PreviewOptions& o) {
          if (!parse_overlays(v, o.overlays))
            return bad(m, n, v, "a comma-separated list of paths, events, camera, table");
          return true;
-       }},
+       },
+       true, kOverlayNames},
       {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",
-       "auto|scene",
+       kCameraChoices,
        "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
        {}},
       {"--write-camera", "FILE",

@@ -92,6 +92,35 @@ std::vector<std::string_view> option_names(const OptionRow& row) {
   return names;
 }
 
+namespace {
+
+std::vector<std::string_view> split_choices(std::string_view choices) {
+  std::vector<std::string_view> words;
+  for (std::string_view rest = choices; !rest.empty();) {
+    const std::size_t bar = rest.find('|');
+    words.push_back(rest.substr(0, bar));
+    rest = bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 1);
+  }
+  return words;
+}
+
+}  // namespace
+
+std::vector<std::string_view> option_values(const OptionRow& row) {
+  if (!row.values.empty()) return split_choices(row.values);
+  std::vector<std::string_view> words;
+  for (std::string_view word : split_choices(row.argument))
+    if (std::all_of(word.begin(), word.end(), [](char c) { return c >= 'a' && c <= 'z'; })) words.push_back(word);
+  return words;
+}
+
+std::optional<std::size_t> choice_index(std::string_view choices, std::string_view word) {
+  const std::vector<std::string_view> words = split_choices(choices);
+  const auto found = std::find(words.begin(), words.end(), word);
+  if (found == words.end()) return std::nullopt;
+  return static_cast<std::size_t>(found - words.begin());
+}
+
 std::string usage_text(std::string_view head, const OptionTable& table, std::string_view tail) {
   constexpr std::size_t kHelpColumn = 25;  // the help starts after this many characters
   std::string text(head);
@@ -142,7 +171,7 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::strin
   const auto v = reader.value(message);
   if (!v) return SharedOption::bad;
   if (name == "--camera") {
-    if (*v != "scene" && *v != "auto") {
+    if (!choice_index(kCameraChoices, *v)) {
       message = bad_value_message(name, *v, "auto (the automatic director's script) or scene (the scene's own)");
       return SharedOption::bad;
     }

@@ -64,11 +64,26 @@ struct OptionRow {
   std::function<bool(const std::string& name, const std::string& value, std::string& message)> apply;
   /// Whether --help lists the row (an option the program's jobs use may be left out).
   bool shown = true;
+  /// The words the value is made of, '|'-separated, when ARGUMENT does not list them itself (--overlay
+  /// LIST: "paths|events|camera|table"); the man pages and the shell completion offer them.
+  std::string_view values = {};
 };
 using OptionTable = std::vector<OptionRow>;
 
 /// The names of an option row: "-o, --output" gives {"-o", "--output"}.
 std::vector<std::string_view> option_names(const OptionRow& row);
+
+/// The words an option's value is chosen from, which the man pages and the shell completion offer:
+/// the row's `values`, or else the literal words of its ARGUMENT ("draft|final" gives {"draft", "final"},
+/// "LUFS|off" gives {"off"}, "N" none).
+std::vector<std::string_view> option_values(const OptionRow& row);
+
+/// The place of `word` among '|'-separated `choices` ("draft|final"): how an option whose ARGUMENT
+/// lists its values reads them, so that the parser, --help and the completion share one list.
+std::optional<std::size_t> choice_index(std::string_view choices, std::string_view word);
+
+/// --camera's values, for both programs' rows and apply_shared_option.
+inline constexpr std::string_view kCameraChoices = "auto|scene";
 
 /// The usage text: `head`, then each shown row of `table` (an option as "  NAMES ARGUMENT" with its
 /// help from the 26th column on, a line of text as it is), then `tail`.

@@ -206,4 +206,38 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(has(stored.out, "all 10 frames are rendered already"));
     CHECK(fs::exists(farm.out / "frames/frame_00009.png"));
   }
+
+  TEST_CASE("the jobs run the billiards-export installed on the node when it is this version, else the copy") {
+    Farm farm;
+    REQUIRE(farm.submit(" --chunk 3").exit_code == 0);  // chunks 0-2, 3-5, 6-8; task 1 renders 3-5
+    const std::string dir = farm.out.string();
+    // A stand-in for the installed program: answers --version with `version`, records any other run.
+    const fs::path record = farm.dir.path / "installed.args";
+    const auto install = [&](const std::string& version) {
+      const std::string program =
+          farm.dir.file("node/billiards-export", "#!/bin/sh\n[ \"$1\" = --version ] && { echo '" + version +
+                                                     "'; exit 0; }\necho \"$*\" >> " + sh(record.string()) + "\n");
+      fs::permissions(program, fs::perms::owner_all);
+    };
+    const auto job = [&](const std::string& script) {
+      return bsim::test::run_command("PATH=" + sh((farm.dir.path / "node").string()) +
+                                     ":\"$PATH\" SLURM_ARRAY_TASK_ID=1 BSIM_CACHE_DIR=off sh " +
+                                     sh(dir + "/farm/" + script));
+    };
+    // The installed program of this version (the Debian package): the tasks and the movie job run it.
+    install(std::string("billiards-export ") + BSIM_VERSION);
+    const bsim::test::CommandResult task = job("task.sh");
+    CHECK_MESSAGE(task.exit_code == 0, task.err);
+    CHECK(has(task.err, "running " + (farm.dir.path / "node/billiards-export").string()));
+    CHECK(job("movie.sh").exit_code == 0);
+    CHECK(bsim::test::read_file(record) == dir + " --farm render --frames 3-5\n" + dir + " --farm assemble\n");
+    // Another version installed: the copy submitted with the run, which finds the frames missing.
+    fs::remove(record);
+    install("billiards-export 0.0.1");
+    const bsim::test::CommandResult movie = job("movie.sh");
+    CHECK(movie.exit_code == 1);
+    CHECK(has(movie.err, "running " + dir + "/farm/billiards-export"));
+    CHECK(has(movie.err, "no movie: 10 of 10 frames are missing"));
+    CHECK_FALSE(fs::exists(record));
+  }
 }
