@@ -66,6 +66,8 @@ bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
       overlays.camera = true;
     else if (item == "table")
       overlays.table = true;
+    else if (item == "aim")
+      overlays.aim = true;
     else
       return false;
     if (comma == std::string_view::npos) return true;
@@ -181,10 +183,11 @@ OptionTable preview_option_table(PreviewOptions& o) {
       {"--fps", "N", "animatic frames per second, 1 to 1000 (default: 30)", {}},
       {"--overlay", "LIST",
        "draw extras, comma-separated: paths, events, camera, table\n"
-       "(the rails', pockets' and balls' numbers) (default: none)",
+       "(the rails', pockets' and balls' numbers), aim (for 'cue I pot B P': the\n"
+       "ghost ball, the aim line, the ball's path to the pocket) (default: none)",
        [&o](S n, S v, std::string& m) {
          if (!parse_overlays(v, o.overlays))
-           return bad(m, n, v, "a comma-separated list of paths, events, camera, table");
+           return bad(m, n, v, "a comma-separated list of paths, events, camera, table, aim");
          return true;
        }},
       {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},

@@ -23,6 +23,7 @@ struct PreviewOverlays {
   bool events = false;  ///< event markers
   bool camera = false;  ///< the camera's own path seen from above
   bool table = false;   ///< the rails', pockets' and balls' numbers
+  bool aim = false;     ///< for a `cue I pot B P` shot: the ghost ball, the aim line, the ball's path to the pocket
 };
 
 /// fps, width, height, size_given and strict are the options both programs share (SharedOptions).
