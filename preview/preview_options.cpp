@@ -142,7 +142,7 @@ bool check_combination(PreviewOptions& o, std::string& message) {
     message = "-o names the picture of --at or --timeline; give one of them";
   else if (o.write_camera && o.camera_given && !o.auto_camera)
     message = "--write-camera writes the automatic director's script, which --camera scene turns off";
-  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera))
+  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera || o.write_scene))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
   else if (o.movie && !has_extension(*o.movie, ".mp4"))
     message = bad_value_message("--movie", *o.movie, "a file name ending in .mp4");
@@ -200,6 +200,11 @@ OptionTable preview_option_table(PreviewOptions& o) {
        "write the automatic director's camera script as scene text (camera ...\n"
        "endcamera) to FILE, or to standard output for -; implies --camera auto",
        store_file(o.write_camera, "a file, or - for standard output")},
+      {"--write-scene", "FILE",
+       "write the scene with every 'cue I pot B P' resolved to the heading found\n"
+       "(and the struck ball's velocity and spin turned to it) to FILE, or to\n"
+       "standard output for -",
+       store_file(o.write_scene, "a file, or - for standard output")},
       {"--quit-after", "SECONDS", "interactive: close the window after this long (default: stay open)",
        [&o](S n, S v, std::string& m) {
          const auto seconds = parse_real_option(v);
