@@ -14,15 +14,10 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
 
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
-  if (shot->scene.cue.aims()) {
-    // `cue I pot B P`: play the shot at the heading that pots B (aim.h), or fail at the cue line.
-    const AimResult aim = aim_cue(shot->scene);
-    if (!aim.heading_deg) {
-      result.diagnostics.push_back({Severity::error, shot->scene.cue.loc, aim.failure});
-      return result;
-    }
-    const Scene written = shot->scene;
-    strike_heading(written, *aim.heading_deg, shot->scene);
+  // `cue I pot B P`: play the shot at the heading that pots B (aim.h), or fail at the cue line.
+  if (const std::string failure = apply_aim(shot->scene); !failure.empty()) {
+    result.diagnostics.push_back({Severity::error, shot->scene.cue.loc, failure});
+    return result;
   }
   shot->timeline = simulate(shot->scene);
   if (camera == CameraChoice::automatic) {

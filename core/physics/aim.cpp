@@ -293,4 +293,13 @@ void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
 
 AimResult aim_cue(const Scene& scene) { return Solver(scene).run(); }
 
+std::string apply_aim(Scene& scene) {
+  if (!scene.cue.aims()) return "";
+  const AimResult aim = aim_cue(scene);
+  if (!aim.heading_deg) return aim.failure;
+  const Scene written = scene;
+  strike_heading(written, *aim.heading_deg, scene);
+  return "";
+}
+
 }  // namespace bsim

@@ -40,4 +40,9 @@ inline constexpr double kMaxCutDeg = 89.0;
 /// ball and pocket exist). Deterministic: the same scene gives the same heading to the last bit.
 AimResult aim_cue(const Scene& scene);
 
+/// For a scene whose cue aims: finds the heading (aim_cue) and strikes `scene` with it (strike_heading),
+/// so that simulate(scene) plays the aimed shot. Returns the failure (empty when it pots, and for a
+/// scene with a numeric heading, which is left as it is).
+std::string apply_aim(Scene& scene);
+
 }  // namespace bsim
