@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 #include "simulate.h"
 #include "table.h"
@@ -42,9 +44,32 @@ std::string metres(double m) {
   return text;
 }
 
+/// m along the ray p + s u (u a unit vector) at which a ball of radius R centred on it first touches
+/// the segment a-b (a cushion's nose line, its ends the jaws), or infinity.
+double first_touch(const Vec3& p, const Vec3& u, const Vec3& a, const Vec3& b, double R) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Vec3& end : {a, b}) {  // the ends: a circle of radius R about each
+    const Vec3 d = p - end;
+    const double half_b = d.dot(u), c = d.squaredNorm() - R * R, disc = half_b * half_b - c;
+    if (disc >= 0 && -half_b - std::sqrt(disc) >= 0) best = std::min(best, -half_b - std::sqrt(disc));
+  }
+  const Vec3 along = b - a;
+  const double length = along.norm();
+  if (length == 0) return best;
+  const Vec3 t = along / length, n(-t.y(), t.x(), 0);
+  const double side = n.dot(p - a) >= 0 ? 1.0 : -1.0, closing = side * n.dot(u);
+  if (closing < 0) {  // the line R off the segment on the ball's side
+    const double s = (R - side * n.dot(p - a)) / closing;
+    const double at = t.dot(p + s * u - a);
+    if (s >= 0 && at >= 0 && at <= length) best = std::min(best, s);
+  }
+  return best;
+}
+
 /// The directions the target ball may leave in and drop: offsets from the direction to the drop
-/// circle's centre, rad. Its centre must cross the drop circle, and the ball must clear both jaws (the
-/// cushions' nose ends) by its radius: a side pocket seen at a shallow angle is narrowed by its near jaw.
+/// circle's centre, rad. Its centre must cross the drop circle before the ball touches a cushion or a
+/// jaw (a nose end): a corner pocket seen along its axis is open on both sides, a side pocket seen at a
+/// shallow angle is narrowed by its near jaw. Sampled finely; the widest run of open directions is it.
 struct Window {
   double lo = 0, hi = 0;  ///< rad, offsets from `toward`
   double toward = 0;      ///< rad, the direction from the target ball to the drop circle's centre
@@ -53,27 +78,32 @@ struct Window {
   double middle() const { return toward + (lo + hi) / 2; }
 };
 
-Window pocket_window(const Vec3& ball, const PocketMouth& mouth, double R) {
+Window pocket_window(const Vec3& ball, const PocketMouth& mouth, const std::vector<Rail>& rails, double R) {
+  constexpr int kSamples = 400;
   Window w;
-  const Vec3 to_centre = mouth.centre - flat(ball);
+  const Vec3 from = flat(ball), to_centre = mouth.centre - from;
   w.distance = to_centre.norm();
   w.toward = angle_of(to_centre);
   const double r = mouth.drop_radius;
-  const double half = w.distance > r ? std::asin(r / w.distance) : kPi / 2;
-  w.lo = -half;
-  w.hi = half;
-  if (!mouth.jawed()) return w;
-  for (const Vec3& nose : mouth.nose) {
-    const Vec3 to_jaw = nose - flat(ball);
-    const double d = to_jaw.norm();
-    if (d <= R) return {0, 0, w.toward, w.distance};
-    const double phi = wrap(angle_of(to_jaw) - w.toward);
-    const double clear = std::asin(R / d);
-    if (phi > 0)
-      w.hi = std::min(w.hi, phi - clear);
-    else
-      w.lo = std::max(w.lo, phi + clear);
+  if (w.distance <= r) return {-kPi / 2, kPi / 2, w.toward, w.distance};  // over the pocket already
+  const double half = std::asin(r / w.distance);
+  int run = 0, best_run = 0, best_end = -1;
+  for (int k = 0; k <= kSamples; ++k) {
+    const double offset = -half + 2 * half * k / kSamples;
+    const Vec3 u = unit_at(w.toward + offset);
+    const double across = w.distance * std::sin(offset), along = w.distance * std::cos(offset);
+    const double enters = along - std::sqrt(std::max(0.0, r * r - across * across));
+    bool open = std::abs(across) < r;
+    for (const Rail& rail : rails) open = open && first_touch(from, u, flat(rail.a), flat(rail.b), R) > enters;
+    run = open ? run + 1 : 0;
+    if (run > best_run) {
+      best_run = run;
+      best_end = k;
+    }
   }
+  if (best_run < 2) return {0, 0, w.toward, w.distance};
+  w.hi = -half + 2 * half * best_end / kSamples;
+  w.lo = -half + 2 * half * (best_end - best_run + 1) / kSamples;
   return w;
 }
 
@@ -100,7 +130,7 @@ class Solver {
   AimResult run() {
     const Vec3 target_at = flat(written_.ball(target_).position);
     const Vec3 struck_at = flat(written_.ball(written_.cue.target).position);
-    window_ = pocket_window(target_at, mouth_, R_);
+    window_ = pocket_window(target_at, mouth_, written_.rails, R_);
     want_ = window_.middle();
     result_.entry = target_at + unit_at(want_) * std::max(0.0, window_.distance);
     result_.ghost = target_at - unit_at(want_) * (2 * R_);

@@ -92,6 +92,10 @@ TEST_SUITE("aim") {
     CHECK(heading == doctest::Approx(270).epsilon(1e-6));  // straight down the middle, by symmetry
     CHECK(loaded_pots("cue 0 pot 1 1\n" + two_balls(-0.5, -0.3, 2, 0, -0.2, 0.2), 1));
     CHECK(loaded_pots("cue 0 pot 1 4\n" + two_balls(0.6, 0.1, 2, 0, 0.3, -0.3), 4));
+    // At 20 degrees to the cushion the near jaw hides the side pocket's centre from the 5 (it passes
+    // 2.3 cm from the line to it, under a ball radius): the 5 is sent past the jaw, to the far side of
+    // the drop circle, and drops.
+    CHECK(loaded_pots("cue 0 pot 1 1\n" + two_balls(0.9, 0.2, 2, 0, 0.5, 0.45), 1));
   }
 
   TEST_CASE("with swerve and english the ghost-ball heading misses and the solver's heading pots") {
