@@ -1,12 +1,18 @@
 // aim_bench: the time `cue I pot B P` takes to find its heading (aim.h) on a 16-ball table: the cue
 // ball, the 5 to cut into the top-right corner, and fourteen more balls spread over the table (none in
 // the way), so every shot the solver plays moves a full table's worth of balls.
-//   aim_bench [--runs N]     N aims timed (default 50); prints the median and the shots played per aim
+//   aim_bench [--runs N] [SCENE]   N aims timed (default 50); prints the median and the shots played per
+//                                  aim, and the ghost-ball heading beside the one found (SCENE: instead
+//                                  of the 16-ball table, a scene file whose cue aims)
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,11 +45,20 @@ std::string sixteen_balls() {
 
 int main(int argc, char** argv) {
   int runs = 50;
-  for (int i = 1; i < argc; ++i)
-    if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-  const bsim::ParseResult parsed = bsim::parse_scene(sixteen_balls(), "aim_bench");
-  if (!parsed.scene) {
-    std::fprintf(stderr, "aim_bench: the bench scene does not parse\n");
+  std::string text = sixteen_balls();
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc) {
+      runs = std::max(1, std::atoi(argv[++i]));
+    } else {
+      std::ifstream in(argv[i]);
+      std::stringstream buffer;
+      buffer << in.rdbuf();
+      text = buffer.str();
+    }
+  }
+  const bsim::ParseResult parsed = bsim::parse_scene(text, "aim_bench");
+  if (!parsed.scene || !parsed.scene->cue.aims()) {
+    std::fprintf(stderr, "aim_bench: the scene does not parse or its cue does not aim\n");
     return 1;
   }
   const bsim::Scene& scene = *parsed.scene;
@@ -63,6 +78,10 @@ int main(int argc, char** argv) {
     }
   }
   std::sort(ms.begin(), ms.end());
+  const bsim::Vec3 from = scene.ball(scene.cue.target).position;
+  const double ghost = std::atan2(probe.ghost.y() - from.y(), probe.ghost.x() - from.x()) * 180 / std::numbers::pi;
+  std::printf("ghost-ball heading %.6f deg, found %.6f deg (%+.4f)\n", ghost, *probe.heading_deg,
+              *probe.heading_deg - ghost);
   const double median = ms[ms.size() / 2];
   std::printf("aim, %zu balls: heading %.6f deg, %d shots played, %.2f ms per aim (median of %d), %.3f ms a shot\n",
               scene.balls.size(), *probe.heading_deg, probe.simulations, median, runs, median / probe.simulations);
