@@ -144,7 +144,7 @@ class Solver {
     if (cut > kMaxCutDeg || (result_.ghost - struck_at).norm() < 1e-9)
       return fail("the cut is thinner than " + fmt_deg(kMaxCutDeg) + " (it would need " + fmt_deg(cut) + ")");
     if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue.target, target_}); !why.empty())
-      return fail("the path of the struck ball to " + ball_name(written_, target_) + " is blocked by " + why);
+      return fail("the path of " + struck_name() + " to " + ball_name(written_, target_) + " is blocked by " + why);
     const double ghost_heading = angle_of(result_.ghost - struck_at) * 180 / kPi;
     const Probe best = secant(ghost_heading);
     std::optional<Probe> seed = best.pots ? best : scan(best);
@@ -172,6 +172,12 @@ class Solver {
                       ": " + std::move(why);
     result_.simulations = simulations_;
     return result_;
+  }
+
+  /// "the cue ball", or "the struck ball (ball index 2)" when the cue strikes another.
+  std::string struck_name() const {
+    const int i = written_.cue.target;
+    return written_.ball(i).number == 0 ? "the cue ball" : "the struck ball (" + ball_name(written_, i) + ")";
   }
 
   static std::string fmt_deg(double deg) {
@@ -293,10 +299,10 @@ class Solver {
     const Vec3 centre = mouth_.centre;
     if (!best.hit) {
       const double short_by = (flat(best.struck_rest) - result_.ghost).norm();
-      return "the struck ball cannot reach it (it stops " + metres(short_by) + " short)";
+      return struck_name() + " cannot reach it (it stops " + metres(short_by) + " short)";
     }
     if (grazed_ && std::abs(best.error) > 1e-3)
-      return "the cut is too thin: even grazing it, the struck ball sends it " +
+      return "the cut is too thin: even grazing it, " + struck_name() + " sends it " +
              fmt_deg(std::abs(best.error) * 180 / kPi) + " off the line to the pocket";
     const Vec3 rest = flat(best.target_rest);
     const Vec3 from = flat(written_.ball(target_).position);

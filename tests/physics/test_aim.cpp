@@ -139,12 +139,12 @@ TEST_SUITE("aim") {
     // And in the cue ball's way to the ghost ball.
     const std::string in_front =
         "cue 0 pot 1 2\n" + two_balls(0.3, -0.2, 1, 0, 0.7, 0.1) + "ball 7 0.5 -0.05 0.028575 0 0 0 1 0 0 0\n";
-    CHECK(failure(in_front).find("the path of the struck ball to ball index 1 (the 5) is blocked by ball index 2") !=
+    CHECK(failure(in_front).find("the path of the cue ball to ball index 1 (the 5) is blocked by ball index 2") !=
           std::string::npos);
   }
 
   TEST_CASE("too slow: the cue ball does not reach the ball, or the ball stops short of the pocket") {
-    CHECK(failure("cue 0 pot 1 2\n" + two_balls(-1, -0.3, 0.5, 0, 0.3, 0.1)).find("the struck ball cannot reach it") !=
+    CHECK(failure("cue 0 pot 1 2\n" + two_balls(-1, -0.3, 0.5, 0, 0.3, 0.1)).find("the cue ball cannot reach it") !=
           std::string::npos);
     CHECK(failure("cue 0 pot 1 2\n" + two_balls(-1, -0.3, 0.8, 0, -0.8, -0.25)).find("runs out of speed") !=
           std::string::npos);
@@ -167,6 +167,35 @@ TEST_SUITE("aim") {
     CHECK(itself.shot == nullptr);
     REQUIRE(!itself.diagnostics.empty());
     CHECK(itself.diagnostics[0].message.find("other than the struck one") != std::string::npos);
+  }
+
+  TEST_CASE("the most margin: the heading found lies in the middle of the headings that pot") {
+    // The oracle: the potting interval found here independently, walking out from the heading in steps
+    // of 0.005 degrees until the 5 no longer drops, then halving the last step 12 times.
+    const Scene scene = parsed("cue 0 pot 1 2\n" + two_balls(0.7225, -0.0783, 0.5401, 1.3994, 0.95, 0.42));
+    const AimResult aim = aim_cue(scene);
+    REQUIRE(aim.heading_deg.has_value());
+    const auto pots_at = [&](double heading) {
+      Scene struck = scene;
+      strike_heading(scene, heading, struck);
+      return pots(simulate(struck), 1, 2);
+    };
+    REQUIRE(pots_at(*aim.heading_deg));
+    double edges[2] = {0, 0};
+    for (int side : {0, 1}) {
+      const double step = side ? 0.005 : -0.005;
+      double in = *aim.heading_deg;
+      while (pots_at(in + step) && std::abs(in - *aim.heading_deg) < 10) in += step;
+      double out = in + step;
+      for (int k = 0; k < 12; ++k) {
+        const double mid = (in + out) / 2;
+        (pots_at(mid) ? in : out) = mid;
+      }
+      edges[side] = in;
+    }
+    const double width = edges[1] - edges[0];
+    CHECK(width > 0.5);  // this 35-degree cut pots over about 1.6 degrees of heading
+    CHECK(std::abs(*aim.heading_deg - (edges[0] + edges[1]) / 2) < 0.01 * width);
   }
 
   TEST_CASE("deterministic: the same scene gives the same heading to the bit") {
