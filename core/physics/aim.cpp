@@ -137,21 +137,25 @@ class Solver {
     if (!window_.open())
       return fail("the jaws of pocket " + std::to_string(pocket_) + " close it to " + ball_name(written_, target_) +
                   " from where it lies");
-    if (const std::string why = blocked(target_at, result_.entry, {target_}); !why.empty())
-      return fail("the path of " + ball_name(written_, target_) + " to pocket " + std::to_string(pocket_) +
-                  " is blocked by " + why);
     const double cut = std::abs(wrap(want_ - angle_of(result_.ghost - struck_at))) * 180 / kPi;
     if (cut > kMaxCutDeg || (result_.ghost - struck_at).norm() < 1e-9)
       return fail("the cut is thinner than " + fmt_deg(kMaxCutDeg) + " (it would need " + fmt_deg(cut) + ")");
-    if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue.target, target_}); !why.empty())
-      return fail("the path of " + struck_name() + " to " + ball_name(written_, target_) + " is blocked by " + why);
     const double ghost_heading = angle_of(result_.ghost - struck_at) * 180 / kPi;
     const Probe best = secant(ghost_heading);
     std::optional<Probe> seed = best.pots ? best : scan(best);
-    if (!seed) return fail(why_not(best));
-    result_.heading_deg = heading_range(middle_of_interval(*seed, best));
-    result_.simulations = simulations_;
-    return result_;
+    if (seed) {
+      result_.heading_deg = heading_range(middle_of_interval(*seed, best));
+      result_.simulations = simulations_;
+      return result_;
+    }
+    // Nothing pots: a ball in the way (a swerve may still get round one, so this is asked only now), or
+    // what the ball did at the best heading.
+    if (const std::string why = blocked(target_at, result_.entry, {target_}); !why.empty())
+      return fail("the path of " + ball_name(written_, target_) + " to pocket " + std::to_string(pocket_) +
+                  " is blocked by " + why);
+    if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue.target, target_}); !why.empty())
+      return fail("the path of " + struck_name() + " to " + ball_name(written_, target_) + " is blocked by " + why);
+    return fail(why_not(best));
   }
 
  private:
