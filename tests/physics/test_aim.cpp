@@ -20,8 +20,6 @@ using namespace bsim;
 
 namespace {
 
-constexpr double kR = 0.028575;
-
 /// The struck ball (index 0, the cue ball) at (x0, y0) with velocity (vx, vy); the 5 (index 1) at (x1, y1).
 std::string two_balls(double x0, double y0, double vx, double vy, double x1, double y1) {
   char text[256];
