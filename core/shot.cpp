@@ -1,5 +1,6 @@
 #include "shot.h"
 
+#include "aim.h"
 #include "camera_clearance.h"
 #include "director.h"
 
@@ -13,6 +14,11 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
 
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
+  // `cue I pot B P`: play the shot at the heading that pots B (aim.h), or fail at the cue line.
+  if (const std::string failure = apply_aim(shot->scene); !failure.empty()) {
+    result.diagnostics.push_back({Severity::error, shot->scene.cue.loc, failure});
+    return result;
+  }
   shot->timeline = simulate(shot->scene);
   if (camera == CameraChoice::automatic) {
     shot->directed = direct_camera(shot->scene, shot->timeline);

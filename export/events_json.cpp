@@ -16,11 +16,12 @@ std::string list(const std::vector<int>& values) {
   return out + "]";
 }
 
-std::string event_json(const Event& e) {
+std::string event_json(const Event& e, const Scene& scene) {
   std::string out = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
                     ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
   out += ", \"balls\": " + list(e.balls);
+  if (e.type == EventType::cue) out += ", \"heading\": " + format_number(scene.cue.heading_deg);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
   out += ", \"speed\": " + format_number(e.speed);
   if (e.grouped && !e.contacts.empty()) {
@@ -42,7 +43,8 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   const Timeline& timeline = shot.timeline;
   out << "{\n  \"duration\": " << format_number(timeline.duration()) << ",\n  \"events\": [";
   const auto& events = timeline.events();
-  for (std::size_t k = 0; k < events.size(); ++k) out << (k ? ",\n    " : "\n    ") << event_json(events[k]);
+  for (std::size_t k = 0; k < events.size(); ++k)
+    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene);
   out << (events.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"pocketed\": [";

@@ -8,6 +8,7 @@
 #include "script_as_written.h"
 #include "shot_source.h"
 #include "write_camera.h"
+#include "write_scene.h"
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
   bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
   source.auto_camera = options.auto_camera;
   const bool pictures = !options.at.empty() || options.timeline || options.movie;
-  if (!pictures && !options.write_camera) return bsim::run_window(options, source);
+  if (!pictures && !options.write_camera && !options.write_scene) return bsim::run_window(options, source);
 
   const bsim::LoadedShot loaded = bsim::load_source(source);
   for (const std::string& line : loaded.messages) std::cerr << line << "\n";
@@ -34,6 +35,10 @@ int main(int argc, char** argv) {
   if (!loaded.scripted()) return 1;
   if (options.write_camera) {
     const int status = bsim::run_write_camera(*options.write_camera, *loaded.shot, options.quiet);
+    if (status != 0 || (!pictures && !options.write_scene)) return status;
+  }
+  if (options.write_scene) {
+    const int status = bsim::run_write_scene(*options.write_scene, loaded.text, *loaded.shot, options.quiet);
     if (status != 0 || !pictures) return status;
   }
   if (!options.at.empty()) return bsim::run_snapshot(options, *loaded.shot);

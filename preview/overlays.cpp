@@ -406,8 +406,66 @@ void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
   }
 }
 
+namespace {
+
+/// The first ball-ball event in which balls a and b both take part, or null.
+const Event* first_meeting(const Timeline& timeline, int a, int b) {
+  for (const Event& e : timeline.events()) {
+    if (e.type != EventType::ball_ball) continue;
+    const bool has_a = std::find(e.balls.begin(), e.balls.end(), a) != e.balls.end();
+    if (has_a && std::find(e.balls.begin(), e.balls.end(), b) != e.balls.end()) return &e;
+  }
+  return nullptr;
+}
+
+/// A circle of radius r about `centre`, level with the bed, as a closed polyline.
+void draw_ring(ImDrawList& list, const Projector& project, const Vec3& centre, double r, ImU32 color, float width) {
+  constexpr int kSegments = 48;
+  std::vector<Vec3> points;
+  for (int k = 0; k <= kSegments; ++k) {
+    const double a = 2 * std::numbers::pi * k / kSegments;
+    points.push_back(centre + Vec3(r * std::cos(a), r * std::sin(a), 0));
+  }
+  draw_projected_path(list, project, points, color, width);
+}
+
+}  // namespace
+
+void draw_aim(ImDrawList& list, const OverlayFrame& f) {
+  const Scene& scene = f.shot.scene;
+  if (!scene.cue.aims()) return;
+  const Timeline& timeline = f.shot.timeline;
+  const int struck = scene.cue.target, target = scene.cue.pot_ball;
+  const Event* meeting = first_meeting(timeline, struck, target);
+  if (!meeting || f.time >= meeting->time) return;
+  const std::size_t k = static_cast<std::size_t>(std::find(meeting->balls.begin(), meeting->balls.end(), struck) -
+                                                 meeting->balls.begin());
+  const double R = scene.physics.ball_radius;
+  const auto on_bed = [](Vec3 p, double z) { return Vec3(p.x(), p.y(), z); };
+  const Vec3 ghost = on_bed(meeting->before[k].position, R);
+  const Vec3 from = on_bed(scene.ball(struck).position, 0.002);
+  const Vec3 ball = on_bed(scene.ball(target).position, 0.002);
+  const Vec3 pocket = on_bed(scene.pockets[static_cast<std::size_t>(scene.cue.pot_pocket)].center, 0.002);
+  const Projector project = projector(f);
+  const float scale = ui_scale(f);
+  // The struck ball's way to the ghost ball as played (curving with swerve), then the ghost ball.
+  std::vector<Vec3> way;
+  if (f.paths)
+    for (const auto& p : f.paths->balls[static_cast<std::size_t>(struck)])
+      if (p.time <= meeting->time) way.push_back(on_bed(p.where, 0.002));
+  if (way.empty()) way.push_back(from);
+  way.push_back(on_bed(ghost, 0.002));
+  draw_projected_path(list, project, way, IM_COL32(255, 255, 255, 200), 2.f * scale);
+  draw_ring(list, project, ghost, R, IM_COL32(255, 255, 255, 230), 2.f * scale);
+  draw_ring(list, project, on_bed(ghost, 0.002), R, IM_COL32(255, 255, 255, 110), 1.f * scale);
+  // The ball's intended line to the pocket, and where it drops.
+  draw_projected_path(list, project, {ball, pocket}, IM_COL32(255, 200, 60, 230), 2.f * scale);
+  draw_ring(list, project, pocket, 0.01, IM_COL32(255, 200, 60, 255), 2.f * scale);
+}
+
 void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOverlays& overlays) {
-  if (!overlays.paths && !overlays.events && !overlays.camera && !overlays.table) return;
+  const bool others = overlays.paths || overlays.events || overlays.camera || overlays.table;
+  if (!others && !overlays.aim) return;
   OverlayPaths local;
   OverlayFrame frame = given;
   if (!frame.paths) {
@@ -418,7 +476,8 @@ void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOve
   if (overlays.events) draw_event_markers(list, frame);
   if (overlays.camera) draw_camera_map(list, frame);
   if (overlays.table) draw_table_numbering(list, frame);
-  draw_status_line(list, frame);
+  if (overlays.aim) draw_aim(list, frame);
+  if (others) draw_status_line(list, frame);
 }
 
 }  // namespace bsim

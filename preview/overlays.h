@@ -47,7 +47,12 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& frame, double a
 /// and camera keys give them) and each ball's index in file order.
 void draw_table_numbering(ImDrawList& list, const OverlayFrame& frame);
 
-/// Every overlay the options ask for (and the status line when any is on).
+/// For a shot aimed by `cue I pot B P`, until the struck ball first touches the ball to pot: the ghost
+/// ball (the struck ball where it touches it, as played), the aim line to it, and the ball's line to the
+/// pocket's centre.
+void draw_aim(ImDrawList& list, const OverlayFrame& frame);
+
+/// Every overlay the options ask for (and the status line when any but the aim is on).
 void draw_overlays(ImDrawList& list, const OverlayFrame& frame, const PreviewOverlays& overlays);
 
 }  // namespace bsim

@@ -53,13 +53,13 @@ bool parse_time(const std::string& text, TimeSpec& at) {
 }
 
 /// --overlay's names, in the order of the flags below.
-constexpr std::string_view kOverlayNames = "paths|events|camera|table";
+constexpr std::string_view kOverlayNames = "paths|events|camera|table|aim";
 
 bool parse_overlays(const std::string& text, PreviewOverlays& overlays) {
   std::string_view rest = text;
   if (rest.empty()) return false;
   bool PreviewOverlays::*const flags[] = {&PreviewOverlays::paths, &PreviewOverlays::events, &PreviewOverlays::camera,
-                                          &PreviewOverlays::table};
+                                          &PreviewOverlays::table, &PreviewOverlays::aim};
   while (true) {
     const auto comma = rest.find(',');
     const auto index = choice_index(kOverlayNames, rest.substr(0, comma));
@@ -137,7 +137,7 @@ bool check_combination(PreviewOptions& o, std::string& message) {
     message = "-o names the picture of --at or --timeline; give one of them";
   else if (o.write_camera && o.camera_given && !o.auto_camera)
     message = "--write-camera writes the automatic director's script, which --camera scene turns off";
-  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera))
+  else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera || o.write_scene))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
   else if (o.movie && !has_extension(*o.movie, ".mp4"))
     message = bad_value_message("--movie", *o.movie, "a file name ending in .mp4");
@@ -178,10 +178,11 @@ OptionTable preview_option_table(PreviewOptions& o) {
       {"--fps", "N", "animatic frames per second, 1 to 1000 (default: 30)", {}},
       {"--overlay", "LIST",
        "draw extras, comma-separated: paths, events, camera, table\n"
-       "(the rails', pockets' and balls' numbers) (default: none)",
+       "(the rails', pockets' and balls' numbers), aim (for 'cue I pot B P': the\n"
+       "ghost ball, the aim line, the ball's path to the pocket) (default: none)",
        [&o](S n, S v, std::string& m) {
          if (!parse_overlays(v, o.overlays))
-           return bad(m, n, v, "a comma-separated list of paths, events, camera, table");
+           return bad(m, n, v, "a comma-separated list of paths, events, camera, table, aim");
          return true;
        },
        true, kOverlayNames},
@@ -195,6 +196,11 @@ OptionTable preview_option_table(PreviewOptions& o) {
        "write the automatic director's camera script as scene text (camera ...\n"
        "endcamera) to FILE, or to standard output for -; implies --camera auto",
        store_file(o.write_camera, "a file, or - for standard output")},
+      {"--write-scene", "FILE",
+       "write the scene with every 'cue I pot B P' resolved to the heading found\n"
+       "(and the struck ball's velocity and spin turned to it) to FILE, or to\n"
+       "standard output for -",
+       store_file(o.write_scene, "a file, or - for standard output")},
       {"--quit-after", "SECONDS", "interactive: close the window after this long (default: stay open)",
        [&o](S n, S v, std::string& m) {
          const auto seconds = parse_real_option(v);

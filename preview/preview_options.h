@@ -23,6 +23,7 @@ struct PreviewOverlays {
   bool events = false;  ///< event markers
   bool camera = false;  ///< the camera's own path seen from above
   bool table = false;   ///< the rails', pockets' and balls' numbers
+  bool aim = false;     ///< for a `cue I pot B P` shot: the ghost ball, the aim line, the ball's path to the pocket
 };
 
 /// fps, width, height, size_given and strict are the options both programs share (SharedOptions).
@@ -38,6 +39,7 @@ struct PreviewOptions : SharedOptions {
   double quit_after = 0;                    ///< s; > 0 closes the interactive window by itself (smoke tests)
   std::optional<std::string> screenshot;    ///< interactive: write the last frame here on quit
   std::optional<std::string> write_camera;  ///< --write-camera FILE: the director's script as text ("-": stdout)
+  std::optional<std::string> write_scene;   ///< --write-scene FILE: the scene with `pot` resolved ("-": stdout)
 };
 
 /// The program's option table (command_line.h): every option in --help's order, with what it does

@@ -16,6 +16,7 @@ LoadedShot load_source(const SceneSource& source) {
     loaded.messages.push_back(loaded.read_error);
     return loaded;
   }
+  loaded.text = *text;
   ShotResult result = load_shot(*text, source.name, {.strict = source.strict},
                                 source.auto_camera ? CameraChoice::automatic : CameraChoice::scene);
   loaded.shot = std::move(result.shot);

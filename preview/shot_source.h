@@ -24,6 +24,7 @@ struct LoadedShot {
   std::unique_ptr<Shot> shot;
   std::vector<Diagnostic> diagnostics;
   std::string read_error;  ///< set when the file cannot be read
+  std::string text;        ///< the scene as read
   /// Every problem as the lines a user sees: "PATH:LINE:COL: error: ...".
   std::vector<std::string> messages;
   /// The shot ready to film (scripted), else null.

@@ -68,6 +68,8 @@ void switches(ViewerState& state) {
   ImGui::Checkbox("camera map", &state.overlays.camera);
   ImGui::SameLine();
   ImGui::Checkbox("numbers", &state.overlays.table);
+  ImGui::SameLine();
+  ImGui::Checkbox("aim", &state.overlays.aim);
   ImGui::SameLine(0, 30);
   ImGui::Checkbox("antialias", &state.antialias);
 }

@@ -381,6 +381,7 @@ int run_window(const PreviewOptions& options, const SceneSource& source) {
   state.source = source;
   state.fps = options.fps;
   state.overlays = options.overlays;
+  state.overlays.aim = true;  // the aim of a `pot` cue is shown in the window unless switched off
   load_scene(state, renderer);
   FileWatch watch(source.path);
   InputScript input(std::getenv("BSIM_WINDOW_INPUT"));

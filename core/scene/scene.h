@@ -36,10 +36,15 @@ struct Pocket {
 
 struct Cue {
   int target = 0;          ///< file-order index of the struck ball
-  double heading_deg = 0;  ///< direction the stick pushes, counter-clockwise from +x
+  double heading_deg = 0;  ///< direction the stick pushes, counter-clockwise from +x (found by aiming for `pot`)
   SourceLoc loc;           ///< the `cue` keyword
   SourceLoc target_loc;
   SourceLoc heading_loc;
+  /// Aim extension, `cue I pot B P`: the heading is to be found (aim.h) so that ball B drops into pocket P.
+  int pot_ball = -1;  ///< file-order index, or -1 when the line gives a heading
+  int pot_pocket = -1;
+  SourceLoc pot_ball_loc, pot_pocket_loc;
+  bool aims() const { return pot_ball >= 0; }
 };
 
 enum class CameraMode { hover, look, follow };

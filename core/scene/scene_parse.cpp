@@ -241,7 +241,19 @@ class Parser {
     Cue c;
     c.loc = keyword.loc;
     c.target = ball_index("the cue's target ball", c.target_loc);
-    c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
+    if (!at_end() && peek().text == "pot") {
+      const Token& pot = take("'pot'");
+      if (options_.strict) fail(pot.loc, "'pot' is an extension that --strict rejects");
+      c.heading_loc = pot.loc;
+      c.pot_ball = ball_index("the ball to pot", c.pot_ball_loc);
+      const long long pocket = integer("the pocket to pot into", &c.pot_pocket_loc);
+      if (pocket < 0)
+        fail(c.pot_pocket_loc,
+             "expected a pocket number of 0 or more for 'pot', found " + quote_token(lexed_.tokens[pos_ - 1].text));
+      c.pot_pocket = static_cast<int>(std::min<long long>(pocket, INT_MAX));
+    } else {
+      c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
+    }
     if (map_.has_cue)
       fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
     scene_.cue = c;

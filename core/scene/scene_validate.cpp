@@ -72,6 +72,7 @@ class Validator {
     if (!ball_exists(scene_.cue.target))
       error(scene_.cue.target_loc,
             "expected a cue target ball index " + index_range() + ", found " + std::to_string(scene_.cue.target));
+    pot_references();
     for (const auto& spin : map_.spins)
       if (!ball_exists(spin.ball))
         error(spin.ball_loc,
@@ -81,6 +82,31 @@ class Validator {
         error(shot.ball_loc, std::string("expected the index of the ball the camera ") +
                                  (shot.mode == CameraMode::look ? "looks at " : "follows ") + index_range() +
                                  ", found " + std::to_string(shot.ball));
+  }
+
+  /// `cue I pot B P`: B and P must be there, B must not be the struck ball, and the struck ball needs a speed.
+  void pot_references() {
+    const Cue& cue = scene_.cue;
+    if (!cue.aims()) return;
+    if (!ball_exists(cue.pot_ball))
+      error(cue.pot_ball_loc,
+            "expected the index of the ball to pot " + index_range() + ", found " + std::to_string(cue.pot_ball));
+    else if (cue.pot_ball == cue.target)
+      error(cue.pot_ball_loc, "expected a ball to pot other than the struck one, found ball index " +
+                                  std::to_string(cue.pot_ball) + ", the ball the cue strikes");
+    if (static_cast<std::size_t>(cue.pot_pocket) >= scene_.pockets.size())
+      error(cue.pot_pocket_loc, "expected a pocket number from 0 to " + std::to_string(scene_.pockets.size() - 1) +
+                                    " (the table has " + plural(scene_.pockets.size(), "pocket") +
+                                    ", numbered as in the README's standard table or by their order in the file), "
+                                    "found " +
+                                    std::to_string(cue.pot_pocket));
+    if (ball_exists(cue.target)) {
+      const Vec3& v = scene_.balls[static_cast<std::size_t>(cue.target)].velocity;
+      if (std::hypot(v.x(), v.y()) == 0)
+        error(cue.loc,
+              "expected a speed to aim with: the struck ball's 'ball' line gives it no velocity along the "
+              "table, and 'pot' turns that velocity to the heading it finds");
+    }
   }
 
   void ball_placement(std::size_t i) {
@@ -194,7 +220,7 @@ class Validator {
   }
 
   void cue_heading() {
-    if (!ball_exists(scene_.cue.target)) return;
+    if (!ball_exists(scene_.cue.target) || scene_.cue.aims()) return;
     const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
     const double vx = target.velocity.x(), vy = target.velocity.y();
     if (std::hypot(vx, vy) == 0) {

@@ -11,8 +11,8 @@
 
 #include "command_line.h"
 #include "export_options.h"
-#include "preview_options.h"
 #include "option_rejection.h"
+#include "preview_options.h"
 
 using namespace bsim;
 using bsim::test::export_rejection;
@@ -88,6 +88,7 @@ TEST_SUITE("option tables") {
         {"--movie", {"m.mp4", [](const P& o) { return o.movie == "m.mp4"; }}},
         {"--overlay", {"paths,table", [](const P& o) { return o.overlays.paths && o.overlays.table; }}},
         {"--write-camera", {"-", [](const P& o) { return o.write_camera == "-"; }}},
+        {"--write-scene", {"-", [](const P& o) { return o.write_scene == "-"; }}},
         {"--quit-after", {"1.5", [](const P& o) { return o.quit_after == 1.5; }}},
         {"--screenshot", {"s.png", [](const P& o) { return o.screenshot == "s.png"; }}},
     };

@@ -60,7 +60,7 @@ TEST_SUITE("events.json") {
         "  \"duration\": 3,\n"
         "  \"events\": [\n"
         "    {\"index\": 0, \"time\": 0, \"type\": \"start\"},\n"
-        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"speed\": 0},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"heading\": 0, \"speed\": 0},\n"
         "    {\"index\": 2, \"time\": 3, \"type\": \"end\"}\n"
         "  ],\n"
         "  \"pocketed\": [],\n"

@@ -219,4 +219,28 @@ TEST_SUITE("preview golden pictures") {
     canvas.end_2d();
     check_against_golden(canvas, "numbering.png");
   }
+  TEST_CASE("the aim of a pot cue: ghost ball, aim line and the ball's line to the pocket (README's picture)") {
+    // scenes/pot_corner.scn as `billiards-preview scenes/pot_corner.scn --at 0 --overlay aim --size 960x540`
+    // draws it: the cue ball's way to where it touches the 3 (as played), the ghost ball there, and the
+    // 3's line to the top-right corner.
+    const ShotResult loaded =
+        load_shot(test::require_file(test::source_path("scenes/pot_corner.scn")), "pot_corner", {});
+    REQUIRE(loaded.shot);
+    const Shot& shot = *loaded.shot;
+    HeadlessCanvas canvas;
+    SceneRenderer renderer;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(960, 540, 14, error), error);
+    REQUIRE_MESSAGE(renderer.init(error), error);
+    renderer.set_multisampling(4);
+    renderer.set_scene(shot.scene);
+    const FrameState frame = scripted_frame(shot, 0.0);
+    renderer.draw(shot.scene, frame, 960, 540);
+    ImDrawList* list = canvas.begin_2d();
+    PreviewOverlays aim;
+    aim.aim = true;
+    draw_overlays(*list, OverlayFrame{shot, 0.0, frame.camera, 960.0, 540.0, canvas.fonts()}, aim);
+    canvas.end_2d();
+    check_against_golden(canvas, "aim.png");
+  }
 }

@@ -323,3 +323,44 @@ TEST_SUITE("validation: warnings") {
     expect_warning("cue 0 0\nball 0 0 0 0.028575 0 0 0 1 0 0 0\n", 1, 5, "the stick will not move it");
   }
 }
+
+TEST_SUITE("validation: aim") {
+  // `cue I pot B P` (spec.md "Aim"): the ball and the pocket must exist, the potted ball is not the
+  // struck one, and the struck ball's `ball` line must give the speed that the found heading turns.
+  const std::string kTwoBalls = "ball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\nball 1 0.5 0 0.028575 0 0 0 1 0 0 0\n";
+
+  TEST_CASE("a pot cue parses, its ball and pocket kept") {
+    const ParseResult r = parse_scene("cue 0 pot 1 2\n" + kTwoBalls, "t");
+    INFO(all_messages(r));
+    REQUIRE(r.scene.has_value());
+    CHECK(r.diagnostics.empty());
+    CHECK(r.scene->cue.aims());
+    CHECK(r.scene->cue.pot_ball == 1);
+    CHECK(r.scene->cue.pot_pocket == 2);
+    CHECK(r.scene->cue.pot_pocket_loc.column == 13);
+  }
+
+  TEST_CASE("a pocket that does not exist is an error at the pocket number") {
+    expect_error("cue 0 pot 1 6\n" + kTwoBalls, 1, 13, {"expected a pocket number from 0 to 5", "found 6"});
+    expect_error("cue 0 pot 1 -1\n" + kTwoBalls, 1, 13, {"expected a pocket number of 0 or more", "found '-1'"});
+    // A scene's own pockets replace the standard six.
+    expect_error("cue 0 pot 1 1\n" + kTwoBalls + "pocket 1.27 0.635 0 0.08\n", 1, 13,
+                 {"expected a pocket number from 0 to 0", "found 1"});
+  }
+
+  TEST_CASE("a ball to pot that does not exist, or the struck ball itself") {
+    expect_error("cue 0 pot 2 2\n" + kTwoBalls, 1, 11,
+                 {"expected the index of the ball to pot from 0 to 1", "found 2"});
+    expect_error("cue 0 pot 0 2\n" + kTwoBalls, 1, 11, {"other than the struck one", "ball index 0"});
+    expect_error("cue 0 pot x 2\n" + kTwoBalls, 1, 11, {"expected an integer for the ball to pot, found 'x'"});
+  }
+
+  TEST_CASE("a struck ball without a speed cannot be aimed") {
+    expect_error("cue 1 pot 0 2\n" + kTwoBalls, 1, 1, {"expected a speed to aim with"});
+  }
+
+  TEST_CASE("--strict rejects pot at the word") {
+    expect_error("cue 0 pot 1 2\n" + kTwoBalls + kCam, 1, 7, {"'pot' is an extension that --strict rejects"},
+                 {.strict = true});
+  }
+}

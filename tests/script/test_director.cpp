@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "aim.h"
 #include "builtin_scene.h"
 #include "camera_clearance.h"
 #include "camera_key_text.h"
@@ -273,8 +274,9 @@ TEST_SUITE("director") {
       const std::string name = file.filename().string();
       CAPTURE(name);
       const std::string text = test::require_file(file);
-      const ParseResult parsed = parse_scene(text, "scene");
+      ParseResult parsed = parse_scene(text, "scene");
       REQUIRE(parsed.scene);
+      CHECK(apply_aim(*parsed.scene).empty());  // a scene aimed by `pot` is played at the heading found
       const Timeline timeline = simulate(*parsed.scene);
       const DirectedCamera script = direct_camera(*parsed.scene, timeline);
       const std::string camera = camera_script_text(script, "scene");

@@ -1,0 +1,48 @@
+#pragma once
+// Aim by intent (`cue I pot B P`): the stick's heading that drops ball B into pocket P, found by playing
+// the shot itself. The ghost-ball heading (the struck ball's centre sent to where it touches B with the
+// line of centres through the pocket's best entry point) is the first guess; a secant search on the
+// heading then sends B off along that line as the real physics plays it, so that throw, the struck
+// ball's curve and whatever the strike adds are allowed for; last, the headings either side that still
+// pot are bracketed and the middle of that interval is taken: the ball drops with room on both sides.
+//
+// Ghost-ball aiming and the potting point follow pooltool's aim and pot helpers (Kiefl, pooltool
+// `ai/aim/core.py`, `ai/pot/core.py`), which ignore throw; correcting by simulation is this program's.
+#include <optional>
+#include <string>
+
+#include "scene.h"
+
+namespace bsim {
+
+/// The shot as struck with the stick at `heading_deg`: the one place a heading becomes the struck ball's
+/// initial state. `struck` is `written` (the scene as parsed) with cue.heading_deg set and the struck
+/// ball's state at the strike set. In the seed's form the struck ball's `ball`-line velocity is turned
+/// about the vertical to the heading, keeping its speed, and its `spin`-line spin is turned by the same
+/// angle: spin written for a shot along the written velocity (draw about the axis across it, side spin
+/// about the vertical) stays draw and side spin along the heading. A strike from the stick (a stroke)
+/// replaces this body; the solver calls nothing else to strike.
+void strike_heading(const Scene& written, double heading_deg, Scene& struck);
+
+/// What the solver found, or why nothing pots.
+struct AimResult {
+  std::optional<double> heading_deg;  ///< degrees in [0, 360), counter-clockwise from +x
+  std::string failure;                ///< when no heading pots: why, in a person's words
+  Vec3 ghost{0, 0, 0};                ///< m, the ghost ball of the first guess (struck ball touching the target)
+  Vec3 entry{0, 0, 0};                ///< m, the pocket's best entry point seen from the target ball
+  int simulations = 0;                ///< shots played to find it (for the bench)
+};
+
+/// Cut angles beyond this many degrees are not tried: the struck ball would only graze the target.
+inline constexpr double kMaxCutDeg = 89.0;
+
+/// The heading for `scene.cue` (which must aim: Cue::aims()), from `scene` as parsed (validated: its
+/// ball and pocket exist). Deterministic: the same scene gives the same heading to the last bit.
+AimResult aim_cue(const Scene& scene);
+
+/// For a scene whose cue aims: finds the heading (aim_cue) and strikes `scene` with it (strike_heading),
+/// so that simulate(scene) plays the aimed shot. Returns the failure (empty when it pots, and for a
+/// scene with a numeric heading, which is left as it is).
+std::string apply_aim(Scene& scene);
+
+}  // namespace bsim

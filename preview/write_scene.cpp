@@ -1,0 +1,71 @@
+#include "write_scene.h"
+
+#include <algorithm>
+#include <iostream>
+#include <vector>
+
+#include "atomic_file.h"
+#include "number_format.h"
+#include "scene_lexer.h"
+#include "shot.h"
+
+namespace bsim {
+
+namespace {
+
+/// One replacement: bytes [begin, end) of the text become `with`.
+struct Edit {
+  std::size_t begin = 0, end = 0;
+  std::string with;
+};
+
+bool same_place(const SourceLoc& a, const SourceLoc& b) { return a.line == b.line && a.column == b.column; }
+
+std::string numbers(const Vec3& v) {
+  return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
+}
+
+}  // namespace
+
+std::string scene_text_resolved(std::string_view text, const Scene& played) {
+  if (!played.cue.aims()) return std::string(text);
+  const LexedText lexed = lex_scene(text);
+  const std::vector<Token>& tokens = lexed.tokens;
+  const auto offset = [&](std::size_t k) { return static_cast<std::size_t>(tokens[k].text.data() - text.data()); };
+  const auto span = [&](std::size_t first, std::size_t last, std::string with) {
+    return Edit{offset(first), offset(last) + tokens[last].text.size(), std::move(with)};
+  };
+  const int target = played.cue.target;
+  const Ball& struck = played.ball(target);
+  std::vector<Edit> edits;
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    const std::string_view t = tokens[k].text;
+    if (t == "cue" && same_place(tokens[k].loc, played.cue.loc) && k + 4 < tokens.size())
+      edits.push_back(span(k + 2, k + 4, format_number(played.cue.heading_deg)));  // pot B P
+    else if (t == "ball" && same_place(tokens[k].loc, struck.loc) && k + 7 < tokens.size())
+      edits.push_back(span(k + 5, k + 7, numbers(struck.velocity)));  // after the number and the position
+    else if (t == "spin" && k + 4 < tokens.size() && tokens[k + 1].text == std::to_string(target))
+      edits.push_back(span(k + 2, k + 4, numbers(struck.spin)));
+  }
+  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
+  std::string out(text);
+  for (const Edit& e : edits) out.replace(e.begin, e.end - e.begin, e.with);
+  return out;
+}
+
+int run_write_scene(const std::string& path, std::string_view text, const Shot& shot, bool quiet) {
+  const std::string resolved = scene_text_resolved(text, shot.scene);
+  if (path == "-") {
+    std::cout << resolved << std::flush;
+    return std::cout ? 0 : 1;
+  }
+  std::string error;
+  if (!write_file_atomically(path, resolved, error)) {
+    std::cerr << "billiards-preview: error: " << error << "\n";
+    return 1;
+  }
+  if (!quiet) std::cerr << "wrote " << path << "\n";
+  return 0;
+}
+
+}  // namespace bsim

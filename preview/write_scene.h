@@ -1,0 +1,23 @@
+#pragma once
+// --write-scene FILE: the scene as written, with a `cue I pot B P` resolved to the numbers the shot was
+// played with, for a reader who wants the seed's form.
+#include <string>
+#include <string_view>
+
+namespace bsim {
+
+struct Scene;
+struct Shot;
+
+/// `text` (the scene as written) with `cue I pot B P` replaced by `cue I HEADING`, the heading `played`
+/// was shot at, and the struck ball's `ball`-line velocity and `spin`-line spin replaced by the ones that
+/// heading gave it (aim.h: strike_heading), every number in its shortest exact form: the text written
+/// plays the same shot to the bit. Everything else (comments, spacing, order) is kept. A scene without
+/// `pot` comes back unchanged.
+std::string scene_text_resolved(std::string_view text, const Scene& played);
+
+/// Writes scene_text_resolved into `path` ("-": standard output), in place atomically. Returns the exit
+/// status; reports on stderr.
+int run_write_scene(const std::string& path, std::string_view text, const Shot& shot, bool quiet = false);
+
+}  // namespace bsim
