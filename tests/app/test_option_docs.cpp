@@ -91,7 +91,7 @@ TEST_CASE("billiards-preview's manual page and completion list every option and 
   const OptionTable table = preview_option_table(options);
   check_docs("billiards-preview", table, usage);
   const std::string completion = bash_completion("billiards-preview", table);
-  CHECK(completion.find("    --overlay)\n      _billiards_preview_words \"paths events camera table\"") !=
+  CHECK(completion.find("    --overlay)\n      _billiards_preview_words \"paths events camera table aim\"") !=
         std::string::npos);
   CHECK(completion.find("    --screenshot)\n      COMPREPLY=($(compgen -f -X '!*.png'") != std::string::npos);
   // Each offered overlay name is one the parser takes.
