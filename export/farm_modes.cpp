@@ -73,7 +73,7 @@ int farm_render(const ExportOptions& options, const std::string& dir, const Farm
     if (copies.is_copy(k)) continue;  // the task of the frame it copies copies it
     if (!picture_there(dir, k)) {
       error.clear();
-      if (render_frames(dir + "/frames", {{k, 0}}, 1, render, no_store, error) == RunOutcome::done) {
+      if (render_frames(dir + "/frames", {{k, 0, -1, {}}}, 1, render, no_store, error) == RunOutcome::done) {
         ++rendered;
         std::cerr << "billiards-export: frame " << k << " rendered\n";
       } else {
