@@ -203,6 +203,18 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   FrameCache cache(default_frame_cache_dir(), frames_dir);
   FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
   if (!options.whole_frames) plan_partial_frames(shot, options, plan.jobs);
+  long traced = 0;
+  for (const FrameJob& job : plan.jobs) {
+    if (job.reference < 0) {
+      traced += static_cast<long>(options.width) * options.height;
+      continue;
+    }
+    ++summary.frames_partial;
+    for (const PixelRect& r : job.rects) traced += r.area();
+  }
+  if (!plan.jobs.empty())
+    summary.traced_share = static_cast<double>(traced) / (static_cast<double>(options.width) * options.height *
+                                                          static_cast<double>(plan.jobs.size()));
   summary.frames_rendered = static_cast<int>(plan.jobs.size());
   summary.frames_reused = frames - summary.frames_rendered;
 
