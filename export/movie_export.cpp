@@ -99,9 +99,22 @@ FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& 
   return plan;
 }
 
-/// Traces only what changed (changed_region.h): each job whose camera is that of the job before it
-/// with the same camera reuses that job's picture and traces its changed rectangles only, unless they
-/// would cost nearly the whole frame.
+bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
+  for (const auto& [frame, source] : plan.duplicates) {
+    std::error_code ec;
+    const std::string to = frames_dir + "/" + frame_name(frame) + ".png";
+    std::filesystem::copy_file(frames_dir + "/" + frame_name(source) + ".png", to,
+                               std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) {
+      error = "cannot write " + to + ": " + ec.message();
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void plan_partial_frames(const Shot& shot, const ExportOptions& options, std::vector<FrameJob>& jobs) {
   const RegionScene scene = region_scene(shot.scene);
   std::map<std::string, std::pair<int, FrameContent>> last;  // camera -> the latest job's frame and content
@@ -119,22 +132,6 @@ void plan_partial_frames(const Shot& shot, const ExportOptions& options, std::ve
     last.insert_or_assign(camera, std::pair<int, FrameContent>(job.frame, std::move(content)));
   }
 }
-
-bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
-  for (const auto& [frame, source] : plan.duplicates) {
-    std::error_code ec;
-    const std::string to = frames_dir + "/" + frame_name(frame) + ".png";
-    std::filesystem::copy_file(frames_dir + "/" + frame_name(source) + ".png", to,
-                               std::filesystem::copy_options::overwrite_existing, ec);
-    if (ec) {
-      error = "cannot write " + to + ": " + ec.message();
-      return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
 
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
   // What every picture depends on besides its own .pov text: the size, the quality (and POV-Ray's
