@@ -159,6 +159,14 @@ class FrameRendering {
         pool_(settings.processes),
         progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
                   progress_style(settings.quiet)) {
+    // The time left is reckoned from the pixels still to trace (and each POV-Ray run's start), so a
+    // run of cheap partial frames after a whole one does not make it look short or long.
+    double work = 0;
+    for (const FrameJob& job : jobs) {
+      work += work_of(job, -1);
+      for (int part = 0; part < static_cast<int>(job.rects.size()); ++part) work += work_of(job, part);
+    }
+    progress_.count_work(work);
     for (const FrameJob& job : jobs) {
       if (job.reference < 0) {
         waiting_.push_back({job, 1, -1});
@@ -199,6 +207,13 @@ class FrameRendering {
   }
 
  private:
+  /// What tracing the whole frame (part -1) or one rectangle costs, in pixels.
+  double work_of(const FrameJob& job, int part) const {
+    if (part < 0)
+      return job.reference < 0 ? static_cast<double>(settings_.width) * settings_.height + kRegionStartPixels : 0.0;
+    return static_cast<double>(job.rects[static_cast<std::size_t>(part)].area() + kRegionStartPixels);
+  }
+
   void cleanup(int frame, int part = -1) {
     remove_quietly(dir_ + temp_hdr(frame, part));
     remove_quietly(dir_ + log_name(frame, part));
@@ -273,6 +288,7 @@ class FrameRendering {
   void rendered(const Attempt& attempt, HdrImage image) {
     const int frame = attempt.job.frame;
     cleanup(frame, attempt.part);
+    progress_.add_work(work_of(attempt.job, attempt.part));
     if (attempt.part < 0) {
       developed(frame, attempt.job.key, std::move(image));
     } else {
