@@ -206,6 +206,9 @@ class FrameRendering {
     return outcome_;
   }
 
+  /// The frame whose failure stopped the run (-1: none).
+  int failed_frame() const { return failed_frame_; }
+
  private:
   /// What tracing the whole frame (part -1) or one rectangle costs, in pixels.
   double work_of(const FrameJob& job, int part) const {
@@ -224,6 +227,7 @@ class FrameRendering {
   void fail(int frame, const std::string& message, int part = -1) {
     if (outcome_ == RunOutcome::done) {
       error_ = message;
+      failed_frame_ = frame;
       outcome_ = RunOutcome::failed;
       stop_all();  // no point finishing the others: the movie cannot be made
     }
@@ -376,13 +380,17 @@ class FrameRendering {
   std::map<int, int> dependents_;        ///< frame -> partial frames still to be laid over it
   std::map<int, HdrImage> kept_;         ///< pictures (before developing) that partial frames still need
   RunOutcome outcome_ = RunOutcome::done;
+  int failed_frame_ = -1;
 };
 
 }  // namespace
 
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
-                         const RenderSettings& settings, FrameCache& cache, std::string& error) {
-  return FrameRendering(frames_dir, jobs, total, settings, cache, error).run();
+                         const RenderSettings& settings, FrameCache& cache, std::string& error, int* failed_frame) {
+  FrameRendering rendering(frames_dir, jobs, total, settings, cache, error);
+  const RunOutcome outcome = rendering.run();
+  if (failed_frame) *failed_frame = rendering.failed_frame();
+  return outcome;
 }
 
 }  // namespace bsim

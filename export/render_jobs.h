@@ -67,7 +67,9 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, const 
 /// standard error; a parse error is never retried and is printed as `FILE:LINE: error: povray: ...`.
 /// On failure `error` names the frame and quotes POV-Ray; interrupted means Ctrl-C came and every
 /// child was stopped. Either way no partial picture is left behind.
+/// `failed_frame`, when given, is set to the frame that failed.
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
-                         const RenderSettings& settings, FrameCache& cache, std::string& error);
+                         const RenderSettings& settings, FrameCache& cache, std::string& error,
+                         int* failed_frame = nullptr);
 
 }  // namespace bsim
