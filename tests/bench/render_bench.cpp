@@ -150,7 +150,7 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   }
   std::printf(
       "default break, final %dx%d, %d frames, %zu rendered (the rest alike); reusing: %d traced in part, "
-      "%.1f%% of their pixels traced\n",
+      "%.1f%% of the rendered frames' pixels traced\n",
       options.width, options.height, frames, whole.size(), partial,
       100.0 * static_cast<double>(traced) / static_cast<double>(pixels * static_cast<long>(whole.size())));
   std::fflush(stdout);
