@@ -175,11 +175,8 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   return differ == 0 ? 0 : 1;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  int every = 1;
-  bool reuse = false;
+/// The command line: --every K, --fps N, --reuse, --size WxH.
+bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse) {
   bsim::ExportOptions options;
   options.quality = bsim::Quality::draft;
   for (int i = 1; i < argc; ++i) {
@@ -196,6 +193,15 @@ int main(int argc, char** argv) {
     else if (flag == "--fps" && i + 1 < argc)
       options.fps = std::max(1, std::atoi(argv[++i]));
   }
+  return options;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int every = 1;
+  bool reuse = false;
+  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse);
   const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
   if (povray.empty() || ffmpeg.empty()) {
     std::fprintf(stderr, "render_bench: povray and ffmpeg are needed; run `bash .ci/install-deps`\n");
