@@ -121,6 +121,10 @@ OptionTable export_option_table(ExportOptions& o) {
          o.jobs = *jobs;
          return true;
        }},
+      {"--whole-frames", "",
+       "trace every pixel of every frame (by default a frame of a still camera traces only\n"
+       "what changed and takes the rest from the frame before: the same pixels)",
+       [&o](S, S, std::string&) { return o.whole_frames = true; }},
       {"--audio-lead", "SECONDS", "sounds start this long before their event, 0 to 1 (default: 0.005)",
        [&o](S n, S v, std::string& m) {
          const auto lead = parse_real_option(v);

@@ -33,8 +33,9 @@ struct ExportOptions : SharedOptions {
   bool events_only = false;
   bool no_render = false;
   Quality quality = Quality::final;
-  int jobs = 0;             ///< 0: one per core
-  double audio_lead = 0.0;  ///< s; set to the documented default by the parser
+  int jobs = 0;               ///< 0: one per core
+  bool whole_frames = false;  ///< --whole-frames: trace every pixel of every frame
+  double audio_lead = 0.0;    ///< s; set to the documented default by the parser
   std::string music_path;
   SoundLevel level;  ///< how the sound track's level is set (default: calibrated)
   FarmMode farm = FarmMode::none;

@@ -92,6 +92,32 @@ std::string copies_text(const FrameCopies& c) {
   return text;
 }
 
+std::map<int, PartialPlan> read_partial(const std::string& dir) {
+  std::map<int, PartialPlan> plans;
+  std::ifstream in(dir + "/" + kPartial);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    int frame = 0;
+    PartialPlan plan;
+    if (!(words >> frame >> plan.reference)) continue;
+    for (PixelRect r; words >> r.x0 >> r.y0 >> r.x1 >> r.y1;) plan.rects.push_back(r);
+    plans[frame] = plan;
+  }
+  return plans;
+}
+
+std::string partial_text(const std::map<int, PartialPlan>& plans) {
+  std::string text;
+  for (const auto& [frame, plan] : plans) {
+    text += std::to_string(frame) + " " + std::to_string(plan.reference);
+    for (const PixelRect& r : plan.rects)
+      text += " " + std::to_string(r.x0) + " " + std::to_string(r.y0) + " " + std::to_string(r.x1) + " " +
+              std::to_string(r.y1);
+    text += "\n";
+  }
+  return text;
+}
+
 bool copy_picture(const std::string& frames_dir, const FrameCopies& c, int from) {
   const auto it = c.copies.find(from);
   if (it == c.copies.end()) return true;

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "changed_region.h"
 #include "export_options.h"
 
 namespace bsim::farm {
@@ -15,6 +16,7 @@ namespace bsim::farm {
 inline constexpr const char* kConf = "farm/farm.conf";
 inline constexpr const char* kChunks = "farm/chunks.txt";
 inline constexpr const char* kCopies = "farm/copies.txt";
+inline constexpr const char* kPartial = "farm/partial.txt";
 inline constexpr const char* kProgram = "farm/billiards-export";
 inline constexpr const char* kTaskScript = "farm/task.sh";
 inline constexpr const char* kMovieScript = "farm/movie.sh";
@@ -63,6 +65,19 @@ bool copy_picture(const std::string& frames_dir, const FrameCopies& c, int from)
 
 /// Frames with no picture, a copy counting as there when the frame it copies is.
 std::vector<int> missing_frames(const std::string& dir, int frames, const FrameCopies& c);
+
+/// A frame of a chunk traced only where it changed: the earlier frame of its chunk it is laid over
+/// and the rectangles traced (farm/partial.txt, `FRAME REFERENCE X0 Y0 X1 Y1 ...` lines).
+struct PartialPlan {
+  int reference = -1;
+  std::vector<PixelRect> rects;
+};
+
+/// Reads DIR/farm/partial.txt (none when it is missing: every frame is traced whole).
+std::map<int, PartialPlan> read_partial(const std::string& dir);
+
+/// partial.txt's text for `plans`.
+std::string partial_text(const std::map<int, PartialPlan>& plans);
 
 /// chunks.txt's text: one FIRST-LAST line per array task.
 std::string chunks_text(const std::vector<std::pair<int, int>>& chunks);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "child_process.h"
 #include "farm_files.h"
@@ -52,6 +53,27 @@ int farm_status(const std::string& dir, const FarmConf& conf) {
   return 0;
 }
 
+/// The frames FIRST to LAST of a task that are still to render (not copies), with the plan of those
+/// traced only where they changed against an earlier one of them (farm/partial.txt); a frame whose
+/// reference is not rendered here is traced whole.
+std::vector<FrameJob> task_jobs(const std::string& dir, const FrameCopies& copies, int first, int last) {
+  const std::map<int, PartialPlan> partial = read_partial(dir);
+  std::vector<FrameJob> jobs;
+  std::set<int> here;
+  for (int k = first; k <= last; ++k) {
+    if (copies.is_copy(k) || picture_there(dir, k)) continue;  // a copy: the task of its frame copies it
+    FrameJob job{k, 0};
+    const auto plan = partial.find(k);
+    if (plan != partial.end() && here.count(plan->second.reference)) {
+      job.reference = plan->second.reference;
+      job.rects = plan->second.rects;
+    }
+    jobs.push_back(job);
+    here.insert(k);
+  }
+  return jobs;
+}
+
 int farm_render(const ExportOptions& options, const std::string& dir, const FarmConf& conf) {
   std::string error;
   RenderSettings render{find_program("povray"), conf.width, conf.height, conf.quality, 1, dir + "/frames", true};
@@ -67,25 +89,37 @@ int farm_render(const ExportOptions& options, const std::string& dir, const Farm
   FrameCache no_store("", dir + "/frames");
   const FrameCopies copies = read_copies(dir);
   const int last = options.last_frame < 0 ? conf.frames - 1 : std::min(options.last_frame, conf.frames - 1);
-  int rendered = 0;
+  // The frames to render, in order; one traced only where it changed reuses an earlier one of them.
+  const std::vector<FrameJob> jobs = task_jobs(dir, copies, options.first_frame, last);
   std::vector<int> failed;
-  for (int k = options.first_frame; k <= last && !InterruptGuard::interrupted(); ++k) {
-    if (copies.is_copy(k)) continue;  // the task of the frame it copies copies it
-    if (!picture_there(dir, k)) {
+  int failed_frame = -1;
+  if (!jobs.empty() &&
+      render_frames(dir + "/frames", jobs, static_cast<int>(jobs.size()), render, no_store, error, &failed_frame) !=
+          RunOutcome::done &&
+      !InterruptGuard::interrupted()) {
+    std::cerr << "billiards-export: error: " << error << "\n";
+    failed.push_back(failed_frame);
+    // The others of the chunk are still worth rendering: each missing one whole, on its own.
+    for (const FrameJob& job : jobs) {
+      if (job.frame == failed_frame || picture_there(dir, job.frame) || InterruptGuard::interrupted()) continue;
       error.clear();
-      if (render_frames(dir + "/frames", {{k, 0}}, 1, render, no_store, error) == RunOutcome::done) {
-        ++rendered;
-        std::cerr << "billiards-export: frame " << k << " rendered\n";
-      } else {
-        if (!InterruptGuard::interrupted()) {
-          std::cerr << "billiards-export: error: " << error << "\n";
-          failed.push_back(k);  // the others of the chunk are still worth rendering
-        }
-        continue;
+      if (render_frames(dir + "/frames", {{job.frame, 0}}, 1, render, no_store, error) != RunOutcome::done &&
+          !InterruptGuard::interrupted()) {
+        std::cerr << "billiards-export: error: " << error << "\n";
+        failed.push_back(job.frame);
       }
     }
-    // Its copies are the same picture: the movie job would copy them too, but --farm status counts
-    // them done from now on.
+  }
+  int rendered = 0;
+  for (const FrameJob& job : jobs) {
+    if (!picture_there(dir, job.frame)) continue;
+    ++rendered;
+    std::cerr << "billiards-export: frame " << job.frame << " rendered\n";
+  }
+  // Copies are the same picture: the movie job would copy them too, but --farm status counts them
+  // done from now on.
+  for (int k = options.first_frame; k <= last && !InterruptGuard::interrupted(); ++k) {
+    if (copies.is_copy(k) || !picture_there(dir, k)) continue;
     if (!copy_picture(dir + "/frames", copies, k))
       std::cerr << "billiards-export: warning: cannot copy frame " << k << " to its copies; the movie job will\n";
   }

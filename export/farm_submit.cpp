@@ -88,7 +88,8 @@ FramePlan plan_frames(const std::string& dir, const FarmConf& conf, const Export
 /// Stages DIR/farm/: the logs of earlier submissions, the run's files, the job scripts and this
 /// program, executable.
 bool stage_farm_files(const std::string& dir, const OutputStage& stage, const FarmConf& conf,
-                      const std::vector<std::pair<int, int>>& chunks, const FrameCopies& copies, std::string& error) {
+                      const std::vector<std::pair<int, int>>& chunks, const FrameCopies& copies,
+                      const std::map<int, PartialPlan>& partial, std::string& error) {
   std::error_code ec;
   fs::create_directories(stage.path(kLogs), ec);
   if (ec) {
@@ -101,6 +102,7 @@ bool stage_farm_files(const std::string& dir, const OutputStage& stage, const Fa
   if (!write_file_atomically(stage.path(kConf), conf_text(conf), error) ||
       !write_file_atomically(stage.path(kChunks), chunks_text(chunks), error) ||
       !write_file_atomically(stage.path(kCopies), copies_text(copies), error) ||
+      !write_file_atomically(stage.path(kPartial), partial_text(partial), error) ||
       !write_file_atomically(stage.path(kTaskScript), task_script(dir), error) ||
       !write_file_atomically(stage.path(kMovieScript), movie_script(dir), error))
     return false;
@@ -201,7 +203,18 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   copies_ = plan.copies_to_make;
   chunk_ = options.chunk > 0 ? options.chunk : default_farm_chunk(conf.width, conf.height, conf.quality);
   chunks_ = farm_chunks(plan.missing, chunk_);
-  if (!stage_farm_files(dir_, stage, conf, chunks_, plan.copies, error)) return false;
+  // Each chunk traces only what changed against its own earlier frames, so a task has every frame
+  // it reuses (and a chunk starting within a still camera's run renders its first frame whole).
+  std::map<int, PartialPlan> partial;
+  for (const auto& [first, last] : options.whole_frames ? std::vector<std::pair<int, int>>{} : chunks_) {
+    std::vector<FrameJob> jobs;
+    for (int k : plan.missing)
+      if (k >= first && k <= last) jobs.push_back({k, 0});
+    plan_partial_frames(shot, options, jobs);
+    for (const FrameJob& job : jobs)
+      if (job.reference >= 0) partial[job.frame] = {job.reference, job.rects};
+  }
+  if (!stage_farm_files(dir_, stage, conf, chunks_, plan.copies, partial, error)) return false;
 
   // Slurm checks the options (partition, account, time limit) now, before anything is submitted.
   std::vector<std::string> test = {sbatch_, "--test-only", "--job-name=" + name_ + "-movie"};

@@ -11,6 +11,7 @@
 #include <map>
 #include <thread>
 
+#include "changed_region.h"
 #include "child_process.h"
 #include "develop.h"
 #include "ffmpeg_assemble.h"
@@ -93,7 +94,7 @@ FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& 
     else if (cache.fetch(frame_name(k) + ".png", key))
       ++plan.fetched;
     else
-      plan.jobs.push_back({k, key});
+      plan.jobs.push_back({k, key, -1, {}});
   }
   return plan;
 }
@@ -113,6 +114,24 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
 }
 
 }  // namespace
+
+void plan_partial_frames(const Shot& shot, const ExportOptions& options, std::vector<FrameJob>& jobs) {
+  const RegionScene scene = region_scene(shot.scene);
+  std::map<std::string, std::pair<int, FrameContent>> last;  // camera -> the latest job's frame and content
+  for (FrameJob& job : jobs) {
+    FrameContent content = frame_content(shot, job.frame, options.fps);
+    const auto before = last.find(content.camera);
+    if (before != last.end()) {
+      const auto region = changed_region(before->second.second, content, scene, options.width, options.height);
+      if (region) {
+        job.reference = before->second.first;
+        job.rects = *region;
+      }
+    }
+    const std::string camera = content.camera;
+    last.insert_or_assign(camera, std::pair<int, FrameContent>(job.frame, std::move(content)));
+  }
+}
 
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
   // What every picture depends on besides its own .pov text: the size, the quality (and POV-Ray's
@@ -151,8 +170,8 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
   const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
   AudioBuffer audio;
   if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
-                      {.lead = options.audio_lead, .music_path = options.music_path, .level = options.level},
-                      samples, audio, error))
+                      {.lead = options.audio_lead, .music_path = options.music_path, .level = options.level}, samples,
+                      audio, error))
     return false;
   summary.loudness_lufs = integrated_loudness(audio);
   summary.true_peak_dbtp = to_db(true_peak(audio));
@@ -179,7 +198,20 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   const std::string frames_dir = stage.path("frames");
   const int frames = frame_count(shot.timeline.duration(), options.fps);
   FrameCache cache(default_frame_cache_dir(), frames_dir);
-  const FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
+  FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
+  if (!options.whole_frames) plan_partial_frames(shot, options, plan.jobs);
+  long traced = 0;
+  for (const FrameJob& job : plan.jobs) {
+    if (job.reference < 0) {
+      traced += static_cast<long>(options.width) * options.height;
+      continue;
+    }
+    ++summary.frames_partial;
+    for (const PixelRect& r : job.rects) traced += r.area();
+  }
+  if (!plan.jobs.empty())
+    summary.traced_share = static_cast<double>(traced) / (static_cast<double>(options.width) * options.height *
+                                                          static_cast<double>(plan.jobs.size()));
   summary.frames_rendered = static_cast<int>(plan.jobs.size());
   summary.frames_reused = frames - summary.frames_rendered;
 

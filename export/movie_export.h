@@ -33,6 +33,11 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
 /// (their .pov text without comments, the shared include, the size and the quality).
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options);
 
+/// Traces only what changed (changed_region.h): each job whose camera is that of an earlier job (the
+/// latest such) reuses that job's picture and traces its changed rectangles only, unless they would
+/// cost nearly the whole frame. Sets the jobs' references and rectangles.
+void plan_partial_frames(const Shot& shot, const ExportOptions& options, std::vector<FrameJob>& jobs);
+
 /// Renders the staged frames (reusing stored pictures, see frame_cache.h) and encodes the staged
 /// movie.mp4, filling the summary's frame counts and times. Interrupted: Ctrl-C came, every child
 /// was stopped; the caller discards the stage.

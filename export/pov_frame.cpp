@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <sstream>
 #include <vector>
 
 #include "camera_view.h"
@@ -330,55 +331,114 @@ std::string frame_name(int frame) {
   return name;
 }
 
-void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
-  const double t = frame_time(frame, fps);
-  out << "// " << frame_name(frame) << " of " << shot.scene.name << ": t = " << pov_number(t) << " s\n";
-  out << "#version 3.7;\n#include \"" << kPovIncludeName << "\"\n\n";
+namespace {
 
-  const CameraPose camera = shot.camera->pose(t);
-  Vec3 location = camera.location, look_at = camera.look_at;
-  steady_camera(location, look_at);
-  // right is -x for z-up right-handed coordinates; angle is the horizontal field of view.
-  out << "camera {\n  perspective\n  location " << pov_vector(location) << "\n  sky z\n  up z\n"
-      << "  right -x * image_width / image_height\n  angle " << pov_number(kCameraFovDeg) << "\n  look_at "
-      << pov_vector(look_at) << "\n}\n\n";
+/// m, added to every bound's radius: the files' numbers are rounded to a micrometre, and the models'
+/// parts reach a hair past their nominal ends (the stick's tip 0.5 mm behind its face).
+constexpr double kBoundSlack = 0.002;
 
-  const FrameBlur blur = plan_blur(shot, t, fps);
+/// The stick at `cue`, from `front` to `back` m along its axis from the tip (its butt kCueLength
+/// further), as two spheres whose hull holds it.
+std::vector<BoundSphere> stick_bound(const CuePose& cue, double front, double back) {
+  const Vec3 axis = cue.axis.normalized();
+  const double r = kCueButtRadius + kBoundSlack;
+  return {{cue.tip + front * axis, r}, {cue.tip + (back + kCueLength) * axis, r}};
+}
+
+/// Ball i at the frame's instant, drawn once or as its streak.
+FramePart ball_part(const Shot& shot, const FrameBlur& blur, int i, double t, int fps, const Vec3& eye) {
+  FramePart part;
+  part.mirrors = true;
+  const double r = shot.scene.physics.ball_radius + kBoundSlack;
+  const BallState state = shot.timeline.state(i, t);
+  part.casts.push_back({state.position, r});
   const double shutter = kShutter / fps;
-  for (int i = 0; i < shot.timeline.ball_count(); ++i) {
-    const BallState state = shot.timeline.state(i, t);
+  const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
+  std::ostringstream out;
+  if (segments > 0 && write_streak(shot, i, t, shutter, segments, eye, out)) {
+    for (int k = 0; k <= segments; ++k)
+      part.seen.push_back({shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position, r});
+  } else {
     // A pocketed ball lies in its pocket's cup.
-    const int number = shot.scene.ball(i).number;
-    const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
-    if (segments == 0 || !write_streak(shot, i, t, shutter, segments, camera.location, out)) {
-      const Eigen::Matrix3d r = state.orientation.normalized().toRotationMatrix();
-      out << "object { Ball(" << number << ") " << pov_matrix(r.col(0), r.col(1), r.col(2), state.position)
-          << " }  // ball " << i << "\n";
-      continue;
-    }
+    const Eigen::Matrix3d m = state.orientation.normalized().toRotationMatrix();
+    out << "object { Ball(" << shot.scene.ball(i).number << ") "
+        << pov_matrix(m.col(0), m.col(1), m.col(2), state.position) << " }  // ball " << i << "\n";
+    part.seen.push_back({state.position, r});
   }
+  part.text = out.str();
+  return part;
+}
 
+/// The stick at the frame's instant: none, once, swept along its axis, or as copies.
+FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps) {
+  FramePart part;
+  std::ostringstream out;
+  const CuePose now = shot.cue->pose(t);
   if (!blur.stick.travel.empty()) {
-    write_stick_sweep(shot.cue->pose(t), blur.stick, out);
-    return;
+    write_stick_sweep(now, blur.stick, out);
+    part.seen = stick_bound(now, blur.stick.front, blur.stick.back);
+    part.casts = stick_bound(now, 0, 0);
+    part.text = out.str();
+    return part;
   }
   const int stick_copies = blur.stick.copies;
   if (stick_copies == 1) {
-    const CuePose cue = shot.cue->pose(t);
-    if (cue.visible) out << "object { CueStick " << stick_place(cue) << " }\n";
-    return;
+    if (now.visible) {
+      out << "object { CueStick " << stick_place(now) << " }\n";
+      part.seen = part.casts = stick_bound(now, 0, 0);
+    }
+    part.text = out.str();
+    return part;
   }
   // The copies cast no shadow: one unseen stick at the frame's instant does, as for the balls and the
   // swept stick (shadow rays through a couple of dozen see-through copies cost more than the frame).
-  const CuePose now = shot.cue->pose(t);
-  if (now.visible) out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
+  if (now.visible) {
+    out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
+    part.casts = stick_bound(now, 0, 0);
+  }
+  const double shutter = kShutter / fps;
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
     const CuePose cue = shot.cue->pose(shutter_instant(shot, t, shutter, 2 * k + 1, 2 * stick_copies));
     if (!cue.visible) continue;
     out << "object { CueStickT(" << transmit << ") " << stick_place(cue) << " no_shadow }  // blurred " << k + 1 << "/"
         << stick_copies << "\n";
+    for (const BoundSphere& s : stick_bound(cue, 0, 0)) part.seen.push_back(s);
   }
+  part.text = out.str();
+  return part;
+}
+
+}  // namespace
+
+FrameContent frame_content(const Shot& shot, int frame, int fps) {
+  FrameContent content;
+  const double t = frame_time(frame, fps);
+  content.header = "// " + frame_name(frame) + " of " + shot.scene.name + ": t = " + pov_number(t) + " s\n" +
+                   "#version 3.7;\n#include \"" + std::string(kPovIncludeName) + "\"\n\n";
+
+  const CameraPose camera = shot.camera->pose(t);
+  Vec3 location = camera.location, look_at = camera.look_at;
+  steady_camera(location, look_at);
+  content.camera_pose = {location, look_at, false};
+  // right is -x for z-up right-handed coordinates; angle is the horizontal field of view.
+  std::ostringstream cam;
+  cam << "camera {\n  perspective\n  location " << pov_vector(location) << "\n  sky z\n  up z\n"
+      << "  right -x * image_width / image_height\n  angle " << pov_number(kCameraFovDeg) << "\n  look_at "
+      << pov_vector(look_at) << "\n}\n\n";
+  content.camera = cam.str();
+
+  const FrameBlur blur = plan_blur(shot, t, fps);
+  for (int i = 0; i < shot.timeline.ball_count(); ++i)
+    content.parts.push_back(ball_part(shot, blur, i, t, fps, camera.location));
+  content.parts.push_back(stick_part(shot, blur, t, fps));
+  return content;
+}
+
+void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
+  const FrameContent content = frame_content(shot, frame, fps);
+  out << content.header << content.camera;
+  for (const FramePart& part : content.parts) out << part.text;
 }
 
 }  // namespace bsim

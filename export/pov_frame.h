@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_view.h"
 #include "pov_table.h"
 
 namespace bsim {
@@ -58,6 +59,34 @@ struct StickTravel {
 /// instants across the open shutter: one piece between each two, and consecutive pieces of the same
 /// speed (within 3 %) joined into one.
 std::vector<StickTravel> stick_travel(const std::vector<double>& along);
+
+/// A sphere (m) in a bound: a convex set holds what it bounds when it holds every sphere of the bound.
+struct BoundSphere {
+  Vec3 centre{0, 0, 0};
+  double radius = 0;
+};
+
+/// One thing a frame draws, a ball or the stick: its lines in the frame's file (empty when it is not
+/// drawn) and spheres whose convex hull holds all that is seen of it (`seen`: a ball's streak, every
+/// copy of the stick) and all that casts its shadow (`casts`); `mirrors` when its surface reflects
+/// what is round it (a ball's clear coat).
+struct FramePart {
+  std::string text;
+  std::vector<BoundSphere> seen, casts;
+  bool mirrors = false;
+};
+
+/// What a frame's file holds: its first lines (the frame's number and time, the include), the camera
+/// and its pose (as POV-Ray gets it), then every ball in the timeline's order and last the stick.
+struct FrameContent {
+  std::string header;
+  std::string camera;
+  CameraPose camera_pose;
+  std::vector<FramePart> parts;
+};
+
+/// Frame `frame` of the shot, which shows t = frame / fps: what write_pov_frame writes, with bounds.
+FrameContent frame_content(const Shot& shot, int frame, int fps);
 
 /// Writes frame `frame` of the shot, which shows t = frame / fps. Pocketed balls lie in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out);

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -21,8 +22,10 @@ namespace {
 
 /// POV-Ray's linear picture, while the frame is not yet whole (the PNG developed from it is written
 /// whole, atomic_file.h).
-std::string temp_hdr(int frame) { return "." + frame_name(frame) + ".tmp.hdr"; }
-std::string log_name(int frame) { return "." + frame_name(frame) + ".log"; }
+/// Rectangle `part` of a partial frame has names of its own (-1: the whole frame).
+std::string part_tag(int part) { return part < 0 ? "" : ".r" + std::to_string(part); }
+std::string temp_hdr(int frame, int part = -1) { return "." + frame_name(frame) + part_tag(part) + ".tmp.hdr"; }
+std::string log_name(int frame, int part = -1) { return "." + frame_name(frame) + part_tag(part) + ".log"; }
 
 void remove_quietly(const std::string& path) {
   std::error_code ignored;
@@ -32,10 +35,12 @@ void remove_quietly(const std::string& path) {
 /// What POV-Ray 3.7 prints when it cannot start its render thread in time, as happens under load.
 constexpr const char* kWorkerTimeout = "Timed out waiting for worker thread startup";
 
-/// A frame waiting to be rendered, and which attempt at it this is (1 for the first).
+/// A frame (or rectangle `part` of a partial frame; -1: the whole frame) waiting to be rendered, and
+/// which attempt at it this is (1 for the first).
 struct Attempt {
   FrameJob job;
   int number = 1;
+  int part = -1;
 };
 
 /// The frame's file as the messages name it, relative to the output directory.
@@ -92,6 +97,10 @@ std::vector<std::string> povray_quality_arguments(Quality quality) {
 }
 
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame) {
+  return povray_arguments(settings, FrameJob{frame, 0, -1, {}}, -1);
+}
+
+std::vector<std::string> povray_arguments(const RenderSettings& settings, const FrameJob& job, int part) {
   // -D: no display (with one asked for and none there, POV-Ray draws ASCII art on stdout).
   // +WT1: one render thread a process; parallelism comes from running several processes.
   // +FH: linear light, unclipped, in a Radiance .hdr (the include sets assumed_gamma 1), which the
@@ -100,16 +109,42 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, int fr
                                    "-D",
                                    "+FH",
                                    "+WT1",
-                                   "+I" + frame_name(frame) + ".pov",
-                                   "+O" + temp_hdr(frame),
+                                   "+I" + frame_name(job.frame) + ".pov",
+                                   "+O" + temp_hdr(job.frame, part),
                                    "+W" + std::to_string(settings.width),
                                    "+H" + std::to_string(settings.height)};
   const std::vector<std::string> quality = povray_quality_arguments(settings.quality);
   args.insert(args.end(), quality.begin(), quality.end());
+  if (part >= 0) {
+    // 1-based and inclusive. A start of 1 is left out: POV-Ray reads a value up to 1 as a share of the
+    // picture, not a pixel.
+    const PixelRect& r = job.rects[static_cast<std::size_t>(part)];
+    if (r.x0 > 0) args.push_back("+SC" + std::to_string(r.x0 + 1));
+    args.push_back("+EC" + std::to_string(r.x1));
+    if (r.y0 > 0) args.push_back("+SR" + std::to_string(r.y0 + 1));
+    args.push_back("+ER" + std::to_string(r.y1));
+  }
   return args;
 }
 
 namespace {
+
+/// A partial frame's traced rectangles, until they and its reference's picture are all there.
+struct PartialFrame {
+  FrameJob job;
+  int parts_left = 0;
+  std::vector<HdrImage> parts;
+};
+
+/// Lays rectangle `rect` of `part` over `picture` (the same size).
+void lay_over(HdrImage& picture, const HdrImage& part, const PixelRect& rect) {
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    const std::size_t at =
+        (static_cast<std::size_t>(y) * static_cast<std::size_t>(picture.width) + static_cast<std::size_t>(rect.x0)) * 3;
+    std::copy_n(part.rgb.begin() + static_cast<std::ptrdiff_t>(at), static_cast<std::size_t>(rect.x1 - rect.x0) * 3,
+                picture.rgb.begin() + static_cast<std::ptrdiff_t>(at));
+  }
+}
 
 /// One call of render_frames: the frames waiting, the POV-Ray processes rendering, and what came of it.
 class FrameRendering {
@@ -124,10 +159,28 @@ class FrameRendering {
         pool_(settings.processes),
         progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
                   progress_style(settings.quiet)) {
-    for (const FrameJob& job : jobs) waiting_.push_back({job, 1});
+    // The time left is reckoned from the pixels still to trace (and each POV-Ray run's start), so a
+    // run of cheap partial frames after a whole one does not make it look short or long.
+    double work = 0;
+    for (const FrameJob& job : jobs) {
+      work += work_of(job, -1);
+      for (int part = 0; part < static_cast<int>(job.rects.size()); ++part) work += work_of(job, part);
+    }
+    progress_.count_work(work);
+    for (const FrameJob& job : jobs) {
+      if (job.reference < 0) {
+        waiting_.push_back({job, 1, -1});
+        continue;
+      }
+      ++dependents_[job.reference];
+      const int parts = static_cast<int>(job.rects.size());
+      partial_[job.frame] = {job, parts, std::vector<HdrImage>(job.rects.size())};
+      for (int part = 0; part < parts; ++part) waiting_.push_back({job, 1, part});
+    }
   }
 
   RunOutcome run() {
+    compose_ready();  // frames with nothing to trace whose reference is already there (none yet)
     while (!waiting_.empty() || !pool_.empty()) {
       start_waiting();
       if (pool_.empty()) break;
@@ -144,26 +197,41 @@ class FrameRendering {
       }
       if (!attempt_ended(ended)) break;
     }
+    if (outcome_ == RunOutcome::done && !partial_.empty() && !InterruptGuard::interrupted()) {
+      const int frame = partial_.begin()->first;
+      fail(frame, shown_frame(frame) + " could not be made: the frame it reuses was not rendered");
+    }
     progress_.finish();
     if (outcome_ == RunOutcome::done && InterruptGuard::interrupted()) outcome_ = RunOutcome::interrupted;
     return outcome_;
   }
 
+  /// The frame whose failure stopped the run (-1: none).
+  int failed_frame() const { return failed_frame_; }
+
  private:
-  void cleanup(int frame) {
-    remove_quietly(dir_ + temp_hdr(frame));
-    remove_quietly(dir_ + log_name(frame));
+  /// What tracing the whole frame (part -1) or one rectangle costs, in pixels.
+  double work_of(const FrameJob& job, int part) const {
+    if (part < 0)
+      return job.reference < 0 ? static_cast<double>(settings_.width) * settings_.height + kRegionStartPixels : 0.0;
+    return static_cast<double>(job.rects[static_cast<std::size_t>(part)].area() + kRegionStartPixels);
+  }
+
+  void cleanup(int frame, int part = -1) {
+    remove_quietly(dir_ + temp_hdr(frame, part));
+    remove_quietly(dir_ + log_name(frame, part));
   }
   void stop_all() {
-    pool_.stop_all([&](const Attempt& attempt) { cleanup(attempt.job.frame); });
+    pool_.stop_all([&](const Attempt& attempt) { cleanup(attempt.job.frame, attempt.part); });
   }
-  void fail(int frame, const std::string& message) {
+  void fail(int frame, const std::string& message, int part = -1) {
     if (outcome_ == RunOutcome::done) {
       error_ = message;
+      failed_frame_ = frame;
       outcome_ = RunOutcome::failed;
       stop_all();  // no point finishing the others: the movie cannot be made
     }
-    cleanup(frame);
+    cleanup(frame, part);
   }
 
   /// Starts waiting frames while the pool has room and nothing has failed.
@@ -172,7 +240,8 @@ class FrameRendering {
       const Attempt attempt = waiting_.front();
       waiting_.pop_front();
       const int frame = attempt.job.frame;
-      if (!pool_.start(attempt, povray_arguments(settings_, frame), frames_dir_, dir_ + log_name(frame), error_)) {
+      if (!pool_.start(attempt, povray_arguments(settings_, attempt.job, attempt.part), frames_dir_,
+                       dir_ + log_name(frame, attempt.part), error_)) {
         outcome_ = RunOutcome::failed;
         break;
       }
@@ -184,31 +253,32 @@ class FrameRendering {
   bool attempt_ended(const ProcessPool<Attempt>::Ended& ended) {
     const Attempt& attempt = ended.job;
     const int frame = attempt.job.frame;
+    const std::string hdr = temp_hdr(frame, attempt.part);
     std::error_code ec;
-    const auto size = std::filesystem::file_size(dir_ + temp_hdr(frame), ec);
+    const auto size = std::filesystem::file_size(dir_ + hdr, ec);
     const bool picture_there = !ec;
     // POV-Ray's picture, read back whole: one it wrote but that cannot be read is a failed attempt.
     HdrImage image;
     std::string unreadable;
-    if (ended.success && picture_there && size > 0 && !read_hdr(dir_ + temp_hdr(frame), image, unreadable)) {
-      const std::string named = "cannot read " + dir_ + temp_hdr(frame) + ": ";
+    if (ended.success && picture_there && size > 0 && !read_hdr(dir_ + hdr, image, unreadable)) {
+      const std::string named = "cannot read " + dir_ + hdr + ": ";
       if (unreadable.rfind(named, 0) == 0) unreadable.erase(0, named.size());
       unreadable = "wrote a picture that cannot be read: " + unreadable;
     }
     if (ended.success && picture_there && size > 0 && unreadable.empty()) {
-      developed(attempt, std::move(image));
+      rendered(attempt, std::move(image));
       return true;
     }
     if (InterruptGuard::interrupted()) {
       // Ctrl-C reaches POV-Ray too, which dies of it: the user stopping the run, not a failure.
-      cleanup(frame);
+      cleanup(frame, attempt.part);
       stop_all();
       outcome_ = RunOutcome::interrupted;
       return false;
     }
-    const std::string log_text = read_text_file(dir_ + log_name(frame));
+    const std::string log_text = read_text_file(dir_ + log_name(frame, attempt.part));
     if (const std::optional<PovParseError> parse = find_parse_error(log_text)) {
-      parse_failed(frame, *parse);
+      parse_failed(attempt, *parse);
       return true;
     }
     const std::string reason =
@@ -217,22 +287,60 @@ class FrameRendering {
     return true;
   }
 
-  /// Develops a rendered frame into its PNG and records it in the frame store.
-  void developed(const Attempt& attempt, HdrImage image) {
+  /// A whole frame is developed at once (and kept while a later frame reuses it); a rectangle waits
+  /// for the frame's other rectangles and its reference.
+  void rendered(const Attempt& attempt, HdrImage image) {
     const int frame = attempt.job.frame;
+    cleanup(frame, attempt.part);
+    progress_.add_work(work_of(attempt.job, attempt.part));
+    if (attempt.part < 0) {
+      developed(frame, attempt.job.key, std::move(image));
+    } else {
+      PartialFrame& partial = partial_[frame];
+      partial.parts[static_cast<std::size_t>(attempt.part)] = std::move(image);
+      --partial.parts_left;
+    }
+    compose_ready();
+  }
+
+  /// Lays every partial frame whose rectangles and reference are all there over its reference, and
+  /// develops it; each may be another's reference, so until none is left.
+  void compose_ready() {
+    for (bool progress = true; progress && outcome_ == RunOutcome::done;) {
+      progress = false;
+      for (auto it = partial_.begin(); it != partial_.end(); ++it) {
+        PartialFrame& partial = it->second;
+        const auto reference = kept_.find(partial.job.reference);
+        if (partial.parts_left > 0 || reference == kept_.end()) continue;
+        HdrImage picture = reference->second;
+        if (--dependents_[partial.job.reference] == 0) kept_.erase(reference);
+        for (std::size_t part = 0; part < partial.job.rects.size(); ++part)
+          lay_over(picture, partial.parts[part], partial.job.rects[part]);
+        const FrameJob job = partial.job;
+        partial_.erase(it);
+        developed(job.frame, job.key, std::move(picture));
+        progress = true;
+        break;
+      }
+    }
+  }
+
+  /// Develops a rendered frame into its PNG and records it in the frame store.
+  void developed(int frame, std::uint64_t key, HdrImage image) {
+    if (dependents_[frame] > 0) kept_[frame] = image;
     const std::string png = frame_name(frame) + ".png";
     std::string develop_error;
     if (!develop_to_png(std::move(image), dir_ + png, develop_error)) {
       fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
       return;
     }
-    cleanup(frame);
-    cache_.set(png, attempt.job.key);
+    cache_.set(png, key);
     progress_.advance();
   }
 
   /// The scene itself is wrong: another attempt would fail the same way.
-  void parse_failed(int frame, const PovParseError& parse) {
+  void parse_failed(const Attempt& attempt, const PovParseError& parse) {
+    const int frame = attempt.job.frame;
     if (outcome_ == RunOutcome::done) {
       std::string file = parse.file.empty() ? frame_name(frame) + ".pov" : parse.file;
       if (file.front() != '/')
@@ -241,21 +349,23 @@ class FrameRendering {
       progress_.finish();
       progress_.message(file + line + ": error: povray: " + parse.message);
     }
-    fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it");
+    fail(frame, shown_frame(frame) + " failed to render: POV-Ray could not parse it", attempt.part);
   }
 
   void retry_or_fail(const Attempt& attempt, const std::string& reason) {
     const int frame = attempt.job.frame;
     if (outcome_ == RunOutcome::done && attempt.number < kRenderAttempts) {
-      cleanup(frame);
+      cleanup(frame, attempt.part);
       progress_.message("billiards-export: warning: " + shown_frame(frame) + ": povray failed (" + reason +
                         "); retrying (attempt " + std::to_string(attempt.number + 1) + " of " +
                         std::to_string(kRenderAttempts) + ")");
-      waiting_.push_front({attempt.job, attempt.number + 1});
+      waiting_.push_front({attempt.job, attempt.number + 1, attempt.part});
       return;
     }
-    fail(frame, shown_frame(frame) + " failed to render (" + std::to_string(attempt.number) +
-                    (attempt.number == 1 ? " attempt): " : " attempts): ") + reason);
+    fail(frame,
+         shown_frame(frame) + " failed to render (" + std::to_string(attempt.number) +
+             (attempt.number == 1 ? " attempt): " : " attempts): ") + reason,
+         attempt.part);
   }
 
   const std::string& frames_dir_;
@@ -266,14 +376,21 @@ class FrameRendering {
   ProcessPool<Attempt> pool_;
   ProgressReporter progress_;
   std::deque<Attempt> waiting_;
+  std::map<int, PartialFrame> partial_;  ///< partial frames not yet developed
+  std::map<int, int> dependents_;        ///< frame -> partial frames still to be laid over it
+  std::map<int, HdrImage> kept_;         ///< pictures (before developing) that partial frames still need
   RunOutcome outcome_ = RunOutcome::done;
+  int failed_frame_ = -1;
 };
 
 }  // namespace
 
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
-                         const RenderSettings& settings, FrameCache& cache, std::string& error) {
-  return FrameRendering(frames_dir, jobs, total, settings, cache, error).run();
+                         const RenderSettings& settings, FrameCache& cache, std::string& error, int* failed_frame) {
+  FrameRendering rendering(frames_dir, jobs, total, settings, cache, error);
+  const RunOutcome outcome = rendering.run();
+  if (failed_frame) *failed_frame = rendering.failed_frame();
+  return outcome;
 }
 
 }  // namespace bsim

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "changed_region.h"
 #include "export_options.h"
 #include "frame_cache.h"
 
@@ -14,6 +15,11 @@ namespace bsim {
 struct FrameJob {
   int frame = 0;
   std::uint64_t key = 0;  ///< hash of everything the picture depends on
+  /// -1: the frame is traced whole. Else an earlier job's frame of the same camera: only `rects`
+  /// (changed_region.h) are traced, and every other pixel is that frame's (its picture before it is
+  /// developed, which is the whole-frame render's, however it was made).
+  int reference = -1;
+  std::vector<PixelRect> rects{};
 };
 
 struct RenderSettings {
@@ -49,15 +55,21 @@ std::optional<PovParseError> find_parse_error(const std::string& log_text);
 /// POV-Ray's options for a quality preset (what the frame store's key records too).
 std::vector<std::string> povray_quality_arguments(Quality quality);
 
-/// POV-Ray's command line for one frame, run inside the frames directory.
+/// POV-Ray's command line for one frame, run inside the frames directory: the whole frame, or only
+/// rectangle `part` of `job`'s rects (+SC/+EC/+SR/+ER, 1-based and inclusive).
 std::vector<std::string> povray_arguments(const RenderSettings& settings, int frame);
+std::vector<std::string> povray_arguments(const RenderSettings& settings, const FrameJob& job, int part);
 
-/// Renders `jobs` (frames of `total`; the others are up to date) in `frames_dir`. A frame that fails
+/// Renders `jobs` (frames of `total`; the others are up to date) in `frames_dir`. A job with a
+/// reference is traced in its rectangles only (each a POV-Ray run of its own) and laid over its
+/// reference's picture; a reference must come earlier in `jobs`. A frame that fails
 /// for a reason not in the scene is tried again, up to kRenderAttempts in all, with a warning on
 /// standard error; a parse error is never retried and is printed as `FILE:LINE: error: povray: ...`.
 /// On failure `error` names the frame and quotes POV-Ray; interrupted means Ctrl-C came and every
 /// child was stopped. Either way no partial picture is left behind.
+/// `failed_frame`, when given, is set to the frame that failed.
 RunOutcome render_frames(const std::string& frames_dir, const std::vector<FrameJob>& jobs, int total,
-                         const RenderSettings& settings, FrameCache& cache, std::string& error);
+                         const RenderSettings& settings, FrameCache& cache, std::string& error,
+                         int* failed_frame = nullptr);
 
 }  // namespace bsim

@@ -120,9 +120,11 @@ bool write_run_summary(const RunSummary& s, const ExportOptions& o, const std::s
       << quality_name(o.quality) << "\", \"jobs\": " << o.jobs << ", \"audio_lead\": " << o.audio_lead
       << ", \"music\": " << json_string(o.music_path) << ", \"strict\": " << (o.strict ? "true" : "false")
       << ", \"camera\": \"" << (o.auto_camera ? "auto" : "scene")
-      << "\", \"no_render\": " << (o.no_render ? "true" : "false") << "},\n"
+      << "\", \"no_render\": " << (o.no_render ? "true" : "false")
+      << ", \"whole_frames\": " << (o.whole_frames ? "true" : "false") << "},\n"
       << "  \"frames\": {\"total\": " << s.frames_total << ", \"rendered\": " << s.frames_rendered
-      << ", \"reused\": " << s.frames_reused << "},\n"
+      << ", \"reused\": " << s.frames_reused << ", \"partial\": " << s.frames_partial
+      << ", \"traced\": " << seconds(s.traced_share) << "},\n"
       << "  \"seconds\": {\"simulating\": " << seconds(s.simulating) << ", \"writing\": " << seconds(s.writing)
       << ", \"rendering\": " << seconds(s.rendering) << ", \"encoding\": " << seconds(s.encoding)
       << ", \"total\": " << seconds(total) << "},\n"

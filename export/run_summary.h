@@ -19,6 +19,8 @@ struct RunSummary {
   int frames_total = 0;
   int frames_rendered = 0;  ///< by POV-Ray in this run
   int frames_reused = 0;    ///< copied from the frame store or from an identical frame of this run
+  int frames_partial = 0;   ///< of those rendered, traced only where they changed (changed_region.h)
+  double traced_share = 1;  ///< of the pixels of the frames rendered, the share POV-Ray traced
   double simulating = 0;    ///< s: reading the scene, simulating, scripting the camera and stick
   double writing = 0;       ///< s: the data files, the frames' .pov files and the sound track
   double rendering = 0;     ///< s inside POV-Ray (wall time)

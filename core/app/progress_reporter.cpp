@@ -89,15 +89,19 @@ void ProgressReporter::update() {
   if (step(done_) > last_step_ || now - last_line_ >= kMaxSilence) print_plain(now);
 }
 
+double ProgressReporter::time_left(double elapsed) const {
+  if (done_ >= total_) return 0;
+  if (elapsed <= 0) return -1;
+  if (work_total_ > 0) return work_done_ > 0 ? std::max(work_total_ - work_done_, 0.0) * elapsed / work_done_ : -1;
+  const int done_here = done_ - done_at_start_;
+  return done_here > 0 ? (total_ - done_) * elapsed / done_here : -1;
+}
+
 void ProgressReporter::print_plain(std::chrono::steady_clock::time_point now) {
   const double elapsed = seconds_between(start_, now);
-  const int done_here = done_ - done_at_start_;
   const long percent = total_ > 0 ? static_cast<long>(static_cast<long long>(done_) * 100 / total_) : 100;
-  std::string eta = "unknown";
-  if (done_ >= total_)
-    eta = progress_time_text(0);
-  else if (done_here > 0 && elapsed > 0)
-    eta = progress_time_text((total_ - done_) * elapsed / done_here);
+  const double left = time_left(elapsed);
+  const std::string eta = left < 0 ? "unknown" : progress_time_text(left);
   out_ << program_ << ": " << label_ << ": " << done_ << "/" << total_ << " frames (" << percent << "%), "
        << progress_time_text(elapsed) << " elapsed, ETA " << eta << "\n";
   out_.flush();
@@ -110,10 +114,11 @@ void ProgressReporter::draw_terminal(std::chrono::steady_clock::time_point now) 
   const double elapsed = seconds_between(start_, now);
   const int done_here = done_ - done_at_start_;
   std::string line = "\r" + label_ + " frame " + std::to_string(done_) + "/" + std::to_string(total_);
-  if (done_here > 0 && elapsed > 0) {
+  const double left = time_left(elapsed);
+  if (done_here > 0 && elapsed > 0 && left >= 0) {
     const double rate = done_here / elapsed;
     char text[64];
-    std::snprintf(text, sizeof text, "  %.2f frames/s  ETA %s", rate, clock_text((total_ - done_) / rate).c_str());
+    std::snprintf(text, sizeof text, "  %.2f frames/s  ETA %s", rate, clock_text(left).c_str());
     line += text;
   }
   line += "\033[K";  // clear what a longer earlier line left

@@ -43,6 +43,11 @@ class ProgressReporter {
   void advance() { set_done(done_ + 1); }
   /// `done` frames of the total are done now.
   void set_done(int done);
+  /// The time left is reckoned from work, not frames: `total` units of it (pixels, say) are to be
+  /// done in this run, for the frames not already done. Frames still count what is shown.
+  void count_work(double total) { work_total_ = total; }
+  /// `work` more units done (with or without a frame finishing).
+  void add_work(double work) { work_done_ += work; }
   /// Time passed with no news: a plain line if none came for kMaxSilence.
   void tick();
   /// The run is over: the last plain line (unless the one before said the same), or the end of the
@@ -59,12 +64,16 @@ class ProgressReporter {
   void print_plain(std::chrono::steady_clock::time_point now);
   void draw_terminal(std::chrono::steady_clock::time_point now);
   int step(int done) const;
+  /// s left, from the work (or the frames) done since the start in `elapsed` s; negative: unknown.
+  double time_left(double elapsed) const;
 
   std::string program_;
   std::string label_;
   int total_ = 0;
   int done_ = 0;
   int done_at_start_ = 0;
+  double work_total_ = 0;  ///< 0: the time left is reckoned from frames
+  double work_done_ = 0;
   ProgressStyle style_ = ProgressStyle::silent;
   std::ostream& out_;
   Clock clock_;

@@ -64,6 +64,7 @@ TEST_SUITE("option tables") {
         {"--no-render", {"", [](const E& o) { return o.no_render; }}},
         {"--quality", {"draft", [](const E& o) { return o.quality == Quality::draft; }}},
         {"--jobs", {"3", [](const E& o) { return o.jobs == 3; }}},
+        {"--whole-frames", {"", [](const E& o) { return o.whole_frames; }}},
         {"--audio-lead", {"0.25", [](const E& o) { return o.audio_lead == 0.25; }}},
         {"--music", {"bed.wav", [](const E& o) { return o.music_path == "bed.wav"; }}},
         {"--loudness",

@@ -50,6 +50,24 @@ TEST_SUITE("progress") {
     CHECK(out.str() == "billiards-export: rendering: 135/270 frames (50%), 1m12s elapsed, ETA 1m12s\n");
   }
 
+  TEST_CASE("with work counted, the time left is reckoned from the work, not the frames") {
+    // A whole frame (100 units) first, then nine partial frames of 10 units each: after the whole one
+    // took 10 s, the frames alone would say 90 s are left, the work says 9 s.
+    FakeClock clock;
+    std::ostringstream out;
+    ProgressReporter progress("billiards-export", "rendering", 10, 0, ProgressStyle::plain, out, clock.clock());
+    progress.count_work(190);
+    clock.pass(seconds(10));
+    progress.add_work(100);
+    progress.advance();
+    CHECK(out.str() == "billiards-export: rendering: 1/10 frames (10%), 10s elapsed, ETA 9s\n");
+    out.str("");
+    clock.pass(seconds(1));
+    progress.add_work(10);
+    progress.advance();  // work is counted as it is done: 110 of 190 in 11 s, 80 left
+    CHECK(out.str() == "billiards-export: rendering: 2/10 frames (20%), 11s elapsed, ETA 8s\n");
+  }
+
   TEST_CASE("off a terminal, a line for every tenth of the frames, and one at the end") {
     FakeClock clock;
     std::ostringstream out;

@@ -7,6 +7,11 @@
 // Other work on the machine while it runs skews every figure.
 // --every K renders every K-th frame only (and skips the movie): a quicker estimate.
 // Takes many minutes at K = 1; never run by ctest.
+// --reuse [--size WxH] does something else: the default movie at final quality (640x360 unless
+// --size says otherwise), every frame rendered with --jobs 2 twice, side by side: tracing every pixel
+// (--whole-frames) and tracing only what changed (changed_region.h). It prints POV-Ray's CPU seconds
+// (the children's user and system time) and the wall time of each, the share of the pixels traced,
+// and checks that the two made the same pictures.
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -16,6 +21,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -103,19 +110,98 @@ double machine_speedup(const std::string& frames_dir, int frames, bsim::RenderSe
   return 2 * alone.wall / pair.wall;
 }
 
-}  // namespace
+/// s of CPU the child processes that have ended have used (POV-Ray's).
+double children_cpu() {
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
 
-int main(int argc, char** argv) {
-  int every = 1;
+/// The pictures of the frames in `frames_dir`, by name.
+std::map<std::string, std::string> pictures(const std::string& frames_dir) {
+  std::map<std::string, std::string> read;
+  for (const auto& e : fs::directory_iterator(frames_dir)) {
+    if (e.path().extension() != ".png") continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    read[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return read;
+}
+
+/// --reuse: the movie's frames rendered whole and reusing what did not change, side by side.
+int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, const std::string& frames_dir,
+                const std::string& povray) {
+  const int frames = bsim::frame_count(shot.timeline.duration(), options.fps);
+  // Frames alike are rendered once, as in a run.
+  const std::vector<std::uint64_t> keys = bsim::frame_store_keys(frames_dir, frames, options);
+  std::vector<bsim::FrameJob> whole;
+  std::set<std::uint64_t> seen;
+  for (int k = 0; k < frames; ++k)
+    if (seen.insert(keys[static_cast<std::size_t>(k)]).second) whole.push_back({k, keys[static_cast<std::size_t>(k)]});
+  std::vector<bsim::FrameJob> reusing = whole;
+  bsim::plan_partial_frames(shot, options, reusing);
+  long traced = 0, pixels = static_cast<long>(options.width) * options.height;
+  int partial = 0;
+  for (const bsim::FrameJob& job : reusing) {
+    partial += job.reference >= 0;
+    if (job.reference < 0) traced += pixels;
+    for (const bsim::PixelRect& r : job.rects) traced += r.area();
+  }
+  std::printf(
+      "default break, final %dx%d, %d frames, %zu rendered (the rest alike); reusing: %d traced in part, "
+      "%.1f%% of the rendered frames' pixels traced\n",
+      options.width, options.height, frames, whole.size(), partial,
+      100.0 * static_cast<double>(traced) / static_cast<double>(pixels * static_cast<long>(whole.size())));
+  std::fflush(stdout);
+  bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 2, ""};
+  settings.quiet = true;
+  double cpu = children_cpu();
+  const RenderTiming all = render(frames_dir, whole, settings);
+  const double all_cpu = children_cpu() - cpu;
+  const std::map<std::string, std::string> all_pictures = pictures(frames_dir);
+  cpu = children_cpu();
+  const RenderTiming changed = render(frames_dir, reusing, settings);
+  const double changed_cpu = children_cpu() - cpu;
+  const std::map<std::string, std::string> changed_pictures = pictures(frames_dir);
+  int differ = 0;
+  for (const auto& [name, bytes] : all_pictures)
+    differ += changed_pictures.count(name) == 0 || changed_pictures.at(name) != bytes;
+  std::printf("%-16s %12s %10s\n", "", "POV-Ray CPU", "wall");
+  std::printf("%-16s %10.1f s %8.1f s\n", "--whole-frames", all_cpu, all.wall);
+  std::printf("%-16s %10.1f s %8.1f s\n", "reusing", changed_cpu, changed.wall);
+  std::printf("reusing takes %.0f%% of the CPU of --whole-frames; %d of %zu pictures differ\n",
+              100 * changed_cpu / all_cpu, differ, all_pictures.size());
+  return differ == 0 ? 0 : 1;
+}
+
+/// The command line: --every K, --fps N, --reuse, --size WxH.
+bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse) {
   bsim::ExportOptions options;
   options.quality = bsim::Quality::draft;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (flag == "--every" && i + 1 < argc)
+    if (flag == "--reuse") {
+      reuse = true;
+      options.quality = bsim::Quality::final;
+      if (options.width == 1280) options.width = 640, options.height = 360;
+    } else if (flag == "--size" && i + 1 < argc &&
+               std::sscanf(argv[i + 1], "%dx%d", &options.width, &options.height) == 2)
+      ++i;
+    else if (flag == "--every" && i + 1 < argc)
       every = std::max(1, std::atoi(argv[++i]));
     else if (flag == "--fps" && i + 1 < argc)
       options.fps = std::max(1, std::atoi(argv[++i]));
   }
+  return options;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int every = 1;
+  bool reuse = false;
+  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse);
   const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
   if (povray.empty() || ffmpeg.empty()) {
     std::fprintf(stderr, "render_bench: povray and ffmpeg are needed; run `bash .ci/install-deps`\n");
@@ -139,6 +225,11 @@ int main(int argc, char** argv) {
   }
   const double write_time = seconds_since(start);
 
+  if (reuse) {
+    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray);
+    fs::remove_all(dir);
+    return status;
+  }
   const int frames = bsim::frame_count(loaded.shot->timeline.duration(), options.fps);
   std::vector<bsim::FrameJob> jobs;
   for (int k = 0; k < frames; k += every) jobs.push_back({k, 0});

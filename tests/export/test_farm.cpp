@@ -5,9 +5,11 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "export_options.h"
+#include "farm_files.h"
 #include "farm_slurm.h"
 #include "files.h"
 #include "support.h"
@@ -239,5 +241,19 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(has(movie.err, "running " + dir + "/farm/billiards-export"));
     CHECK(has(movie.err, "no movie: 10 of 10 frames are missing"));
     CHECK_FALSE(fs::exists(record));
+  }
+
+  TEST_CASE("farm/partial.txt keeps each partial frame's reference and rectangles") {
+    // A frame laid over an earlier one of its chunk reads back as it was written.
+    const std::map<int, bsim::farm::PartialPlan> plans = {{5, {4, {{0, 32, 64, 96}, {128, 0, 160, 32}}}}, {6, {5, {}}}};
+    bsim::test::TempDir dir;
+    std::filesystem::create_directories(dir.path / "farm");
+    REQUIRE(bsim::test::write_file(dir.path / bsim::farm::kPartial, bsim::farm::partial_text(plans)));
+    const std::map<int, bsim::farm::PartialPlan> read = bsim::farm::read_partial(dir.path.string());
+    REQUIRE(read.size() == 2);
+    CHECK(read.at(5).reference == 4);
+    CHECK(read.at(5).rects == plans.at(5).rects);
+    CHECK(read.at(6).rects.empty());
+    CHECK(bsim::farm::read_partial((dir.path / "none").string()).empty());  // none: every frame whole
   }
 }

@@ -1,0 +1,247 @@
+#include "changed_region.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "pocket_fall.h"
+#include "scene.h"
+#include "table.h"
+
+namespace bsim {
+
+namespace {
+
+/// m: a shadow caster reaching within this of the lamp's light is not bounded (the frame is rendered
+/// whole).
+constexpr double kNearest = 0.01;
+
+/// Spheres whose convex hull must be kept in the region.
+using Hull = std::vector<BoundSphere>;
+
+/// The hull of the shadow `casts` throws from the lamp down to `z0` (see changed_region.h); false
+/// when a sphere reaches up to the light.
+bool shadow_hull(const std::vector<BoundSphere>& casts, const RegionScene& scene, double z0, Hull& hull) {
+  double scale = 1;
+  for (const BoundSphere& s : casts) {
+    const double top = s.centre.z() + s.radius;
+    if (top > scene.light_z - kNearest) return false;
+    scale = std::max(scale, (scene.light_z - z0) / (scene.light_z - top));
+  }
+  hull = casts;
+  for (double lx : {scene.light_x0, scene.light_x1}) {
+    for (double ly : {scene.light_y0, scene.light_y1}) {
+      const Vec3 light(lx, ly, scene.light_z);
+      for (const BoundSphere& s : casts) hull.push_back({light + scale * (s.centre - light), scale * s.radius});
+    }
+  }
+  return true;
+}
+
+/// The hull's extent seen from above.
+struct PlanBox {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+};
+
+PlanBox plan_box(const Hull& hull) {
+  PlanBox box;
+  for (const BoundSphere& s : hull) {
+    box.x0 = std::min(box.x0, s.centre.x() - s.radius), box.x1 = std::max(box.x1, s.centre.x() + s.radius);
+    box.y0 = std::min(box.y0, s.centre.y() - s.radius), box.y1 = std::max(box.y1, s.centre.y() + s.radius);
+  }
+  return box;
+}
+
+/// Whether the hull stays over the table's wooden frame (seen from above).
+bool over_frame(const Hull& hull, const RegionScene& scene) {
+  const PlanBox box = plan_box(hull);
+  return box.x0 >= scene.frame_x0 && box.x1 <= scene.frame_x1 && box.y0 >= scene.frame_y0 && box.y1 <= scene.frame_y1;
+}
+
+/// Whether the hull, seen from above, may reach a pocket's opening.
+bool near_pocket(const Hull& hull, const RegionScene& scene) {
+  const PlanBox box = plan_box(hull);
+  return std::any_of(scene.pockets.begin(), scene.pockets.end(), [&](const RegionScene::Opening& p) {
+    const double dx = std::max({box.x0 - p.x, p.x - box.x1, 0.0}), dy = std::max({box.y0 - p.y, p.y - box.y1, 0.0});
+    return dx * dx + dy * dy <= p.radius * p.radius;
+  });
+}
+
+/// Where a part's shadow can fall; false when it cannot be bounded. Below the cloth the lamp's light
+/// goes on only through a pocket's opening (into its cup) or beyond the table's frame (to the floor).
+bool part_shadow(const FramePart& part, const RegionScene& scene, Hull& hull) {
+  if (part.casts.empty()) {
+    hull.clear();
+    return true;
+  }
+  if (!shadow_hull(part.casts, scene, scene.bed, hull)) return false;
+  if (over_frame(hull, scene) && !near_pocket(hull, scene)) return true;
+  if (!shadow_hull(part.casts, scene, scene.cup_floor, hull)) return false;
+  if (over_frame(hull, scene)) return true;
+  return shadow_hull(part.casts, scene, scene.floor, hull);
+}
+
+/// The camera's projection onto a width x height picture, in pixels from its top-left corner.
+class PixelProjection {
+ public:
+  PixelProjection(const CameraPose& pose, int width, int height)
+      : view_(pose, kCameraFovDeg, static_cast<double>(width) / height), width_(width), height_(height) {}
+
+  /// The hull's bounding rectangle in the picture, grown by the margin, snapped to the block grid
+  /// and clipped to the picture (empty when the hull is not in it). A hull reaching behind the camera's
+  /// plane goes off the picture's edge on each side towards which it crosses that plane.
+  PixelRect bound(const Hull& hull) const {
+    std::vector<Vec3> front, behind;  // the corners of the spheres' boxes, from the eye in the view's axes
+    for (const BoundSphere& s : hull) {
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 d =
+            s.centre + s.radius * Vec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1) - view_.eye();
+        const Vec3 v(d.dot(view_.right()), d.dot(view_.up()), d.dot(view_.forward()));
+        (v.z() > kAhead ? front : behind).push_back(v);
+      }
+    }
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Vec3& v : front) {
+      const double x = 0.5 * width_ * (1 + v.x() / (v.z() * view_.half_width()));
+      const double y = 0.5 * height_ * (1 - v.y() / (v.z() * view_.half_height()));
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    // Where an edge from a corner in front to one behind crosses the camera's plane, the hull's picture
+    // runs off to infinity in the direction of that crossing point.
+    for (const Vec3& f : front) {
+      for (const Vec3& b : behind) {
+        const Vec3 c = f + (f.z() / (f.z() - b.z())) * (b - f);
+        if (c.x() > 0) x1 = 1e300;
+        if (c.x() < 0) x0 = -1e300;
+        if (c.y() > 0) y0 = -1e300;
+        if (c.y() < 0) y1 = 1e300;
+      }
+    }
+    if (front.empty() || x1 < -kRegionMarginPixels || y1 < -kRegionMarginPixels || x0 > width_ + kRegionMarginPixels ||
+        y0 > height_ + kRegionMarginPixels)
+      return {};
+    return {snap_down(x0), snap_down(y0), snap_up(x1, width_), snap_up(y1, height_)};
+  }
+
+ private:
+  /// m ahead of the eye a corner must lie to be projected; nearer ones count as crossing its plane.
+  static constexpr double kAhead = 1e-6;
+
+  static int snap_down(double v) {
+    const double grown = std::clamp(std::floor(v) - kRegionMarginPixels, 0.0, 1e9);
+    return static_cast<int>(grown) / kRenderBlock * kRenderBlock;
+  }
+  static int snap_up(double v, int limit) {
+    const double grown = std::clamp(std::ceil(v) + kRegionMarginPixels, 0.0, static_cast<double>(limit));
+    const int blocks = (static_cast<int>(grown) + kRenderBlock - 1) / kRenderBlock;
+    return std::min(limit, blocks * kRenderBlock);
+  }
+
+  CameraView view_;
+  int width_, height_;
+};
+
+PixelRect round_both(const PixelRect& a, const PixelRect& b) {
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+bool holds(const PixelRect& outer, const PixelRect& inner) {
+  return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && outer.x1 >= inner.x1 && outer.y1 >= inner.y1;
+}
+
+/// The hulls a changed part adds in one of the two frames: what is seen of it and its shadow; false
+/// when one cannot be bounded.
+bool changed_hulls(const FramePart& part, const RegionScene& scene, std::vector<Hull>& hulls) {
+  hulls.push_back(part.seen);
+  Hull shadow;
+  if (!part_shadow(part, scene, shadow)) return false;
+  hulls.push_back(shadow);
+  return true;
+}
+
+/// The lamp shade's box as a hull (two spheres round its corners would be larger: its eight corners).
+Hull shade_hull(const RegionScene& scene) {
+  Hull hull;
+  for (int corner = 0; corner < 8; ++corner)
+    hull.push_back({Vec3(corner & 1 ? scene.shade_max.x() : scene.shade_min.x(),
+                         corner & 2 ? scene.shade_max.y() : scene.shade_min.y(),
+                         corner & 4 ? scene.shade_max.z() : scene.shade_min.z()),
+                    0.0});
+  return hull;
+}
+
+}  // namespace
+
+RegionScene region_scene(const Scene& scene) {
+  const TableLayout layout = table_layout(scene);
+  RegionScene r;
+  // The include's lamp: its light (an area light, or two points in it for draft) 1 cm over the shade's
+  // rim, inside the shade seen from above.
+  r.light_x0 = layout.lamp.x0, r.light_y0 = layout.lamp.y0, r.light_x1 = layout.lamp.x1, r.light_y1 = layout.lamp.y1;
+  r.light_z = layout.lamp_bottom + 0.01;
+  r.shade_min = Vec3(layout.lamp.x0 - 0.01, layout.lamp.y0 - 0.01, layout.lamp_bottom - 0.01);
+  r.shade_max = Vec3(layout.lamp.x1 + 0.01, layout.lamp.y1 + 0.01, layout.lamp_top + 0.01);
+  r.frame_x0 = layout.wood_outer.x0, r.frame_y0 = layout.wood_outer.y0;
+  r.frame_x1 = layout.wood_outer.x1, r.frame_y1 = layout.wood_outer.y1;
+  r.bed = -0.001;                      // the cloth's top is z = 0
+  r.cup_floor = -kPocketDepth - 0.02;  // the cup's floor and its leather, with room to spare
+  r.floor = layout.floor - 0.01;
+  // Each pocket's opening through the cloth and the wood: its drop circle, its throat and its jaws,
+  // with the slate's rounded lip, as the include's PocketBound.
+  for (const PocketMouth& p : layout.pockets) {
+    double radius = std::max(p.drop_radius, (p.throat_centre - p.centre).norm() + p.throat_radius);
+    if (p.jawed()) radius = std::max({radius, (p.nose[0] - p.centre).norm(), (p.nose[1] - p.centre).norm()});
+    r.pockets.push_back({p.centre.x(), p.centre.y(), radius + 0.02});
+  }
+  return r;
+}
+
+std::vector<PixelRect> merge_regions(std::vector<PixelRect> rects) {
+  std::erase_if(rects, [](const PixelRect& r) { return r.area() <= 0; });
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < rects.size() && !merged; ++i) {
+      for (std::size_t j = i + 1; j < rects.size() && !merged; ++j) {
+        const PixelRect both = round_both(rects[i], rects[j]);
+        if (both.area() > rects[i].area() + rects[j].area() + kRegionStartPixels) continue;
+        std::erase_if(rects, [&](const PixelRect& r) { return holds(both, r); });
+        rects.push_back(both);
+        merged = true;
+      }
+    }
+  }
+  std::sort(rects.begin(), rects.end(),
+            [](const PixelRect& a, const PixelRect& b) { return a.y0 != b.y0 ? a.y0 < b.y0 : a.x0 < b.x0; });
+  return rects;
+}
+
+std::optional<std::vector<PixelRect>> changed_region(const FrameContent& reference, const FrameContent& frame,
+                                                     const RegionScene& scene, int width, int height) {
+  if (reference.camera != frame.camera || reference.parts.size() != frame.parts.size()) return std::nullopt;
+  std::vector<Hull> hulls;
+  bool changed = false;
+  for (std::size_t i = 0; i < frame.parts.size(); ++i) {
+    if (reference.parts[i].text == frame.parts[i].text) continue;
+    changed = true;
+    if (!changed_hulls(reference.parts[i], scene, hulls) || !changed_hulls(frame.parts[i], scene, hulls))
+      return std::nullopt;
+  }
+  if (!changed) return std::vector<PixelRect>{};
+  // Mirrors: every ball that stays as it was may show the change in its clear coat.
+  for (std::size_t i = 0; i < frame.parts.size(); ++i)
+    if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text) hulls.push_back(frame.parts[i].seen);
+  if (frame.camera_pose.location.z() >= scene.shade_min.z()) hulls.push_back(shade_hull(scene));
+
+  const PixelProjection projection(frame.camera_pose, width, height);
+  std::vector<PixelRect> rects;
+  for (const Hull& hull : hulls) {
+    rects.push_back(projection.bound(hull));
+  }
+  rects = merge_regions(std::move(rects));
+  long cost = 0;
+  for (const PixelRect& r : rects) cost += r.area() + kRegionStartPixels;
+  if (static_cast<double>(cost) >= kWholeShare * width * height) return std::nullopt;
+  return rects;
+}
+
+}  // namespace bsim

@@ -1,0 +1,80 @@
+#pragma once
+// Where a frame can differ from another frame of the same camera: found from the geometry the frames
+// are written from (never by comparing pictures), so that only that part is traced again and every
+// other pixel is taken from the other frame (see README "Tracing only what changed").
+//
+// A part (a ball or the stick) whose text in the two files differs has changed. What it changes in
+// the picture lies, in each of the two frames, within:
+// - the convex hull of its bound's spheres (pov_frame.h: a ball's streak, the stick's sweep or its
+//   copies), as the camera projects it;
+// - its shadow: the points of the scene the lamp's light reaches through it. Every sample of the
+//   lamp's light lies in one horizontal rectangle above everything that moves; from a light point L
+//   the shadow of a sphere S, down to the height z0, lies in the hull of S and S scaled from L by
+//   (L.z - z0) / (L.z - top of S), and over the rectangle in the hull of those for its four corners
+//   (the shadow point is affine in L). z0 is the cloth when that hull keeps over the table's wooden
+//   frame and away from the pockets' openings (below the cloth the lamp reaches only through them,
+//   into their cups), else the cups' floor when it keeps over the frame, else the room's floor. The
+//   other lights cast no shadow;
+// - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
+//   its mirror image can show lies on its sphere); the lamp shade's lacquer mirrors the table only to
+//   a camera above its rim, so then its box too. Nothing else in the models reflects.
+// Each hull is projected and grown by kRegionMarginPixels, then snapped out to POV-Ray's render-block
+// grid (kRenderBlock): a region on that grid renders exactly the pixels of a whole-frame render, since
+// antialiasing shares its samples within a block only (measured: render_anchors, "Partial renders").
+#include <optional>
+#include <vector>
+
+#include "pov_frame.h"
+
+namespace bsim {
+
+struct Scene;
+
+/// Pixels of POV-Ray's render block (+BS; POV-Ray's default, which the exporter does not change).
+inline constexpr int kRenderBlock = 32;
+/// Pixels every projected bound is grown by before it is snapped to the grid: antialiasing samples a
+/// pixel's corners, and the files' numbers are rounded.
+inline constexpr int kRegionMarginPixels = 2;
+/// Pixels a separate partial render is reckoned to cost for its start-up (POV-Ray's parse and set-up,
+/// about 0.03 s of CPU, as 4 blocks of a final frame): two regions closer than that are rendered as one.
+inline constexpr long kRegionStartPixels = 4L * kRenderBlock * kRenderBlock;
+/// A frame whose region would cost more than this share of the whole picture is rendered whole.
+inline constexpr double kWholeShare = 0.85;
+
+/// Columns x0 to x1 - 1 and rows y0 to y1 - 1 of the picture (from its top-left corner).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  long area() const { return static_cast<long>(x1 - x0) * (y1 - y0); }
+  bool operator==(const PixelRect&) const = default;
+};
+
+/// What of the fixed scene the bound needs (from the table description, as the include declares it).
+struct RegionScene {
+  double light_x0 = 0, light_y0 = 0, light_x1 = 0, light_y1 = 0;  ///< every light sample of the lamp lies in
+  double light_z = 0;                                             ///< this rectangle at this height (m)
+  Vec3 shade_min{0, 0, 0}, shade_max{0, 0, 0};                    ///< the box round the lamp's lacquered shade
+  double frame_x0 = 0, frame_y0 = 0, frame_x1 = 0, frame_y1 = 0;  ///< the table's wooden frame, seen from above
+  double bed = 0;                                                 ///< just below the cloth's top
+  double cup_floor = 0;                                           ///< below the lowest point of the pockets' cups
+  double floor = 0;                                               ///< the room's floor
+  /// A pocket's opening through the cloth and the wood, seen from above: a disc that holds it.
+  struct Opening {
+    double x = 0, y = 0, radius = 0;
+  };
+  std::vector<Opening> pockets;
+};
+
+RegionScene region_scene(const Scene& scene);
+
+/// The rectangles (on the render-block grid, sorted, none inside another) that hold every pixel in
+/// which `frame` can differ from `reference`, a frame of the same camera, at width x height; none
+/// when the two are the same. Nothing (render it whole) when the cameras differ, a bound reaches
+/// behind the camera or above the lamp's light, or the rectangles would cost nearly the whole picture.
+std::optional<std::vector<PixelRect>> changed_region(const FrameContent& reference, const FrameContent& frame,
+                                                     const RegionScene& scene, int width, int height);
+
+/// Merges rectangles while one rectangle round two costs less than the two (a rectangle costing its
+/// pixels and kRegionStartPixels), and drops any that another holds.
+std::vector<PixelRect> merge_regions(std::vector<PixelRect> rects);
+
+}  // namespace bsim
