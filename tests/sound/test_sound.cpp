@@ -382,7 +382,6 @@ TEST_SUITE("sound") {
     // Synthesised, the two clicks' peaks differ by 20 log10(impact gain ratio), about 10.6 dB (the
     // slow ball arrives a little slower still); a brick wall, or a compressor that squeezes every
     // hit, would leave them a few dB apart.
-    const PhysicsParams physics;
     const double synthesised = to_db(impact_gain(SoundKind::ball_ball, 3.0) / impact_gain(SoundKind::ball_ball, 0.5));
     REQUIRE(synthesised > 10.0);
     const auto slow = test::load_clean(two_balls(0.5, 0), "slow"), fast = test::load_clean(two_balls(3.0, 0), "fast");
