@@ -1,5 +1,6 @@
 #pragma once
 // Physical constants of a scene, overridable with `param <name> <value>`. SI units.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,9 @@ struct PhysicsParams {
   double mu_ball = 0.05;          ///< ball-ball friction: spin transfer and throw (pooltool)
   double e_rail = 0.85;           ///< ball-cushion restitution (pooltool)
   double mu_rail = 0.2;           ///< ball-cushion friction (pooltool)
+  double cue_mass = 0.54;         ///< kg, the stick (a 19 oz playing cue: 0.54-0.57 kg, Shepard 2009)
+  double e_tip = 0.75;            ///< tip-ball restitution (Alciatore TP A-30: 0.71-0.75, medium tips)
+  double cue_end_mass = 0.0057;   ///< kg, the shaft's effective end mass for squirt (TP A-31; 0: none)
   /// N/m^1.5, Hertz stiffness of two balls in contact, F = k_hertz * overlap^1.5 (Hertz 1882):
   /// (4/3) E* sqrt(R*) for phenolic resin (E = 5.84 GPa, nu = 0.34) and 57.15 mm balls.
   double k_hertz = 5.26e8;
