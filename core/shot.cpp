@@ -2,6 +2,7 @@
 
 #include "camera_clearance.h"
 #include "director.h"
+#include "strike.h"
 
 namespace bsim {
 
@@ -13,6 +14,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
 
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
+  strike_cue_ball(shot->scene);  // a stroke gives the struck ball its velocity and spin
   shot->timeline = simulate(shot->scene);
   if (camera == CameraChoice::automatic) {
     shot->directed = direct_camera(shot->scene, shot->timeline);
