@@ -93,7 +93,7 @@ TEST_SUITE("spelling") {
                           " --events-only -o " + test::quoted((dir.path / "out").string()));
     CHECK(r.exit_code == 1);
     CHECK_MESSAGE(contains(r.err, scene + ":2:1: error: unknown keyword 'bal'; expected one of "), r.err);
-    CHECK_MESSAGE(contains(r.err, "param; did you mean 'ball'?\n"), r.err);
+    CHECK_MESSAGE(contains(r.err, "param, stroke; did you mean 'ball'?\n"), r.err);
   }
 
   TEST_CASE("both command lines suggest an option, their own or a shared one") {
