@@ -2,6 +2,7 @@
 
 #include "camera_clearance.h"
 #include "director.h"
+#include "number_format.h"
 #include "strike.h"
 
 namespace bsim {
@@ -26,6 +27,11 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   } else {
     check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
     shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
+    if (const auto& stroke = shot->scene.cue.stroke; stroke && !shot->cue->clears())
+      result.diagnostics.push_back(
+          {Severity::warning, stroke->loc,
+           "the stick raised " + format_number(stroke->elevation_deg) +
+               " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
   }
   result.shot = std::move(shot);
   return result;
