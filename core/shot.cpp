@@ -3,6 +3,8 @@
 #include "aim.h"
 #include "camera_clearance.h"
 #include "director.h"
+#include "number_format.h"
+#include "strike.h"
 
 namespace bsim {
 
@@ -19,6 +21,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
     result.diagnostics.push_back({Severity::error, shot->scene.cue.loc, failure});
     return result;
   }
+  strike_cue_ball(shot->scene);  // a stroke gives the struck ball its velocity and spin
   shot->timeline = simulate(shot->scene);
   if (camera == CameraChoice::automatic) {
     shot->directed = direct_camera(shot->scene, shot->timeline);
@@ -30,6 +33,11 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   } else {
     check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
     shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
+    if (const auto& stroke = shot->scene.cue.stroke; stroke && !shot->cue->clears())
+      result.diagnostics.push_back(
+          {Severity::warning, stroke->loc,
+           "the stick raised " + format_number(stroke->elevation_deg) +
+               " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
   }
   result.shot = std::move(shot);
   return result;

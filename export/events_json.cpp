@@ -16,14 +16,23 @@ std::string list(const std::vector<int>& values) {
   return out + "]";
 }
 
-std::string event_json(const Event& e, const Scene& scene) {
+/// The cue event's stick: its heading (degrees) and, with a stroke, the stroke as written.
+std::string cue_json(const Cue& cue) {
+  std::string out = ", \"heading\": " + format_number(cue.heading_deg);
+  if (!cue.stroke) return out;
+  const Stroke& s = *cue.stroke;
+  return out + ", \"stroke\": {\"speed\": " + format_number(s.speed) + ", \"side\": " + format_number(s.side) +
+         ", \"height\": " + format_number(s.height) + ", \"elevation\": " + format_number(s.elevation_deg) + "}";
+}
+
+std::string event_json(const Event& e, const Cue& cue) {
   std::string out = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
                     ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
   out += ", \"balls\": " + list(e.balls);
-  if (e.type == EventType::cue) out += ", \"heading\": " + format_number(scene.cue.heading_deg);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
   out += ", \"speed\": " + format_number(e.speed);
+  if (e.type == EventType::cue) out += cue_json(cue);
   if (e.grouped && !e.contacts.empty()) {
     // A group collision: every contact of the group, in the order they began.
     out += ", \"contacts\": [";
@@ -44,7 +53,7 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   out << "{\n  \"duration\": " << format_number(timeline.duration()) << ",\n  \"events\": [";
   const auto& events = timeline.events();
   for (std::size_t k = 0; k < events.size(); ++k)
-    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene);
+    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene.cue);
   out << (events.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"pocketed\": [";

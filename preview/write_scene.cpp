@@ -42,6 +42,8 @@ std::string scene_text_resolved(std::string_view text, const Scene& played) {
     const std::string_view t = tokens[k].text;
     if (t == "cue" && same_place(tokens[k].loc, played.cue.loc) && k + 4 < tokens.size())
       edits.push_back(span(k + 2, k + 4, format_number(played.cue.heading_deg)));  // pot B P
+    else if (played.cue.stroke)
+      continue;  // a stroke strikes the ball at the heading: its ball and spin lines stay as written
     else if (t == "ball" && same_place(tokens[k].loc, struck.loc) && k + 7 < tokens.size())
       edits.push_back(span(k + 5, k + 7, numbers(struck.velocity)));  // after the number and the position
     else if (t == "spin" && k + 4 < tokens.size() && tokens[k + 1].text == std::to_string(target))

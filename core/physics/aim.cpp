@@ -1,5 +1,7 @@
 #include "aim.h"
 
+#include "strike.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "simulate.h"
+#include "strike.h"
 #include "table.h"
 
 namespace bsim {
@@ -321,6 +324,13 @@ class Solver {
 }  // namespace
 
 void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
+  if (written.cue.stroke) {
+    // A stroke: the stick's strike at this heading gives the ball its velocity and spin (strike.h),
+    // squirt and swerve included.
+    struck.cue.heading_deg = heading_deg;
+    strike_cue_ball(struck);
+    return;
+  }
   const int i = written.cue.target;
   const Ball& ball = written.ball(i);
   Ball& out = struck.balls[static_cast<std::size_t>(i)];

@@ -46,7 +46,8 @@ Vec3 ball_ball_friction(const BallState& a, const BallState& b, const Vec3& n, d
   const Vec3 slip_t = slip - slip.dot(n) * n;
   const double slip_speed = slip_t.norm();
   if (!(slip_speed > 0)) return Vec3(0, 0, 0);
-  const double jt = std::min(params.mu_ball * normal_impulse, m * slip_speed / 7.0);
+  // The coefficient depends on that slip speed (TP A-14's fit) unless the scene sets mu_ball.
+  const double jt = std::min(params.ball_friction(slip_speed) * normal_impulse, m * slip_speed / 7.0);
   return (jt / slip_speed) * slip_t;
 }
 
@@ -62,7 +63,7 @@ std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const Ball
   const double jn = 0.5 * m * (1 + params.e_ball) * vn;
   Vec3 impulse_b = jn * n;
 
-  if (params.mu_ball > 0) impulse_b += ball_ball_friction(a, b, n, jn, params);
+  if (params.mu_ball != 0.0) impulse_b += ball_ball_friction(a, b, n, jn, params);
   apply_impulse(ra, arm_a, -impulse_b, params);
   apply_impulse(rb, arm_b, impulse_b, params);
   return {classify(ra, params), classify(rb, params)};

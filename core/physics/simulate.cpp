@@ -12,6 +12,7 @@
 #include "motion.h"
 #include "pocket_fall.h"
 #include "resolve.h"
+#include "strike.h"
 #include "timeline.h"
 
 namespace bsim {
@@ -166,7 +167,8 @@ class Simulator {
     events_.back().contacts = {{i, j, t, speed, where}};
   }
 
-  /// The cue impact: every ball takes its line's velocity and spin.
+  /// The cue impact: every ball takes its line's velocity and spin, the struck one the stroke's when
+  /// the cue has one (strike.h; the same as strike_cue_ball gives the scene).
   void strike(double t) {
     const int target = scene_.cue.target;
     std::vector<int> changed;
@@ -175,6 +177,11 @@ class Simulator {
       BallState s = current(i).start;
       s.velocity = ball.velocity;
       s.spin = ball.spin;
+      if (i == target && scene_.cue.stroke) {
+        const StrikeResult struck = bsim::strike(*scene_.cue.stroke, scene_.cue.heading_deg, params_);
+        s.velocity = struck.velocity;
+        s.spin = struck.spin;
+      }
       s = classify(s, params_);
       const bool over_pocket = std::any_of(scene_.pockets.begin(), scene_.pockets.end(), [&](const Pocket& p) {
         return Vec3(s.position.x() - p.center.x(), s.position.y() - p.center.y(), 0).norm() < p.radius;

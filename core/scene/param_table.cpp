@@ -18,10 +18,15 @@ const std::vector<ParamSpec> kSpecs = {
     {"mu_roll", "", "rolling resistance: a rolling ball decelerates at mu_roll*g", 0, true, kNoLimit},
     {"mu_spin", "", "spin about the vertical decays at 5*mu_spin*g/(2*ball_radius) rad/s^2", 0, true, kNoLimit},
     {"e_ball", "", "ball-ball coefficient of restitution", 0, false, 1},
-    {"mu_ball", "", "ball-ball friction coefficient (spin transfer and throw)", 0, false, kNoLimit},
+    {"mu_ball", "", "ball-ball friction coefficient (spin transfer and throw); unset: TP A-14 speed fit", 0, false,
+     kNoLimit},
     {"e_rail", "", "ball-cushion coefficient of restitution", 0, false, 1},
     {"mu_rail", "", "ball-cushion friction coefficient", 0, false, kNoLimit},
     {"k_hertz", "N/m^1.5", "Hertz contact stiffness of two balls, F = k_hertz*overlap^1.5", 0, true, kNoLimit},
+    {"cue_mass", "kg", "mass of the stick (stroke)", 0, true, kNoLimit},
+    {"e_tip", "", "tip-ball coefficient of restitution (stroke)", 0, false, 1},
+    {"cue_end_mass", "kg", "the stick's effective end mass, which sets the squirt (stroke; 0: none)", 0, false,
+     kNoLimit},
     {"table_speed", "", "the seed's table speed: sets mu_roll to 1/table_speed", 0, true, kNoLimit},
 };
 
@@ -78,6 +83,12 @@ void apply_param(PhysicsParams& p, std::string_view name, double value) {
     p.mu_rail = value;
   else if (name == "k_hertz")
     p.k_hertz = value;
+  else if (name == "cue_mass")
+    p.cue_mass = value;
+  else if (name == "e_tip")
+    p.e_tip = value;
+  else if (name == "cue_end_mass")
+    p.cue_end_mass = value;
   else if (name == "table_speed")
     p.mu_roll = 1.0 / value;
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Physical constants of a scene, overridable with `param <name> <value>`. SI units.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,13 +16,24 @@ struct PhysicsParams {
   double mu_roll = 0.01;          ///< rolling resistance: a rolling ball decelerates at mu_roll*g
   double mu_spin = 0.0127;        ///< spin about z decays at 5*mu_spin*g/(2R) rad/s^2 (pooltool)
   double e_ball = 0.95;           ///< ball-ball restitution (pooltool)
-  double mu_ball = 0.05;          ///< ball-ball friction: spin transfer and throw (pooltool)
-  double e_rail = 0.85;           ///< ball-cushion restitution (pooltool)
-  double mu_rail = 0.2;           ///< ball-cushion friction (pooltool)
+  /// Ball-ball friction (spin transfer and throw): a constant when set (`param mu_ball`), else the
+  /// speed-dependent TP A-14 fit, ball_friction().
+  std::optional<double> mu_ball;
+  double e_rail = 0.85;          ///< ball-cushion restitution (pooltool)
+  double mu_rail = 0.2;          ///< ball-cushion friction (pooltool)
+  double cue_mass = 0.54;        ///< kg, the stick (a 19 oz playing cue: 0.54-0.57 kg, Shepard 2009)
+  double e_tip = 0.75;           ///< tip-ball restitution (Alciatore TP A-30: 0.71-0.75, medium tips)
+  double cue_end_mass = 0.0057;  ///< kg, the shaft's effective end mass for squirt (TP A-31; 0: none)
   /// N/m^1.5, Hertz stiffness of two balls in contact, F = k_hertz * overlap^1.5 (Hertz 1882):
   /// (4/3) E* sqrt(R*) for phenolic resin (E = 5.84 GPa, nu = 0.34) and 57.15 mm balls.
   double k_hertz = 5.26e8;
 
+  /// Ball-ball friction coefficient at a relative slip speed of the contact points (m/s): mu_ball when
+  /// set, else Alciatore's fit to measured throw, TP A-14 ("Throw", billiards.colostate.edu; also
+  /// pooltool's default ball-ball resolver): 9.951e-3 + 0.108 exp(-1.088 v).
+  double ball_friction(double slip_speed) const {
+    return mu_ball ? *mu_ball : 9.951e-3 + 0.108 * std::exp(-1.088 * slip_speed);
+  }
   /// Deceleration of a rolling ball, m/s^2.
   double roll_decel() const { return mu_roll * g; }
   /// Angular deceleration of spin about the vertical axis, rad/s^2.

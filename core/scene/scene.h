@@ -1,6 +1,7 @@
 #pragma once
 // The parsed scene: plain values in SI units with every default filled in. Each entity keeps the
 // source location of its tokens so that checks made after simulation can still cite the file.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,19 @@ struct Pocket {
   SourceLoc loc;
 };
 
+/// A `stroke` line (extension): how the stick meets the struck ball. The ball's velocity and spin
+/// follow from it (core/physics/strike.h).
+struct Stroke {
+  static constexpr double kMaxSpeed = 15;       ///< m/s, the fastest stroke accepted
+  static constexpr double kMiscueOffset = 0.5;  ///< fraction of R: further out the tip miscues
+  double speed = 0;                             ///< m/s, the tip's speed at impact, in (0, kMaxSpeed]
+  double side = 0;           ///< fraction of R across the stick, > 0 right of centre as the shooter sees it
+  double height = 0;         ///< fraction of R across the stick, > 0 above centre
+  double elevation_deg = 0;  ///< degrees the butt is raised above level, [0, 90)
+  SourceLoc loc;             ///< the `stroke` keyword
+  SourceLoc speed_loc, side_loc, elevation_loc;
+};
+
 struct Cue {
   int target = 0;          ///< file-order index of the struck ball
   double heading_deg = 0;  ///< direction the stick pushes, counter-clockwise from +x (found by aiming for `pot`)
@@ -45,6 +59,7 @@ struct Cue {
   int pot_pocket = -1;
   SourceLoc pot_ball_loc, pot_pocket_loc;
   bool aims() const { return pot_ball >= 0; }
+  std::optional<Stroke> stroke;  ///< the `stroke` line; without one the ball lines give the velocities
 };
 
 enum class CameraMode { hover, look, follow };

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -25,7 +26,7 @@ namespace {
 constexpr std::size_t kMaxErrors = 30;
 
 constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
-constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack"};
+constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack", "stroke"};
 enum class NumberStatus { ok, not_number, not_finite };
 
 NumberStatus parse_double(std::string_view text, double& out) {
@@ -215,7 +216,7 @@ class Parser {
     if (in_camera_) return camera_entry();
     const Token& t = lexed_.tokens[pos_++];
     const std::string_view k = t.text;
-    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack"))
+    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke"))
       fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
     if (k == "cue") return cue(t);
     if (k == "ball") return ball(t);
@@ -225,6 +226,7 @@ class Parser {
     if (k == "spin") return spin(t);
     if (k == "param") return param(t);
     if (k == "rack") return rack(t);
+    if (k == "stroke") return stroke(t);
     if (k == "endcamera") fail(t.loc, "found 'endcamera' without a 'camera' before it");
     if (k == "event" || k == "hover" || k == "look" || k == "follow")
       fail(t.loc, "found '" + std::string(k) + "' outside a camera description; expected one of " +
@@ -258,6 +260,38 @@ class Parser {
       fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
     scene_.cue = c;
     map_.has_cue = true;
+  }
+
+  /// `stroke <speed> <side> <height> <elevation>`: strikes the ball of the `cue` line above it.
+  void stroke(const Token& keyword) {
+    Stroke s;
+    s.loc = keyword.loc;
+    SourceLoc height_loc;
+    s.speed = number("the stroke's speed in m/s", &s.speed_loc);
+    const std::string speed_text = quote_token(lexed_.tokens[pos_ - 1].text);
+    s.side = number("the stroke's side offset (a fraction of the ball's radius)", &s.side_loc);
+    s.height = number("the stroke's height offset (a fraction of the ball's radius)", &height_loc);
+    s.elevation_deg = number("the stroke's elevation in degrees", &s.elevation_loc);
+    const std::string elevation_text = quote_token(lexed_.tokens[pos_ - 1].text);
+    if (!map_.has_cue) fail(keyword.loc, "expected the 'cue' line this stroke strikes with above it, found none");
+    if (scene_.cue.stroke)
+      fail(keyword.loc, "the cue on line " + std::to_string(scene_.cue.loc.line) + " already has a stroke on line " +
+                            std::to_string(scene_.cue.stroke->loc.line));
+    if (!(s.speed > 0 && s.speed <= Stroke::kMaxSpeed))
+      fail(s.speed_loc, "expected a stroke speed greater than 0 and at most 15 m/s, found " + speed_text);
+    if (!(s.elevation_deg >= 0 && s.elevation_deg < 90))
+      fail(s.elevation_loc, "expected a stroke elevation of at least 0 and below 90 degrees, found " + elevation_text);
+    const double offset = std::hypot(s.side, s.height);
+    if (offset > Stroke::kMiscueOffset + 1e-12)
+      fail(s.side_loc, "miscue: the tip meets the ball " + format_fraction(offset) +
+                           " of its radius from centre; expected at most 0.5 (sqrt(side^2 + height^2))");
+    scene_.cue.stroke = s;
+  }
+
+  static std::string format_fraction(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    return buffer;
   }
 
   void ball(const Token& keyword) {

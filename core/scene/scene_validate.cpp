@@ -84,7 +84,8 @@ class Validator {
                                  ", found " + std::to_string(shot.ball));
   }
 
-  /// `cue I pot B P`: B and P must be there, B must not be the struck ball, and the struck ball needs a speed.
+  /// `cue I pot B P`: B and P must be there, B must not be the struck ball, and the struck ball needs a speed
+  /// (its stroke's, or its `ball` line's).
   void pot_references() {
     const Cue& cue = scene_.cue;
     if (!cue.aims()) return;
@@ -100,7 +101,7 @@ class Validator {
                                     ", numbered as in the README's standard table or by their order in the file), "
                                     "found " +
                                     std::to_string(cue.pot_pocket));
-    if (ball_exists(cue.target)) {
+    if (ball_exists(cue.target) && !cue.stroke) {
       const Vec3& v = scene_.balls[static_cast<std::size_t>(cue.target)].velocity;
       if (std::hypot(v.x(), v.y()) == 0)
         error(cue.loc,
@@ -219,8 +220,25 @@ class Validator {
             "swap its two ends");
   }
 
+  /// With a stroke the strike gives the struck ball its velocity and spin, so its lines give none.
+  void cue_stroke() {
+    const Stroke& stroke = *scene_.cue.stroke;
+    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
+    if (target.velocity != Vec3(0, 0, 0))
+      error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue.target) +
+                            " its velocity, so expected velocity 0 0 0 on its ball line" + line_of(target.loc) +
+                            ", found " + fmt(target.velocity.x()) + " " + fmt(target.velocity.y()) + " " +
+                            fmt(target.velocity.z()));
+    for (const auto& spin : map_.spins)
+      if (spin.ball == scene_.cue.target)
+        error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue.target) +
+                              " its spin, so expected no 'spin' line for it, found one" + line_of(spin.loc));
+  }
+
   void cue_heading() {
-    if (!ball_exists(scene_.cue.target) || scene_.cue.aims()) return;
+    if (!ball_exists(scene_.cue.target)) return;
+    if (scene_.cue.stroke) return cue_stroke();
+    if (scene_.cue.aims()) return;
     const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
     const double vx = target.velocity.x(), vy = target.velocity.y();
     if (std::hypot(vx, vy) == 0) {

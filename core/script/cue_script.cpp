@@ -15,7 +15,7 @@ namespace bsim {
 namespace {
 /// m between the tip and the ball when the stick is addressed and between strokes.
 constexpr double kAddressGap = 0.02;
-/// m, reach of the practice strokes; as in the seed, not tied to the shot's speed.
+/// m, reach of the practice strokes of a seed shot (a stroke's grow with its speed).
 constexpr double kStrokeAmplitude = 0.09;
 /// Ball speed over tip speed: a 0.54 kg stick on a 0.17 kg ball with tip restitution ~0.8.
 constexpr double kBallToTipSpeed = 1.4;
@@ -62,15 +62,9 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
   }
   ball_speed_ = ball_speed;
 
-  // The lowest elevation whose stroke clears everything, else the one that comes closest.
-  double best_gap = -std::numeric_limits<double>::infinity(), best = kMinElevationDeg;
-  for (int degrees = kMinElevationDeg; degrees <= kMaxElevationDeg; ++degrees) {
-    plan_stroke(degrees * kDegToRad);
-    const double gap = stroke_clearance();
-    if (gap > best_gap) best_gap = gap, best = degrees;
-    if (gap >= kClearance) break;
-  }
-  plan_stroke(best * kDegToRad);
+  // A stroke gives the elevation, raised only as far as the cushion and the balls need; else the seed's
+  // shot takes the lowest that clears from kMinElevationDeg.
+  choose_elevation(scene.cue.stroke ? scene.cue.stroke->elevation_deg : kMinElevationDeg);
   // The struck ball must stay ahead of the tip (a very slow shot, or a velocity that disagrees with
   // the heading): shorten the follow-through until it does.
   for (int tries = 0; tries < 8 && !follow_through_clear(); ++tries) {
@@ -109,15 +103,42 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
 
 double CueScript::elevation_deg() const { return elevation_ / kDegToRad; }
 
+void CueScript::choose_elevation(double lowest_deg) {
+  // The lowest elevation from lowest_deg whose stroke clears everything, else the one that comes closest.
+  double best_gap = -std::numeric_limits<double>::infinity(), best = lowest_deg;
+  for (double degrees = lowest_deg; degrees <= std::max<double>(kMaxElevationDeg, lowest_deg);
+       degrees = std::floor(degrees) + 1) {
+    plan_stroke(degrees * kDegToRad);
+    const double gap = stroke_clearance();
+    if (gap > best_gap) best_gap = gap, best = degrees;
+    if (gap >= kClearance) break;
+  }
+  plan_stroke(best * kDegToRad);
+  clears_ = best_gap >= kClearance;
+}
+
+Vec3 CueScript::tip_contact(const Vec3& centre, double radius) const {
+  const Vec3 toward_butt = place(0, 0).axis;                      // the axis does not depend on the contact point
+  if (!scene_->cue.stroke) return centre + radius * toward_butt;  // through the ball's centre
+  // The stroke's offsets across the stick: side to the shooter's right, height up across the axis
+  // (the frame of strike.h), so the tip touches the ball where the strike's impulse acts.
+  const Stroke& stroke = *scene_->cue.stroke;
+  const Vec3 d = -toward_butt;
+  const Vec3 right(heading_.y(), -heading_.x(), 0);
+  const Vec3 up = right.cross(d);
+  const double depth = std::sqrt(std::max(0.0, 1.0 - stroke.side * stroke.side - stroke.height * stroke.height));
+  return centre + radius * (depth * toward_butt + stroke.side * right + stroke.height * up);
+}
+
 void CueScript::plan_stroke(double elevation) {
   elevation_ = elevation;
   // After the strike the ball leaves level at ball_speed_; a steep tip closing on it faster than
   // ball_speed_ * cos(elevation) would follow it in, so steep strokes are slower.
   tip_speed_ = std::max(std::min(ball_speed_ / kBallToTipSpeed, kSteepSpeedShare * ball_speed_ * std::cos(elevation)),
                         kMinTipSpeed);
+  if (scene_->cue.stroke) tip_speed_ = scene_->cue.stroke->speed;  // the stroke's speed at impact
   const Vec3 centre = scene_->balls[static_cast<std::size_t>(scene_->cue.target)].position;
-  const double radius = timeline_->physics().ball_radius;
-  contact_ = centre + radius * place(0, 0).axis;  // the axis passes through the ball's centre
+  contact_ = tip_contact(centre, timeline_->physics().ball_radius);
 
   // Constant acceleration from rest at the back-swing to tip_speed_ at contact.
   accel_time_ = kAccelTime;
@@ -130,13 +151,16 @@ void CueScript::plan_stroke(double elevation) {
   follow_ = std::min({kMaxFollow, kFollowFraction * backswing_, above_bed / std::sin(elevation)});
   follow_ = std::max(follow_, 0.0);
   follow_time_ = 2.0 * follow_ / tip_speed_;
+  // With a stroke the practice strokes grow with its speed too (a break is a long stroke, a touch a
+  // short one); the seed's shots keep its fixed reach.
+  amplitude_ = scene_->cue.stroke ? std::clamp(0.5 * backswing_, kMinBackswing, kMaxFollow) : kStrokeAmplitude;
 }
 
 double CueScript::stroke_clearance() const {
   const double radius = timeline_->physics().ball_radius;
   // Before the strike every ball rests; the stick only slides along its line.
   const std::vector<BallState> resting = timeline_->states(0);
-  const double farthest = std::max(backswing_, kAddressGap + kStrokeAmplitude);
+  const double farthest = std::max(backswing_, kAddressGap + amplitude_);
   double gap = std::numeric_limits<double>::infinity();
   for (double behind = 0; behind <= farthest + 1e-9; behind += 0.005)
     gap = std::min(gap, stick_clearance(place(behind, 0), *scene_, resting, radius, scene_->cue.target));
@@ -181,7 +205,7 @@ CuePose CueScript::path(double t) const {
   }
   if (t < backswing_begin) {
     const double s = std::sin(std::numbers::pi * (t - approach_end) / stroke);
-    return place(kAddressGap + kStrokeAmplitude * s * s, 0);
+    return place(kAddressGap + amplitude_ * s * s, 0);
   }
   if (t < forward) {
     const double u = (t - backswing_begin) / (forward - backswing_begin);

@@ -29,14 +29,25 @@ class CueScript {
 
   /// m, where the tip meets the struck ball: where the stick's axis enters its surface.
   const Vec3& contact_point() const { return contact_; }
-  /// deg the butt is raised above the horizontal, the least that clears the cushions and balls.
+  /// deg the butt is raised above the horizontal: from the stroke's (or 5 without one) up, the least that
+  /// clears the cushions and balls.
   double elevation_deg() const;
-  /// m/s, the tip's speed at the strike.
+  /// m/s, the tip's speed at the strike: the stroke's speed when the scene has a stroke.
   double tip_speed() const { return tip_speed_; }
+  /// Whether the stick's stroke keeps clear of every ball and cushion at elevation_deg(): the stroke's
+  /// elevation, or the least above it that clears (a level stroke is drawn raised over the cushion;
+  /// the strike keeps the stroke's elevation); false when no elevation clears.
+  bool clears() const { return clears_; }
 
  private:
   /// The stick `behind` m behind the contact point along its axis, swung `lift` rad up about it.
   CuePose place(double behind, double lift) const;
+  /// The lowest elevation from `lowest_deg` (whole degrees above it) that clears, else the one that
+  /// comes closest.
+  void choose_elevation(double lowest_deg);
+  /// m, where the tip's face centre meets the ball: on the axis through the centre, or with a stroke at
+  /// its offsets across the stick.
+  Vec3 tip_contact(const Vec3& centre, double radius) const;
   /// The plan for one elevation: back-swing, forward stroke and follow-through.
   void plan_stroke(double elevation);
   /// m, the least gap to the balls at rest and the cushions over the stroke, at the planned elevation.
@@ -62,6 +73,8 @@ class CueScript {
   double approach_from_ = 0;  ///< m behind the contact point at the start (swung up, out of view)
   double retract_to_ = 0;     ///< m behind the contact point at the end of retraction
   double hide_time_ = 0;      ///< s, the stick is removed from here on
+  double amplitude_ = 0;      ///< m, reach of the practice strokes
+  bool clears_ = true;
 };
 
 }  // namespace bsim

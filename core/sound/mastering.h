@@ -22,7 +22,7 @@ inline constexpr double kMaxLoudnessGainDb = 60.0;
 /// that of its loudest half second, the rack's burst of clicks: its mix peaks about 27 dB above its
 /// loudness. Recalibrate it when a sound's own level changes (tests/sound/test_sound.cpp checks the
 /// break).
-inline constexpr double kCalibratedGainDb = 14.0;
+inline constexpr double kCalibratedGainDb = 15.5;
 /// The calibrated level's compressor on the oversampled peak envelope, two soft-knee stages (the gain
 /// computer of Giannoulis, Massberg & Reiss, "Digital dynamic range compressor design", JAES 2012),
 /// each kCompressorKneeDb wide. Everything under kCompressorThresholdDb (dBFS) passes untouched: a

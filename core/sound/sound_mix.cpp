@@ -120,7 +120,14 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
       continue;
     }
     const int ball = e.balls.empty() ? 0 : e.balls.front();
-    cues.push_back(event_cue(shot, kind, e.time, e.speed, e.where, cue_seed(kind, e.index, ball)));
+    // The tip's click follows the stick: with a stroke, at the ball speed a centre hit at the stroke's
+    // speed gives (so an off-centre hit clicks as loud as a centre one of the same stroke).
+    double speed = e.speed;
+    if (e.type == EventType::cue && shot.scene.cue.stroke) {
+      const PhysicsParams& p = shot.scene.physics;
+      speed = (1 + p.e_tip) * shot.scene.cue.stroke->speed / (1 + p.ball_mass / p.cue_mass);
+    }
+    cues.push_back(event_cue(shot, kind, e.time, speed, e.where, cue_seed(kind, e.index, ball)));
   }
   const auto& drops = shot.timeline.pocket_drops();
   for (std::size_t i = 0; i < drops.size(); ++i) add_pocket_drop(shot, drops[i], static_cast<int>(i), cues);

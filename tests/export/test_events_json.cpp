@@ -14,6 +14,7 @@
 #include "outputs.h"
 #include "random_scenes.h"
 #include "shot.h"
+#include "strike.h"
 #include "support.h"
 
 using namespace bsim;
@@ -60,7 +61,7 @@ TEST_SUITE("events.json") {
         "  \"duration\": 3,\n"
         "  \"events\": [\n"
         "    {\"index\": 0, \"time\": 0, \"type\": \"start\"},\n"
-        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"heading\": 0, \"speed\": 0},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"speed\": 0, \"heading\": 0},\n"
         "    {\"index\": 2, \"time\": 3, \"type\": \"end\"}\n"
         "  ],\n"
         "  \"pocketed\": [],\n"
@@ -105,6 +106,28 @@ TEST_SUITE("events.json") {
     CHECK(json.find("{\"ball\": 1, \"number\": 5, \"position\": [") != std::string::npos);
     CHECK(json.find("\"pocketed\": true}") != std::string::npos);
     CHECK(json.find("\"duration\": " + format_number(shot.timeline.duration()) + ",") != std::string::npos);
+  }
+
+  TEST_CASE("the cue event gives the stick's heading, and with a stroke the stroke and the struck ball's speed") {
+    // spec.md "events.json": "heading" on every cue event; "stroke" {speed, side, height, elevation}.
+    Scene scene = scenes::standard_table();
+    scene.balls.push_back(scenes::ball_at(0, -0.5, 0.1, scene.physics));
+    scene.cue.heading_deg = 12.5;
+    Stroke stroke;
+    stroke.speed = 2;
+    stroke.side = 0.1;
+    stroke.height = -0.25;
+    stroke.elevation_deg = 5;
+    scene.cue.stroke = stroke;
+    const std::unique_ptr<Shot> shot = shot_of(scene);
+    const Event& cue = shot->timeline.events()[1];
+    REQUIRE(cue.type == EventType::cue);
+    // The struck ball's speed just after the strike, squirt and bed included (strike.h).
+    CHECK(cue.speed == doctest::Approx(strike(stroke, 12.5, scene.physics).velocity.norm()).epsilon(1e-15));
+    CHECK(cue.speed > 2);
+    CHECK(events_json(*shot).find("\"type\": \"cue\", \"balls\": [0], \"speed\": " + format_number(cue.speed) +
+                                  ", \"heading\": 12.5, \"stroke\": {\"speed\": 2, \"side\": 0.1, \"height\": -0.25, "
+                                  "\"elevation\": 5}}") != std::string::npos);
   }
 
   TEST_CASE("a group collision lists every ball and each contact with its time and speed") {

@@ -330,6 +330,8 @@ TEST_SUITE("camera edit") {
     ShotResult r = load_shot(builtin_scene_text(), "break");
     REQUIRE(r.shot);
     const TimelineData data = timeline_data(*r.shot);
+    // The break is a stroke, and the title says so.
+    CHECK(data.title.find(", stroke 8.04 m/s at side +0.00 height +0.00, 0\xC2\xB0 up") != std::string::npos);
     REQUIRE(data.camera.size() == 5);
     CHECK(data.camera[2].label == "follow ball 3");
     CHECK(data.camera[3].label == "look ball 1");

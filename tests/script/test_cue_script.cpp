@@ -214,3 +214,72 @@ TEST_SUITE("cue_script") {
     CHECK(std::atan2(-at.axis.y(), -at.axis.x()) == doctest::Approx(120 * M_PI / 180));
   }
 }
+
+TEST_SUITE("cue_script: the stick tells the stroke") {
+  /// The cue ball at (-0.6, 0) struck along +x with `stroke`; the 1 out of the way.
+  std::string stroked(const std::string& stroke) {
+    return "cue 0 0\nstroke " + stroke +
+           "\nball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\nball 1 0.3 0.2 0.028575 0 0 0 1 0 0 0\n" + kCamera;
+  }
+
+  /// m, the farthest the tip goes back on the practice strokes (before the back-swing).
+  double practice_reach(const CueScript& cue) {
+    const CuePhaseSpan& preflight = cue.phases()[1];
+    double reach = 0;
+    for (double t = preflight.begin; t < preflight.begin + 0.5 * (preflight.end - preflight.begin); t += 1e-3)
+      reach = std::max(reach, behind(cue, t));
+    return reach;
+  }
+
+  TEST_CASE(
+      "at impact the tip is on the ball at the offset, the stick raised by the elevation, at the stroke's speed") {
+    const auto shot = load(stroked("2 0.2 -0.3 20"));
+    const CueScript& cue = *shot->cue;
+    const double strike = shot->timeline.cue_time();
+    const CuePose at = cue.pose(strike);
+    const Vec3 centre = shot->scene.balls[0].position;
+    // On the ball's surface, the stick raised exactly 20 degrees (it clears at that elevation).
+    CHECK(cue.clears());
+    CHECK(cue.elevation_deg() == test::near(20, 1e-12));
+    CHECK(std::asin(at.axis.z()) / kDegToRad == test::near(20, 1e-12));
+    CHECK((at.tip - centre).norm() == test::near(kR, 1e-12));
+    // The axis passes the centre at the offset: 0.2 R to the shooter's right (-y for a +x heading),
+    // 0.3 R below across the stick; its distance from the centre is R sqrt(a^2 + b^2).
+    const Vec3 w = centre - at.tip;
+    const Vec3 off_axis = w - w.dot(at.axis) * at.axis;
+    CHECK(off_axis.norm() == test::near(kR * std::hypot(0.2, 0.3), 1e-12));
+    CHECK((at.tip - centre).y() == test::near(-0.2 * kR, 1e-12));
+    const double h = 1e-6;
+    CHECK((behind(cue, strike - h) - behind(cue, strike)) / h == doctest::Approx(2).epsilon(1e-4));
+    CHECK(cue.tip_speed() == 2);
+  }
+
+  TEST_CASE("practice strokes and follow-through grow with the stroke's speed") {
+    const auto touch = load(stroked("0.5 0 0 0"));
+    const auto medium = load(stroked("1.5 0 0 0"));
+    const auto power = load(stroked("4 0 0 0"));
+    const double reach[] = {practice_reach(*touch->cue), practice_reach(*medium->cue), practice_reach(*power->cue)};
+    CHECK(reach[0] < reach[1]);
+    CHECK(reach[1] < reach[2]);
+    auto follow = [](const Shot& shot) { return -behind(*shot.cue, shot.cue->phases()[2].end); };
+    CHECK(follow(*touch) < follow(*medium));
+    CHECK(follow(*medium) <= follow(*power));
+    // A level stroke is drawn just high enough to clear the cushion, and nothing is hit.
+    for (const Shot* shot : {touch.get(), medium.get(), power.get()}) CHECK(worst_clearance(*shot) > 0);
+  }
+
+  TEST_CASE("a stick that no elevation clears: a warning at the stroke") {
+    // A wall half a metre high just behind the cue ball: even at 75 degrees the stick runs into it.
+    const ShotResult loaded = load_shot(
+        "cue 0 0\nstroke 1 0 0 0\nball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\n"
+        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5\n" +
+            kCamera,
+        "t", {}, CameraChoice::scene);
+    REQUIRE(loaded.shot);
+    bool warned = false;
+    for (const Diagnostic& d : loaded.diagnostics)
+      warned = warned || (d.severity == Severity::warning && d.loc.line == 2 && d.loc.column == 1 &&
+                          d.message.find("no pose clears") != std::string::npos);
+    CHECK(warned);
+  }
+}

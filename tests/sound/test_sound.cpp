@@ -614,3 +614,24 @@ TEST_SUITE("sound") {
     CHECK(bytes[0] == bytes[1]);
   }
 }
+
+TEST_SUITE("sound: the tip's click follows the stroke") {
+  double cue_click_speed(const std::string& stroke) {
+    const auto shot = test::load_scene("cue 0 0\nstroke " + stroke + "\nball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\n" +
+                                       test::fixtures::kHoverCamera);
+    REQUIRE(shot->camera);
+    for (const SoundCue& c : sound_cues({shot->scene, shot->timeline, *shot->camera}))
+      if (c.kind == SoundKind::cue) return c.speed;
+    FAIL("no cue click");
+    return 0;
+  }
+
+  TEST_CASE("louder for a faster stroke, the same for the same stroke speed wherever the tip meets the ball") {
+    // A centre hit's ball speed (TP A-30): 1.75 x 2 / (1 + 0.170097 / 0.54) = 2.661608 m/s for 2 m/s.
+    CHECK(cue_click_speed("2 0 0 0") == test::near(2.661608, 1e-6));
+    CHECK(cue_click_speed("2 0 -0.45 10") == test::near(2.661608, 1e-6));  // the draw ball leaves slower
+    CHECK(cue_click_speed("4 0 0 0") == test::near(2 * 2.661608, 2e-6));
+    CHECK(impact_gain(SoundKind::cue, cue_click_speed("4 0 0 0")) >
+          impact_gain(SoundKind::cue, cue_click_speed("2 0 0 0")));
+  }
+}
