@@ -26,8 +26,8 @@ inline constexpr double kCalibratedGainDb = 15.5;
 /// The calibrated level's compressor on the oversampled peak envelope, two soft-knee stages (the gain
 /// computer of Giannoulis, Massberg & Reiss, "Digital dynamic range compressor design", JAES 2012),
 /// each kCompressorKneeDb wide. Everything under kCompressorThresholdDb (dBFS) passes untouched: a
-/// soft or medium shot's hits (a 3 m/s click peaks near -6 dBFS after the gain, a 0.5 m/s one near
-/// -16). Above it a peak grows kCompressorRatio times slower, and above kCompressorUpperThresholdDb,
+/// soft shot's hits (a 0.5 m/s click peaks near -14 dBFS after the gain). Above it (a 3 m/s click
+/// comes out near -5 dBFS) a peak grows kCompressorRatio times slower, and above kCompressorUpperThresholdDb,
 /// which only a break's burst reaches, kCompressorUpperRatio times slower again. The curve grows
 /// strictly with the input, so a harder hit always peaks higher; only what would still pass the
 /// true-peak ceiling (a shot harder than the break) is held at it. Chosen with the gain: the break
