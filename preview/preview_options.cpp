@@ -186,7 +186,10 @@ OptionTable preview_option_table(PreviewOptions& o) {
          return true;
        },
        true, kOverlayNames},
-      {"--strict", "", "accept only the original scene language: no comments, spin, pocket or param", {}},
+      {"--strict",
+       "",
+       "accept only the original scene language: no comments, spin, pocket, param,\nrack, stroke, pot or camera keys",
+       {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",
        kCameraChoices,
