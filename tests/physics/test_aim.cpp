@@ -115,6 +115,33 @@ TEST_SUITE("aim") {
     CHECK(std::abs(*aim.heading_deg - ghost_heading) < 2);
   }
 
+  TEST_CASE("a stroke with english: squirt and throw make the ghost-ball heading miss, the solver's heading pots") {
+    // A fast level stroke with 0.4 R of english, right and left: the cue ball squirts off the stick's
+    // line (about 2.5 degrees with the default end mass, TP A-31) and its side spin throws the object
+    // ball (TP A-14), both away from where the ghost ball sends it. Into a corner and into a side pocket.
+    struct Case {
+      std::string balls;
+      int pocket;
+    };
+    const Case cases[] = {{two_balls(-0.9, -0.3, 0, 0, -0.4, -0.1), 2}, {two_balls(0.9, 0.1, 0, 0, 0.45, 0.4), 1}};
+    for (const Case& c : cases)
+      for (const char* side : {"0.4", "-0.4"}) {
+        const std::string text =
+            "cue 0 pot 1 " + std::to_string(c.pocket) + "\nstroke 1.5 " + side + " 0 0\n" + c.balls;
+        CAPTURE(text);
+        const Scene scene = parsed(text);
+        const AimResult aim = aim_cue(scene);
+        REQUIRE(aim.heading_deg.has_value());
+        const Vec3 from = scene.ball(0).position;
+        const double ghost_heading =
+            std::atan2(aim.ghost.y() - from.y(), aim.ghost.x() - from.x()) * 180 / std::numbers::pi;
+        Scene ghost = scene;
+        strike_heading(scene, ghost_heading, ghost);
+        CHECK_FALSE(pots(simulate(ghost), 1, c.pocket));
+        CHECK(loaded_pots(text, c.pocket));
+      }
+  }
+
   TEST_CASE("the heading turns the written velocity and spin together, keeping the speed") {
     const Scene scene = parsed(kSwerve);
     Scene struck = scene;
