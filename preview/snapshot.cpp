@@ -90,7 +90,8 @@ int run_timeline_picture(const PreviewOptions& options, const TimelineData& data
   // camera script that failed, its errors and each description's second line.
   const int rows = (static_cast<int>(data.events.size()) + 4) / 5;
   const int errors = static_cast<int>(data.script_errors.size());
-  const int extra = errors > 0 ? 60 + errors * 17 : 0;
+  // The stroke's ball diagram makes the title about 40 px taller.
+  const int extra = (errors > 0 ? 60 + errors * 17 : 0) + (data.stroke ? 40 : 0);
   const int width = options.size_given ? options.width : kTimelineWidth;
   const int height =
       options.size_given ? options.height : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);

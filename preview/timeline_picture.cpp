@@ -13,6 +13,7 @@
 #include "camera_key_text.h"
 #include "labels.h"
 #include "shot.h"
+#include "stroke_diagram.h"
 
 namespace bsim {
 
@@ -275,8 +276,20 @@ class TimelinePainter {
   float draw_header() {
     float y = layout_.y + rows_.top_margin;
     if (layout_.compact) return y;
-    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, data_.title.c_str());
-    y += fonts_.bold_size + rows_.pad;
+    float title_right = right_;
+    float bottom = y + fonts_.bold_size;
+    if (data_.stroke) {
+      // The stroke's ball diagram at the right end, the title clipped short of it.
+      const ImVec2 size = stroke_diagram_size(fonts_);
+      const ImVec2 at(right_ - rows_.pad - size.x, y);
+      draw_stroke_diagram(list_, *data_.stroke, fonts_, at);
+      title_right = at.x - rows_.pad;
+      bottom = std::max(bottom, y + size.y);
+    }
+    const ImVec4 clip(layout_.x, layout_.y, title_right, bottom_);
+    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, data_.title.c_str(), nullptr,
+                  0.f, data_.stroke ? &clip : nullptr);
+    y = bottom + rows_.pad;
     if (script_failed_) y = draw_failure_note(y);
     return y;
   }
@@ -625,6 +638,7 @@ TimelineData timeline_data(const Shot& shot) {
     std::snprintf(buffer, sizeof buffer, ", stroke %.2f m/s at side %+.2f height %+.2f, %.0f\xC2\xB0 up", stroke->speed,
                   stroke->side, stroke->height, stroke->elevation_deg);
     data.title += buffer;
+    data.stroke = stroke;
   }
   data.painted = painted_numbers(shot.scene);
   for (const Event& e : timeline.events())

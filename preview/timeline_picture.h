@@ -2,6 +2,7 @@
 // The timeline of a shot as a picture: events (coloured by type, numbered), pocket drops, the camera
 // descriptions as labelled spans starting at the event or key they name, the interpolation windows, the cue
 // phases, and a list of every event. Used for --timeline and, compact, as the window's scrub bar.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,8 @@ struct TimelineData {
   /// Set when the camera script does not fit the shot: every error as printed. The camera row then
   /// shows the script as written (see script_as_written.h), and there are no windows or cue phases.
   std::vector<std::string> script_errors;
+  /// The scene's stroke, drawn as a small ball diagram at the right end of the title; none: no diagram.
+  std::optional<Stroke> stroke;
 };
 
 TimelineData timeline_data(const Shot& shot);

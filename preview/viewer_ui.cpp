@@ -10,6 +10,7 @@
 #include "labels.h"
 #include "overlays.h"
 #include "shot.h"
+#include "stroke_diagram.h"
 #include "timeline_picture.h"
 
 namespace bsim {
@@ -135,6 +136,22 @@ void problems(const ViewerState& state, float window_width) {
   ImGui::End();
 }
 
+// The scene's stroke as a small ball diagram (speed, where the tip meets the ball, elevation), in a
+// panel at the bottom left of the picture; none without a stroke.
+void stroke_panel(const ViewerState& state, const UiFonts& fonts, float window_height) {
+  if (!state.shot || !state.shot->scene.cue.stroke) return;
+  const ImVec2 size = stroke_diagram_size(fonts);
+  ImGui::SetNextWindowPos(ImVec2(8, window_height - kControlsHeight - 8), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse;
+  if (ImGui::Begin("Stroke", nullptr, flags)) {
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::Dummy(size);
+    draw_stroke_diagram(*ImGui::GetWindowDrawList(), *state.shot->scene.cue.stroke, fonts, at);
+  }
+  ImGui::End();
+}
+
 }  // namespace
 
 PictureSize default_window_picture(int area_width, int area_height) {
@@ -204,6 +221,7 @@ void draw_controls(ViewerState& state, const UiFonts& fonts, float window_width,
   ImGui::PopFont();
   ImGui::End();
   event_list(state, window_height);
+  stroke_panel(state, fonts, window_height);
   problems(state, window_width);
 }
 

@@ -22,6 +22,7 @@
 #include "png_writer.h"
 #include "scene_renderer.h"
 #include "shot.h"
+#include "stroke_diagram.h"
 #include "support.h"
 #include "timeline_picture.h"
 #include "view.h"
@@ -198,6 +199,26 @@ TEST_SUITE("preview golden pictures") {
     draw_timeline(*list, made_up_failed_script(), canvas.fonts(), {0, 0, 800, 360});
     canvas.end_2d();
     check_against_golden(canvas, "timeline_script_error.png");
+  }
+
+  TEST_CASE("the stroke's ball diagram: the tip's dot at the offset, the miscue ring, speed and elevation (README's)") {
+    // `stroke 1.5 0.3 -0.25 12`: a fast stroke with a little right english and draw, the butt raised 12
+    // degrees, as the timeline picture and the window draw it.
+    Stroke stroke;
+    stroke.speed = 1.5;
+    stroke.side = 0.3;
+    stroke.height = -0.25;
+    stroke.elevation_deg = 12;
+    HeadlessCanvas canvas;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(240, 96, 20, error), error);
+    ImDrawList* list = canvas.begin_2d();
+    list->AddRectFilled(ImVec2(0, 0), ImVec2(240, 96), IM_COL32(22, 24, 28, 255));
+    const ImVec2 size = stroke_diagram_size(canvas.fonts());
+    draw_stroke_diagram(*list, stroke, canvas.fonts(),
+                        ImVec2(std::round((240 - size.x) / 2), std::round((96 - size.y) / 2)));
+    canvas.end_2d();
+    check_against_golden(canvas, "stroke.png");
   }
 
   TEST_CASE("the standard table's numbering from above: rails, pockets and balls (README's picture)") {
