@@ -41,6 +41,19 @@ bool pots(const Timeline& timeline, int ball, int pocket) {
   return false;
 }
 
+/// The ghost-ball heading: from the struck ball's centre (index 0) to the ghost ball's.
+double ghost_ball_heading(const Scene& scene, const AimResult& aim) {
+  const Vec3 from = scene.ball(0).position;
+  return std::atan2(aim.ghost.y() - from.y(), aim.ghost.x() - from.x()) * 180 / std::numbers::pi;
+}
+
+/// The shot of `scene` struck at `heading`.
+Timeline struck_at(const Scene& scene, double heading) {
+  Scene struck = scene;
+  strike_heading(scene, heading, struck);
+  return simulate(struck);
+}
+
 /// Loads `text` as both programs do, requires a shot, and returns whether ball 1 dropped into `pocket`.
 bool loaded_pots(const std::string& text, int pocket, double* heading = nullptr) {
   const ShotResult r = load_shot(text, "aim");
@@ -100,16 +113,9 @@ TEST_SUITE("aim") {
     const Scene scene = parsed(kSwerve);
     const AimResult aim = aim_cue(scene);
     REQUIRE(aim.heading_deg.has_value());
-    // The ghost-ball heading: from the cue ball's centre to the ghost ball's.
-    const Vec3 from = scene.ball(0).position;
-    const double ghost_heading =
-        std::atan2(aim.ghost.y() - from.y(), aim.ghost.x() - from.x()) * 180 / std::numbers::pi;
-    Scene ghost = scene;
-    strike_heading(scene, ghost_heading, ghost);
-    CHECK_FALSE(pots(simulate(ghost), 1, 2));
-    Scene found = scene;
-    strike_heading(scene, *aim.heading_deg, found);
-    CHECK(pots(simulate(found), 1, 2));
+    const double ghost_heading = ghost_ball_heading(scene, aim);
+    CHECK_FALSE(pots(struck_at(scene, ghost_heading), 1, 2));
+    CHECK(pots(struck_at(scene, *aim.heading_deg), 1, 2));
     // The correction is real but small: under a degree or so (measured 0.78).
     CHECK(std::abs(*aim.heading_deg - ghost_heading) > 0.3);
     CHECK(std::abs(*aim.heading_deg - ghost_heading) < 2);
@@ -132,12 +138,7 @@ TEST_SUITE("aim") {
         const Scene scene = parsed(text);
         const AimResult aim = aim_cue(scene);
         REQUIRE(aim.heading_deg.has_value());
-        const Vec3 from = scene.ball(0).position;
-        const double ghost_heading =
-            std::atan2(aim.ghost.y() - from.y(), aim.ghost.x() - from.x()) * 180 / std::numbers::pi;
-        Scene ghost = scene;
-        strike_heading(scene, ghost_heading, ghost);
-        CHECK_FALSE(pots(simulate(ghost), 1, c.pocket));
+        CHECK_FALSE(pots(struck_at(scene, ghost_ball_heading(scene, aim)), 1, c.pocket));
         CHECK(loaded_pots(text, c.pocket));
       }
   }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fixtures.h"
+#include "parse_checks.h"
 #include "scene_parse.h"
 
 using namespace bsim;
@@ -14,24 +15,8 @@ namespace {
 
 const std::string kStill0 = "ball 0 0 0 0.028575 0 0 0 1 0 0 0\n";
 
-std::string messages(const ParseResult& r) {
-  std::string out;
-  for (const Diagnostic& d : r.diagnostics) out += format_diagnostic(d, "scene") + "\n";
-  return out;
-}
-
-/// The first error of `text` is at line:column and contains `part`; no scene comes out.
-void expect_error(const std::string& text, int line, int column, std::string_view part, ParseOptions options = {}) {
-  const ParseResult r = parse_scene(text, "t", options);
-  INFO("scene:\n" << text << "diagnostics:\n" << messages(r));
-  CHECK_FALSE(r.scene.has_value());
-  const auto first = std::find_if(r.diagnostics.begin(), r.diagnostics.end(),
-                                  [](const Diagnostic& d) { return d.severity == Severity::error; });
-  REQUIRE(first != r.diagnostics.end());
-  CHECK(first->loc.line == line);
-  CHECK(first->loc.column == column);
-  CHECK(first->message.find(part) != std::string::npos);
-}
+using test::expect_error;
+std::string messages(const ParseResult& r) { return test::all_messages(r); }
 
 }  // namespace
 

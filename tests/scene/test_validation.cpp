@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fixtures.h"
+#include "parse_checks.h"
 #include "scene_parse.h"
 
 using namespace bsim;
@@ -14,25 +15,8 @@ namespace {
 const std::string kCam = test::fixtures::kHoverCamera;
 const std::string kBall0 = "ball 0 0 0 0.028575 1 0 0 1 0 0 0\n";
 
-std::string all_messages(const ParseResult& r) {
-  std::string out;
-  for (const Diagnostic& d : r.diagnostics) out += format_diagnostic(d, "scene") + "\n";
-  return out;
-}
-
-/// The first error of `text` must be at line:column and contain every one of `parts`.
-void expect_error(const std::string& text, int line, int column, std::initializer_list<std::string_view> parts,
-                  ParseOptions options = {}) {
-  const ParseResult r = parse_scene(text, "t", options);
-  INFO("scene:\n" << text << "diagnostics:\n" << all_messages(r));
-  CHECK_FALSE(r.scene.has_value());
-  const auto first = std::find_if(r.diagnostics.begin(), r.diagnostics.end(),
-                                  [](const Diagnostic& d) { return d.severity == Severity::error; });
-  REQUIRE(first != r.diagnostics.end());
-  CHECK(first->loc.line == line);
-  CHECK(first->loc.column == column);
-  for (std::string_view part : parts) CHECK(first->message.find(part) != std::string::npos);
-}
+using test::all_messages;
+using test::expect_error;
 
 /// `text` parses, with exactly one warning at line:column containing `part`.
 void expect_warning(const std::string& text, int line, int column, std::string_view part) {
