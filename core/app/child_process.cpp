@@ -54,7 +54,15 @@ pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd
     error = std::string("cannot start ") + argv.front() + ": no pipe: " + std::strerror(errno);
     return -1;
   }
+  // SIGINT and SIGTERM wait until the child has dropped the handlers it inherits: a signal sent to it
+  // between fork and exec (a run stopped at once) must end it, never run this program's handler in it.
+  sigset_t stops, before;
+  sigemptyset(&stops);
+  sigaddset(&stops, SIGINT);
+  sigaddset(&stops, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stops, &before);
   const pid_t pid = fork();
+  if (pid != 0) pthread_sigmask(SIG_SETMASK, &before, nullptr);
   if (pid < 0) {
     error = std::string("cannot start ") + argv.front() + ": " + std::strerror(errno);
     if (stdin_pipe) {
@@ -67,6 +75,7 @@ pid_t start_process(const std::vector<std::string>& argv, const std::string& cwd
     // In the child: only async-signal-safe calls until exec.
     signal(SIGINT, SIG_DFL);
     signal(SIGTERM, SIG_DFL);
+    sigprocmask(SIG_SETMASK, &before, nullptr);
     const int in = stdin_pipe ? fds[0] : open("/dev/null", O_RDONLY);
     const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in < 0 || log < 0 || chdir(cwd.c_str()) != 0) _exit(127);

@@ -4,6 +4,9 @@
 // its children work.
 #include <doctest/doctest.h>
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <sstream>
@@ -34,6 +37,16 @@ std::vector<std::string> lines_of(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+}  // namespace
+
+namespace {
+
+/// Written to by the SIGTERM handler below: a child that ran it instead of dying writes here.
+int handler_marks = -1;
+void mark_and_return(int) {
+  if (handler_marks >= 0) (void)!write(handler_marks, "x", 1);
 }
 
 }  // namespace
@@ -240,6 +253,31 @@ TEST_SUITE("progress") {
     const auto at = std::find(args.begin(), args.end(), "-progress");
     REQUIRE(at != args.end());
     CHECK(*(at + 1) == "p");
+  }
+
+  TEST_CASE("a child stopped at once dies of it and never runs this program's SIGTERM handler") {
+    // Stopping a child right after starting it hits it between fork and exec, where it still holds this
+    // program's handlers: a handler that returns would leave it running (and, here, mark the pipe).
+    int marks[2];
+    REQUIRE(pipe(marks) == 0);
+    handler_marks = marks[1];
+    struct sigaction mine {
+    }, before{};
+    mine.sa_handler = mark_and_return;
+    sigemptyset(&mine.sa_mask);
+    REQUIRE(sigaction(SIGTERM, &mine, &before) == 0);
+    std::string error;
+    for (int k = 0; k < 20; ++k) {
+      const pid_t pid = start_process({find_program("sleep"), "30"}, ".", "/dev/null", error);
+      REQUIRE_MESSAGE(pid > 0, error);
+      stop_process(pid);
+    }
+    sigaction(SIGTERM, &before, nullptr);
+    handler_marks = -1;
+    close(marks[1]);
+    char buffer[32];
+    CHECK(read(marks[0], buffer, sizeof buffer) == 0);  // no child ran the handler
+    close(marks[0]);
   }
 
   TEST_CASE("a wait for children that gives up, so a run can report while they work") {
