@@ -119,8 +119,7 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const auto previous = std::signal(SIGPIPE, SIG_IGN);
   FfmpegPipe ffmpeg;
   bool ok = ffmpeg.start(args, temporary_file(".log"), error);
-  const bool overlays =
-      options.overlays.paths || options.overlays.events || options.overlays.camera || options.overlays.aim;
+  const bool overlays = options.overlays.any();
   const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
   ProgressReporter progress("billiards-preview", "animatic", frames, 0, progress_style(options.quiet));
   for (int k = 0; ok && k < frames; ++k) {

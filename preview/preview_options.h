@@ -24,6 +24,8 @@ struct PreviewOverlays {
   bool camera = false;  ///< the camera's own path seen from above
   bool table = false;   ///< the rails', pockets' and balls' numbers
   bool aim = false;     ///< for a `cue I pot B P` shot: the ghost ball, the aim line, the ball's path to the pocket
+  /// Whether any overlay is asked for (a picture with none skips the 2D pass).
+  bool any() const { return paths || events || camera || table || aim; }
 };
 
 /// fps, width, height, size_given and strict are the options both programs share (SharedOptions).

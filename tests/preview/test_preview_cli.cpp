@@ -80,6 +80,14 @@ TEST_SUITE("preview command line") {
     CHECK(movie.overlays.paths);
     CHECK(movie.overlays.camera);
     CHECK(movie.overlays.events);
+    CHECK(movie.overlays.any());
+    CHECK_FALSE(PreviewOverlays{}.any());
+    for (bool PreviewOverlays::*flag : {&PreviewOverlays::paths, &PreviewOverlays::events, &PreviewOverlays::camera,
+                                        &PreviewOverlays::table, &PreviewOverlays::aim}) {
+      PreviewOverlays one;
+      one.*flag = true;
+      CHECK(one.any());  // every overlay, the table's numbers included, is drawn on the animatic's frames
+    }
     CHECK_FALSE(movie.overlays.table);
     CHECK(movie.strict);
     CHECK(accepted({"--at", "0", "-o", "n.png", "--overlay", "table"}).overlays.table);
