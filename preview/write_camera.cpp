@@ -13,6 +13,10 @@ int run_write_camera(const std::string& path, const Shot& shot, bool quiet) {
   // The script the shot was loaded with (--write-camera implies --camera auto), else written now.
   const std::string text =
       camera_script_text(shot.directed ? *shot.directed : direct_camera(shot.scene, shot.timeline), shot.scene.name);
+  return write_text_output(path, text, quiet);
+}
+
+int write_text_output(const std::string& path, const std::string& text, bool quiet) {
   if (path == "-") {
     std::cout << text << std::flush;
     return std::cout ? 0 : 1;

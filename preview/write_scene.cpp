@@ -1,13 +1,12 @@
 #include "write_scene.h"
 
 #include <algorithm>
-#include <iostream>
 #include <vector>
 
-#include "atomic_file.h"
 #include "number_format.h"
 #include "scene_lexer.h"
 #include "shot.h"
+#include "write_camera.h"
 
 namespace bsim {
 
@@ -56,18 +55,7 @@ std::string scene_text_resolved(std::string_view text, const Scene& played) {
 }
 
 int run_write_scene(const std::string& path, std::string_view text, const Shot& shot, bool quiet) {
-  const std::string resolved = scene_text_resolved(text, shot.scene);
-  if (path == "-") {
-    std::cout << resolved << std::flush;
-    return std::cout ? 0 : 1;
-  }
-  std::string error;
-  if (!write_file_atomically(path, resolved, error)) {
-    std::cerr << "billiards-preview: error: " << error << "\n";
-    return 1;
-  }
-  if (!quiet) std::cerr << "wrote " << path << "\n";
-  return 0;
+  return write_text_output(path, scene_text_resolved(text, shot.scene), quiet);
 }
 
 }  // namespace bsim

@@ -176,6 +176,20 @@ void check_against_golden(HeadlessCanvas& canvas, const std::string& name) {
   }
 }
 
+/// Draws `shot` at its start as the snapshots do, 960x540 with 4x multisampling, into `canvas`
+/// (opened here); returns the frame drawn, for the overlays on top.
+FrameState draw_shot_start(HeadlessCanvas& canvas, const Shot& shot) {
+  SceneRenderer renderer;
+  std::string error;
+  REQUIRE_MESSAGE(canvas.open(960, 540, 14, error), error);
+  REQUIRE_MESSAGE(renderer.init(error), error);
+  renderer.set_multisampling(4);
+  renderer.set_scene(shot.scene);
+  const FrameState frame = scripted_frame(shot, 0.0);
+  renderer.draw(shot.scene, frame, 960, 540);
+  return frame;
+}
+
 }  // namespace
 
 TEST_SUITE("preview golden pictures") {
@@ -238,14 +252,7 @@ TEST_SUITE("preview golden pictures") {
     REQUIRE(loaded.shot);
     const Shot& shot = *loaded.shot;
     HeadlessCanvas canvas;
-    SceneRenderer renderer;
-    std::string error;
-    REQUIRE_MESSAGE(canvas.open(960, 540, 14, error), error);
-    REQUIRE_MESSAGE(renderer.init(error), error);
-    renderer.set_multisampling(4);
-    renderer.set_scene(shot.scene);
-    const FrameState frame = scripted_frame(shot, 0.0);
-    renderer.draw(shot.scene, frame, 960, 540);
+    const FrameState frame = draw_shot_start(canvas, shot);
     ImDrawList* list = canvas.begin_2d();
     draw_table_numbering(*list, OverlayFrame{shot, 0.0, frame.camera, 960.0, 540.0, canvas.fonts()});
     canvas.end_2d();
@@ -260,14 +267,7 @@ TEST_SUITE("preview golden pictures") {
     REQUIRE(loaded.shot);
     const Shot& shot = *loaded.shot;
     HeadlessCanvas canvas;
-    SceneRenderer renderer;
-    std::string error;
-    REQUIRE_MESSAGE(canvas.open(960, 540, 14, error), error);
-    REQUIRE_MESSAGE(renderer.init(error), error);
-    renderer.set_multisampling(4);
-    renderer.set_scene(shot.scene);
-    const FrameState frame = scripted_frame(shot, 0.0);
-    renderer.draw(shot.scene, frame, 960, 540);
+    const FrameState frame = draw_shot_start(canvas, shot);
     ImDrawList* list = canvas.begin_2d();
     PreviewOverlays aim;
     aim.aim = true;
