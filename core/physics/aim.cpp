@@ -1,7 +1,5 @@
 #include "aim.h"
 
-#include "strike.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,8 +23,6 @@ double wrap(double a) { return std::remainder(a, 2 * kPi); }
 double angle_of(const Vec3& v) { return std::atan2(v.y(), v.x()); }
 
 Vec3 unit_at(double a) { return Vec3(std::cos(a), std::sin(a), 0); }
-
-Vec3 flat(const Vec3& p) { return Vec3(p.x(), p.y(), 0); }
 
 /// Degrees in [0, 360).
 double heading_range(double deg) {

@@ -228,7 +228,7 @@ GroupResult resolve_group(const std::vector<BallState>& balls, const PhysicsPara
     result.after[i].velocity.x() = s.v[2 * i];
     result.after[i].velocity.y() = s.v[2 * i + 1];
   }
-  if (params.mu_ball != 0.0) apply_friction(pairs, result.after, params);
+  if (params.has_ball_friction()) apply_friction(pairs, result.after, params);
   for (std::size_t i = 0; i < n; ++i)
     if (result.touched[i]) result.after[i] = classify(result.after[i], params);
   return result;

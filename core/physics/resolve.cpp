@@ -63,7 +63,7 @@ std::pair<BallState, BallState> resolve_ball_ball(const BallState& a, const Ball
   const double jn = 0.5 * m * (1 + params.e_ball) * vn;
   Vec3 impulse_b = jn * n;
 
-  if (params.mu_ball != 0.0) impulse_b += ball_ball_friction(a, b, n, jn, params);
+  if (params.has_ball_friction()) impulse_b += ball_ball_friction(a, b, n, jn, params);
   apply_impulse(ra, arm_a, -impulse_b, params);
   apply_impulse(rb, arm_b, impulse_b, params);
   return {classify(ra, params), classify(rb, params)};

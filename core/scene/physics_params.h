@@ -31,6 +31,8 @@ struct PhysicsParams {
   /// Ball-ball friction coefficient at a relative slip speed of the contact points (m/s): mu_ball when
   /// set, else Alciatore's fit to measured throw, TP A-14 ("Throw", billiards.colostate.edu; also
   /// pooltool's default ball-ball resolver): 9.951e-3 + 0.108 exp(-1.088 v).
+  /// Whether ball-ball contacts have friction at all: always, unless a scene sets mu_ball to 0.
+  bool has_ball_friction() const { return !mu_ball || *mu_ball > 0; }
   double ball_friction(double slip_speed) const {
     return mu_ball ? *mu_ball : 9.951e-3 + 0.108 * std::exp(-1.088 * slip_speed);
   }

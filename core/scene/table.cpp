@@ -10,8 +10,6 @@ namespace bsim {
 
 namespace {
 
-Vec3 flat(const Vec3& p) { return Vec3(p.x(), p.y(), 0); }
-
 /// One cushion end near a pocket: the nose end, the nose's direction into the pocket and the
 /// cushion's outward normal (away from the bed).
 struct JawEnd {
