@@ -1,10 +1,9 @@
 #include "shot.h"
 
-#include "aim.h"
 #include "camera_clearance.h"
 #include "director.h"
 #include "number_format.h"
-#include "strike.h"
+#include "play.h"
 
 namespace bsim {
 
@@ -16,13 +15,14 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
 
   auto shot = std::make_unique<Shot>();
   shot->scene = std::move(*parsed.scene);
-  // `cue I pot B P`: play the shot at the heading that pots B (aim.h), or fail at the cue line.
-  if (const std::string failure = apply_aim(shot->scene); !failure.empty()) {
-    result.diagnostics.push_back({Severity::error, shot->scene.cue.loc, failure});
+  // Every shot in turn from where the one before left the balls, each `cue I pot B P` at the heading
+  // that pots B from there (play.h), or fail at the line to blame.
+  PlayResult played = play(shot->scene);
+  if (played.failure) {
+    result.diagnostics.push_back({Severity::error, played.failure->loc, played.failure->message});
     return result;
   }
-  strike_cue_ball(shot->scene);  // a stroke gives the struck ball its velocity and spin
-  shot->timeline = simulate(shot->scene);
+  shot->timeline = std::move(played.timeline);
   if (camera == CameraChoice::automatic) {
     shot->directed = direct_camera(shot->scene, shot->timeline);
     shot->scene.camera = shot->directed->shots;
@@ -33,7 +33,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   } else {
     check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
     shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
-    if (const auto& stroke = shot->scene.cue.stroke; stroke && !shot->cue->clears())
+    if (const auto& stroke = shot->scene.cue().stroke; stroke && !shot->cue->clears())
       result.diagnostics.push_back(
           {Severity::warning, stroke->loc,
            "the stick raised " + format_number(stroke->elevation_deg) +

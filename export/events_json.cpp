@@ -25,14 +25,14 @@ std::string cue_json(const Cue& cue) {
          ", \"height\": " + format_number(s.height) + ", \"elevation\": " + format_number(s.elevation_deg) + "}";
 }
 
-std::string event_json(const Event& e, const Cue& cue) {
+std::string event_json(const Event& e, const Scene& scene) {
   std::string out = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
-                    ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
+                    ", \"type\": \"" + std::string(to_string(e.type)) + "\", \"shot\": " + std::to_string(e.shot + 1);
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
   out += ", \"balls\": " + list(e.balls);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
   out += ", \"speed\": " + format_number(e.speed);
-  if (e.type == EventType::cue) out += cue_json(cue);
+  if (e.type == EventType::cue) out += cue_json(scene.cues[static_cast<std::size_t>(e.shot)]);
   if (e.grouped && !e.contacts.empty()) {
     // A group collision: every contact of the group, in the order they began.
     out += ", \"contacts\": [";
@@ -53,8 +53,15 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   out << "{\n  \"duration\": " << format_number(timeline.duration()) << ",\n  \"events\": [";
   const auto& events = timeline.events();
   for (std::size_t k = 0; k < events.size(); ++k)
-    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene.cue);
+    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene);
   out << (events.empty() ? "],\n" : "\n  ],\n");
+
+  out << "  \"shots\": [";
+  const auto& shots = timeline.shots();
+  for (std::size_t k = 0; k < shots.size(); ++k)
+    out << (k ? ",\n    " : "\n    ") << "{\"shot\": " << k + 1 << ", \"cue\": " << format_number(shots[k].cue)
+        << ", \"rest\": " << format_number(shots[k].rest) << "}";
+  out << (shots.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"pocketed\": [";
   const auto& drops = timeline.pocket_drops();

@@ -433,9 +433,9 @@ void draw_ring(ImDrawList& list, const Projector& project, const Vec3& centre, d
 
 void draw_aim(ImDrawList& list, const OverlayFrame& f) {
   const Scene& scene = f.shot.scene;
-  if (!scene.cue.aims()) return;
+  if (!scene.cue().aims()) return;
   const Timeline& timeline = f.shot.timeline;
-  const int struck = scene.cue.target, target = scene.cue.pot_ball;
+  const int struck = scene.cue().target, target = scene.cue().pot_ball;
   const Event* meeting = first_meeting(timeline, struck, target);
   if (!meeting || f.time >= meeting->time) return;
   const std::size_t k = static_cast<std::size_t>(std::find(meeting->balls.begin(), meeting->balls.end(), struck) -
@@ -445,7 +445,7 @@ void draw_aim(ImDrawList& list, const OverlayFrame& f) {
   const Vec3 ghost = on_bed(meeting->before[k].position, R);
   const Vec3 from = on_bed(scene.ball(struck).position, 0.002);
   const Vec3 ball = on_bed(scene.ball(target).position, 0.002);
-  const Vec3 pocket = on_bed(scene.pockets[static_cast<std::size_t>(scene.cue.pot_pocket)].center, 0.002);
+  const Vec3 pocket = on_bed(scene.pockets[static_cast<std::size_t>(scene.cue().pot_pocket)].center, 0.002);
   const Projector project = projector(f);
   const float scale = ui_scale(f);
   // The struck ball's way to the ghost ball as played (curving with swerve), then the ghost ball.

@@ -633,7 +633,7 @@ TimelineData timeline_data(const Shot& shot) {
                 shot.scene.name.c_str(), data.duration, timeline.events().size(),
                 timeline.events().empty() ? 0 : timeline.events().size() - 1, pocketed);
   data.title = buffer;
-  if (const auto& stroke = shot.scene.cue.stroke) {
+  if (const auto& stroke = shot.scene.cue().stroke) {
     // The stroke: the tip's speed, where it meets the ball (fractions of the radius) and the elevation.
     std::snprintf(buffer, sizeof buffer, ", stroke %.2f m/s at side %+.2f height %+.2f, %.0f\xC2\xB0 up", stroke->speed,
                   stroke->side, stroke->height, stroke->elevation_deg);

@@ -139,7 +139,7 @@ void problems(const ViewerState& state, float window_width) {
 // The scene's stroke as a small ball diagram (speed, where the tip meets the ball, elevation), in a
 // panel at the bottom left of the picture; none without a stroke.
 void stroke_panel(const ViewerState& state, const UiFonts& fonts, float window_height) {
-  if (!state.shot || !state.shot->scene.cue.stroke) return;
+  if (!state.shot || !state.shot->scene.cue().stroke) return;
   const ImVec2 size = stroke_diagram_size(fonts);
   ImGui::SetNextWindowPos(ImVec2(8, window_height - kControlsHeight - 8), ImGuiCond_FirstUseEver, ImVec2(0, 1));
   ImGui::SetNextWindowBgAlpha(0.8f);
@@ -147,7 +147,7 @@ void stroke_panel(const ViewerState& state, const UiFonts& fonts, float window_h
   if (ImGui::Begin("Stroke", nullptr, flags)) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::Dummy(size);
-    draw_stroke_diagram(*ImGui::GetWindowDrawList(), *state.shot->scene.cue.stroke, fonts, at);
+    draw_stroke_diagram(*ImGui::GetWindowDrawList(), *state.shot->scene.cue().stroke, fonts, at);
   }
   ImGui::End();
 }

@@ -122,13 +122,13 @@ class Solver {
       : written_(scene),
         struck_(scene),
         R_(scene.physics.ball_radius),
-        target_(scene.cue.pot_ball),
-        pocket_(scene.cue.pot_pocket),
+        target_(scene.cue().pot_ball),
+        pocket_(scene.cue().pot_pocket),
         mouth_(pocket_mouth(scene.pockets[static_cast<std::size_t>(pocket_)], scene.rails)) {}
 
   AimResult run() {
     const Vec3 target_at = flat(written_.ball(target_).position);
-    const Vec3 struck_at = flat(written_.ball(written_.cue.target).position);
+    const Vec3 struck_at = flat(written_.ball(written_.cue().target).position);
     window_ = pocket_window(target_at, mouth_, written_.rails, R_);
     want_ = window_.middle();
     result_.entry = target_at + unit_at(want_) * std::max(0.0, window_.distance);
@@ -152,7 +152,7 @@ class Solver {
     if (const std::string why = blocked(target_at, result_.entry, {target_}); !why.empty())
       return fail("the path of " + ball_name(written_, target_) + " to pocket " + std::to_string(pocket_) +
                   " is blocked by " + why);
-    if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue.target, target_}); !why.empty())
+    if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue().target, target_}); !why.empty())
       return fail("the path of " + struck_name() + " to " + ball_name(written_, target_) + " is blocked by " + why);
     return fail(why_not(best));
   }
@@ -179,7 +179,7 @@ class Solver {
 
   /// "the cue ball", or "the struck ball (ball index 2)" when the cue strikes another.
   std::string struck_name() const {
-    const int i = written_.cue.target;
+    const int i = written_.cue().target;
     return written_.ball(i).number == 0 ? "the cue ball" : "the struck ball (" + ball_name(written_, i) + ")";
   }
 
@@ -228,7 +228,7 @@ class Solver {
     }
     for (const PocketDrop& d : shot.drops) p.pots = p.pots || (d.ball == target_ && d.pocket == pocket_);
     p.target_rest = shot.segments[static_cast<std::size_t>(target_)].back().start.position;
-    p.struck_rest = shot.segments[static_cast<std::size_t>(written_.cue.target)].back().start.position;
+    p.struck_rest = shot.segments[static_cast<std::size_t>(written_.cue().target)].back().start.position;
     return p;
   }
 
@@ -320,27 +320,27 @@ class Solver {
 }  // namespace
 
 void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
-  if (written.cue.stroke) {
+  if (written.cue().stroke) {
     // A stroke: the stick's strike at this heading gives the ball its velocity and spin (strike.h),
     // squirt and swerve included.
-    struck.cue.heading_deg = heading_deg;
+    struck.cue().heading_deg = heading_deg;
     strike_cue_ball(struck);
     return;
   }
-  const int i = written.cue.target;
+  const int i = written.cue().target;
   const Ball& ball = written.ball(i);
   Ball& out = struck.balls[static_cast<std::size_t>(i)];
   const double turn = radians(heading_deg) - angle_of(ball.velocity);
   const Eigen::AngleAxisd about_z(turn, Vec3::UnitZ());
   out.velocity = about_z * ball.velocity;
   out.spin = about_z * ball.spin;
-  struck.cue.heading_deg = heading_deg;
+  struck.cue().heading_deg = heading_deg;
 }
 
 AimResult aim_cue(const Scene& scene) { return Solver(scene).run(); }
 
 std::string apply_aim(Scene& scene) {
-  if (!scene.cue.aims()) return "";
+  if (!scene.cue().aims()) return "";
   const AimResult aim = aim_cue(scene);
   if (!aim.heading_deg) return aim.failure;
   const Scene written = scene;

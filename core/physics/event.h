@@ -35,7 +35,17 @@ struct Event {
   /// group and `speed` being the largest contact speed.
   std::vector<Contact> contacts;
   bool grouped = false;  ///< ball-ball: resolved as a group collision (group.h), not as a pair alone
+  int shot = 0;          ///< the shot it belongs to, from 0 (Scene::cues); the start event is the first's
   bool operator==(const Event&) const = default;
+};
+
+/// One shot's stretch of the timeline: the stick comes in from `start`, strikes at `cue`, and every ball
+/// is at rest (on the bed or down a pocket) from `rest`.
+struct ShotSpan {
+  double start = 0;  ///< s; the first shot's is 0, a later one's a moment after the shot before rests
+  double cue = 0;    ///< s, the strike
+  double rest = 0;   ///< s
+  bool operator==(const ShotSpan&) const = default;
 };
 
 /// A ball dropping into a pocket: recorded, but not a numbered event (as in the seed).

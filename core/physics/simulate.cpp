@@ -55,9 +55,14 @@ class Simulator {
       const Ball& ball = scene.balls[static_cast<std::size_t>(i)];
       BallState s;
       s.position = ball.position;
-      s.position.z() = R;  // on the bed (the parser allows round-off)
       s.orientation = ball.orientation;
-      segments_[static_cast<std::size_t>(i)].push_back({0.0, s, -1});
+      if (ball.pocket >= 0) {
+        s.motion = Motion::pocketed;  // down since an earlier shot: out of play
+        tracks_[static_cast<std::size_t>(i)].live = false;
+      } else {
+        s.position.z() = R;  // on the bed (the parser allows round-off)
+      }
+      segments_[static_cast<std::size_t>(i)].push_back({0.0, s, ball.pocket});
       tracks_[static_cast<std::size_t>(i)].path.p = s.position;
       tracks_[static_cast<std::size_t>(i)].box = {s.position, s.position};
     }
@@ -92,6 +97,7 @@ class Simulator {
     result.groups = groups_;
     result.group_steps = group_steps_;
     result.cut_off = cut_off_;
+    result.rest = rest_;
     return result;
   }
 
@@ -126,6 +132,7 @@ class Simulator {
   long tests_ = 0;
   long groups_ = 0, group_steps_ = 0;
   bool cut_off_ = false;
+  double rest_ = 0;
 
   unsigned version(int i) const { return version_[static_cast<std::size_t>(i)]; }
   const MotionSegment& current(int i) const { return segments_[static_cast<std::size_t>(i)].back(); }
@@ -167,18 +174,20 @@ class Simulator {
     events_.back().contacts = {{i, j, t, speed, where}};
   }
 
-  /// The cue impact: every ball takes its line's velocity and spin, the struck one the stroke's when
-  /// the cue has one (strike.h; the same as strike_cue_ball gives the scene).
+  /// The cue impact: every ball on the bed takes its line's velocity and spin, the struck one the
+  /// stroke's when the cue has one (strike.h; the same as strike_cue_ball gives the scene).
   void strike(double t) {
-    const int target = scene_.cue.target;
+    const Cue& cue = scene_.cue();
+    const int target = cue.target;
     std::vector<int> changed;
     for (int i = 0; i < n_; ++i) {
       const Ball& ball = scene_.balls[static_cast<std::size_t>(i)];
+      if (ball.pocket >= 0) continue;
       BallState s = current(i).start;
       s.velocity = ball.velocity;
       s.spin = ball.spin;
-      if (i == target && scene_.cue.stroke) {
-        const StrikeResult struck = bsim::strike(*scene_.cue.stroke, scene_.cue.heading_deg, params_);
+      if (i == target && cue.stroke) {
+        const StrikeResult struck = bsim::strike(*cue.stroke, cue.heading_deg, params_);
         s.velocity = struck.velocity;
         s.spin = struck.spin;
       }
@@ -493,18 +502,16 @@ class Simulator {
         cut_off_ = true;
       }
     }
-    const double end = std::ceil((settled + kEndHold) / kDurationStep) * kDurationStep;
+    rest_ = settled;
+    const double end = shot_end(settled);
     add_event(EventType::end, end, {}, -1, 0.0, Vec3(0, 0, 0), {}, {});
   }
 };
 
 }  // namespace
 
-SimulationResult simulate_events(const Scene& scene) { return Simulator(scene).run(); }
+double shot_end(double rest) { return std::ceil((rest + kEndHold) / kDurationStep) * kDurationStep; }
 
-Timeline simulate(const Scene& scene) {
-  SimulationResult result = simulate_events(scene);
-  return Timeline(scene, std::move(result.segments), std::move(result.events), std::move(result.drops));
-}
+SimulationResult simulate_events(const Scene& scene) { return Simulator(scene).run(); }
 
 }  // namespace bsim

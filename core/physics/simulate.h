@@ -36,9 +36,16 @@ struct SimulationResult {
   long groups = 0;             ///< group collisions resolved (group.h)
   long group_steps = 0;        ///< their integration steps in all (for the bench)
   bool cut_off = false;        ///< the shot reached kMaxShotTime (or kMaxSteps) still moving
+  double rest = 0;             ///< s, from when every ball is at rest (or where a cut-off shot stops)
 };
 
-/// Runs the shot's physics: events and closed-form motion segments, without orientations.
+/// Runs one shot's physics: the scene's first cue struck at kCueLeadTime, then events and closed-form
+/// motion segments, without orientations. Balls with Ball::pocket set lie in their pockets throughout.
+/// play.h strings shots together.
 SimulationResult simulate_events(const Scene& scene);
+
+/// s, the end event's time for a scene whose balls rest from `rest`: kEndHold later, rounded up to a
+/// whole kDurationStep.
+double shot_end(double rest);
 
 }  // namespace bsim

@@ -36,10 +36,10 @@ StrikeResult strike(const Stroke& stroke, double heading_deg, const PhysicsParam
 }
 
 void strike_cue_ball(Scene& scene) {
-  if (!scene.cue.stroke) return;
-  const auto index = static_cast<std::size_t>(scene.cue.target);
+  if (!scene.cue().stroke) return;
+  const auto index = static_cast<std::size_t>(scene.cue().target);
   if (index >= scene.balls.size()) return;
-  const StrikeResult struck = strike(*scene.cue.stroke, scene.cue.heading_deg, scene.physics);
+  const StrikeResult struck = strike(*scene.cue().stroke, scene.cue().heading_deg, scene.physics);
   scene.balls[index].velocity = struck.velocity;
   scene.balls[index].spin = struck.spin;
 }

@@ -18,8 +18,22 @@ struct Timeline::SegmentSteps {
 };
 
 Timeline::Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> segments, std::vector<Event> events,
-                   std::vector<PocketDrop> drops)
-    : physics_(scene.physics), segments_(std::move(segments)), events_(std::move(events)), drops_(std::move(drops)) {
+                   std::vector<PocketDrop> drops, std::vector<ShotSpan> shots)
+    : physics_(scene.physics),
+      segments_(std::move(segments)),
+      events_(std::move(events)),
+      drops_(std::move(drops)),
+      shots_(std::move(shots)) {
+  if (shots_.empty() && !events_.empty()) {
+    ShotSpan only;
+    only.rest = events_.back().time;
+    for (const Event& e : events_)
+      if (e.type == EventType::cue) {
+        only.cue = e.time;
+        break;
+      }
+    shots_.push_back(only);
+  }
   for (const Pocket& pocket : scene.pockets) {
     pocket_centres_.push_back(pocket.center);
     pocket_radii_.push_back(pocket.radius);
@@ -55,10 +69,11 @@ Timeline::Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> s
     }
 }
 
-double Timeline::cue_time() const {
-  for (const Event& e : events_)
-    if (e.type == EventType::cue) return e.time;
-  return 0;
+int Timeline::shot_at(double t) const {
+  int k = 0;
+  for (int i = 1; i < shot_count(); ++i)
+    if (shots_[static_cast<std::size_t>(i)].start <= t) k = i;
+  return k;
 }
 
 BallState Timeline::segment_state(const MotionSegment& seg, const SegmentSteps* steps, double t,

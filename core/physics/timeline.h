@@ -23,13 +23,20 @@ struct MotionSegment {
 class Timeline {
  public:
   Timeline() = default;
+  /// `shots` in time order; none: one shot spanning the events (its cue the first cue event, its rest
+  /// the end event's time).
   Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> segments, std::vector<Event> events,
-           std::vector<PocketDrop> drops);
+           std::vector<PocketDrop> drops, std::vector<ShotSpan> shots = {});
 
   /// s, time of the end event.
   double duration() const { return events_.empty() ? 0.0 : events_.back().time; }
-  /// s, time of the cue event.
-  double cue_time() const;
+  /// s, time of the first shot's cue event.
+  double cue_time() const { return shots_.empty() ? 0.0 : shots_.front().cue; }
+  /// The shots in order (at least one once built from a simulation).
+  const std::vector<ShotSpan>& shots() const { return shots_; }
+  int shot_count() const { return static_cast<int>(shots_.size()); }
+  /// The shot whose stretch holds t: the last one starting at or before it (0 before the first).
+  int shot_at(double t) const;
   const std::vector<Event>& events() const { return events_; }
   const std::vector<PocketDrop>& pocket_drops() const { return drops_; }
   int ball_count() const { return static_cast<int>(segments_.size()); }
@@ -50,7 +57,7 @@ class Timeline {
   /// from them).
   bool operator==(const Timeline& o) const {
     return physics_ == o.physics_ && pocket_centres_ == o.pocket_centres_ && pocket_radii_ == o.pocket_radii_ &&
-           segments_ == o.segments_ && events_ == o.events_ && drops_ == o.drops_;
+           segments_ == o.segments_ && events_ == o.events_ && drops_ == o.drops_ && shots_ == o.shots_;
   }
 
  private:
@@ -66,15 +73,19 @@ class Timeline {
   std::vector<std::vector<MotionSegment>> segments_;
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
+  std::vector<ShotSpan> shots_;
   /// Per ball and segment, the integration steps saved at construction (shared by copies: it never
   /// changes once built).
   std::shared_ptr<const std::vector<std::vector<SegmentSteps>>> steps_;
 };
 
 /// s from the start event to the cue strike: room for the stick's approach and two practice strokes.
+/// A later shot's stick comes in kCueLeadTime before its strike too.
 inline constexpr double kCueLeadTime = 2.5;
 
-/// Runs the shot: start event, the cue strike at kCueLeadTime, every collision, the end event.
+/// Runs the scene's shots at their cues' headings as given (play.h aims them first): start event, the
+/// first cue strike at kCueLeadTime, every collision, each later shot after the one before rests, the
+/// end event.
 Timeline simulate(const Scene& scene);
 
 }  // namespace bsim

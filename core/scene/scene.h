@@ -20,6 +20,9 @@ struct Ball {
   Vec3 spin{0, 0, 0};                   ///< rad/s, angular velocity given at the cue impact (`spin` extension)
   Quat orientation = Quat::Identity();  ///< normalised
   SourceLoc loc;                        ///< the `ball` keyword
+  /// A later shot's scene (play.h) only: the pocket this ball lies in, put down by an earlier shot; -1
+  /// for a ball on the bed. A scene file never sets it.
+  int pocket = -1;
 };
 
 /// A cushion's nose line, clockwise seen from above: the playing side is on the right from a to b.
@@ -48,6 +51,16 @@ struct Stroke {
   SourceLoc speed_loc, side_loc, elevation_loc;
 };
 
+/// A `place` line (extension) under a later shot's `cue` line: before that shot, ball `ball` is put at
+/// rest at `at`, or, without coordinates, where its `ball` line (or the rack) first put it.
+struct BallPlacement {
+  int ball = -1;  ///< file-order index
+  std::optional<Vec3> at;  ///< m on the bed (z = ball radius), or none: the ball's starting place
+  SourceLoc loc;  ///< the `place` keyword
+  SourceLoc ball_loc, at_loc;
+};
+
+/// One shot: a `cue` line and the lines under it that belong to it (its `stroke`, its `place` lines).
 struct Cue {
   int target = 0;          ///< file-order index of the struck ball
   double heading_deg = 0;  ///< direction the stick pushes, counter-clockwise from +x (found by aiming for `pot`)
@@ -60,6 +73,7 @@ struct Cue {
   SourceLoc pot_ball_loc, pot_pocket_loc;
   bool aims() const { return pot_ball >= 0; }
   std::optional<Stroke> stroke;  ///< the `stroke` line; without one the ball lines give the velocities
+  std::vector<BallPlacement> places;  ///< a later shot's `place` lines, in file order
 };
 
 enum class CameraMode { hover, look, follow };
@@ -95,13 +109,27 @@ struct CameraShot {
 
 struct Scene {
   std::string name = "scene";  ///< file stem, used for the default output directory
-  Cue cue;
+  /// The shots, one per `cue` line in file order (at least one in a parsed scene). The first is struck
+  /// from the `ball` lines' velocities or its stroke; each later one, with its stroke, from where the
+  /// shot before left the balls (play.h). A scene built in code starts with one cue, ball 0 at heading 0.
+  std::vector<Cue> cues{Cue{}};
   std::vector<Ball> balls;      ///< file order
   std::vector<Rail> rails;      ///< file order, or the standard table's six cushions
   std::vector<Pocket> pockets;  ///< file order, or the standard table's six pockets
   std::vector<CameraShot> camera;
   SourceLoc camera_loc;  ///< the `camera` keyword
   PhysicsParams physics;
+
+  /// The first shot's cue: the only one of a scene of one shot.
+  const Cue& cue() const {
+    BSIM_EXPECT(!cues.empty(), "a scene without a cue");
+    return cues.front();
+  }
+  Cue& cue() {
+    BSIM_EXPECT(!cues.empty(), "a scene without a cue");
+    return cues.front();
+  }
+  int shot_count() const { return static_cast<int>(cues.size()); }
 
   /// Ball `i` (file order); the index must be one of the scene's balls.
   const Ball& ball(int i) const {

@@ -26,7 +26,7 @@ namespace {
 constexpr std::size_t kMaxErrors = 30;
 
 constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
-constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack", "stroke"};
+constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack", "stroke", "place"};
 enum class NumberStatus { ok, not_number, not_finite };
 
 NumberStatus parse_double(std::string_view text, double& out) {
@@ -216,7 +216,8 @@ class Parser {
     if (in_camera_) return camera_entry();
     const Token& t = lexed_.tokens[pos_++];
     const std::string_view k = t.text;
-    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke"))
+    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke" ||
+                             k == "place"))
       fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
     if (k == "cue") return cue(t);
     if (k == "ball") return ball(t);
@@ -227,6 +228,7 @@ class Parser {
     if (k == "param") return param(t);
     if (k == "rack") return rack(t);
     if (k == "stroke") return stroke(t);
+    if (k == "place") return place(t);
     if (k == "endcamera") fail(t.loc, "found 'endcamera' without a 'camera' before it");
     if (k == "event" || k == "hover" || k == "look" || k == "follow")
       fail(t.loc, "found '" + std::string(k) + "' outside a camera description; expected one of " +
@@ -256,10 +258,36 @@ class Parser {
     } else {
       c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
     }
-    if (map_.has_cue)
-      fail(keyword.loc, "a scene has one cue, and there is already one on line " + std::to_string(scene_.cue.loc.line));
-    scene_.cue = c;
+    if (map_.has_cue && options_.strict)
+      fail(keyword.loc, "several shots (a second 'cue' line) are an extension that --strict rejects; the first cue is "
+                        "on line " + std::to_string(scene_.cues.front().loc.line));
+    if (!map_.has_cue) scene_.cues.clear();  // the default cue of a scene built in code
+    scene_.cues.push_back(c);
     map_.has_cue = true;
+  }
+
+  /// `place <ball> [<x> <y>]` under a later shot's `cue` line: the ball is put at rest there before that
+  /// shot (without coordinates, back where its `ball` line or the rack put it).
+  void place(const Token& keyword) {
+    BallPlacement p;
+    p.loc = keyword.loc;
+    p.ball = ball_index("the ball to place", p.ball_loc);
+    if (!at_end() && !is_top_keyword(peek().text)) {
+      SourceLoc y_loc;
+      const double x = number("the place's x in metres", &p.at_loc);
+      const double y = number("the place's y in metres", &y_loc);
+      p.at = Vec3(x, y, 0);
+    }
+    if (!map_.has_cue) fail(keyword.loc, "expected the 'cue' line of the shot this place belongs to above it, found none");
+    Cue& cue = scene_.cues.back();
+    if (scene_.cues.size() == 1)
+      fail(keyword.loc, "the first shot's balls stand where their 'ball' lines put them; 'place' belongs under a "
+                        "later 'cue' line (the cue on line " + std::to_string(cue.loc.line) + " is the first)");
+    for (const BallPlacement& other : cue.places)
+      if (other.ball == p.ball)
+        fail(p.ball_loc, "ball index " + std::to_string(p.ball) + " is already placed for this shot on line " +
+                             std::to_string(other.loc.line));
+    cue.places.push_back(p);
   }
 
   /// `stroke <speed> <side> <height> <elevation>`: strikes the ball of the `cue` line above it.
@@ -274,9 +302,10 @@ class Parser {
     s.elevation_deg = number("the stroke's elevation in degrees", &s.elevation_loc);
     const std::string elevation_text = quote_token(lexed_.tokens[pos_ - 1].text);
     if (!map_.has_cue) fail(keyword.loc, "expected the 'cue' line this stroke strikes with above it, found none");
-    if (scene_.cue.stroke)
-      fail(keyword.loc, "the cue on line " + std::to_string(scene_.cue.loc.line) + " already has a stroke on line " +
-                            std::to_string(scene_.cue.stroke->loc.line));
+    Cue& cue = scene_.cues.back();
+    if (cue.stroke)
+      fail(keyword.loc, "the cue on line " + std::to_string(cue.loc.line) + " already has a stroke on line " +
+                            std::to_string(cue.stroke->loc.line));
     if (!(s.speed > 0 && s.speed <= Stroke::kMaxSpeed))
       fail(s.speed_loc, "expected a stroke speed greater than 0 and at most 15 m/s, found " + speed_text);
     if (!(s.elevation_deg >= 0 && s.elevation_deg < 90))
@@ -285,7 +314,7 @@ class Parser {
     if (offset > Stroke::kMiscueOffset + 1e-12)
       fail(s.side_loc, "miscue: the tip meets the ball " + format_fraction(offset) +
                            " of its radius from centre; expected at most 0.5 (sqrt(side^2 + height^2))");
-    scene_.cue.stroke = s;
+    cue.stroke = s;
   }
 
   static std::string format_fraction(double v) {

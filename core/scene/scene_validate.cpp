@@ -51,7 +51,9 @@ class Validator {
     // With a rail the wrong way round, every ball near it would also look outside; one error is enough.
     rails_ok_ = diagnostics_.size() == before;
     for (std::size_t i = 0; i < scene_.balls.size(); ++i) ball_placement(i);
+    if (scene_.cues.empty()) return;  // a rack checked alone
     cue_heading();
+    for (const Cue& cue : scene_.cues) later_shot(cue);
   }
 
  private:
@@ -69,10 +71,12 @@ class Validator {
 
   /// Every reference to a ball by its file-order index.
   void references() {
-    if (!ball_exists(scene_.cue.target))
-      error(scene_.cue.target_loc,
-            "expected a cue target ball index " + index_range() + ", found " + std::to_string(scene_.cue.target));
-    pot_references();
+    for (const Cue& cue : scene_.cues) {
+      if (!ball_exists(cue.target))
+        error(cue.target_loc,
+              "expected a cue target ball index " + index_range() + ", found " + std::to_string(cue.target));
+      pot_references(cue);
+    }
     for (const auto& spin : map_.spins)
       if (!ball_exists(spin.ball))
         error(spin.ball_loc,
@@ -86,8 +90,7 @@ class Validator {
 
   /// `cue I pot B P`: B and P must be there, B must not be the struck ball, and the struck ball needs a speed
   /// (its stroke's, or its `ball` line's).
-  void pot_references() {
-    const Cue& cue = scene_.cue;
+  void pot_references(const Cue& cue) {
     if (!cue.aims()) return;
     if (!ball_exists(cue.pot_ball))
       error(cue.pot_ball_loc,
@@ -107,6 +110,27 @@ class Validator {
         error(cue.loc,
               "expected a speed to aim with: the struck ball's 'ball' line gives it no velocity along the "
               "table, and 'pot' turns that velocity to the heading it finds");
+    }
+  }
+
+  /// A later shot is struck by its stroke from where the balls stopped; its `place` lines put balls on
+  /// the bed.
+  void later_shot(const Cue& cue) {
+    if (&cue == &scene_.cues.front()) return;
+    if (!cue.stroke)
+      error(cue.loc, "expected a 'stroke' line under this cue: a later shot is struck by its stroke (the 'ball' "
+                     "lines' velocities are the first shot's)");
+    for (const BallPlacement& p : cue.places) {
+      if (!ball_exists(p.ball)) {
+        error(p.ball_loc, "expected the index of the ball to place " + index_range() + ", found " +
+                              std::to_string(p.ball));
+        continue;
+      }
+      if (!p.at) continue;
+      Ball ball = scene_.balls[static_cast<std::size_t>(p.ball)];
+      ball.position = Vec3(p.at->x(), p.at->y(), radius_);
+      SceneSourceMap::BallTokens tokens{p.at_loc, p.at_loc, p.at_loc};
+      if (rails_ok_) inside_cushions(ball, tokens);
     }
   }
 
@@ -222,34 +246,34 @@ class Validator {
 
   /// With a stroke the strike gives the struck ball its velocity and spin, so its lines give none.
   void cue_stroke() {
-    const Stroke& stroke = *scene_.cue.stroke;
-    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
+    const Stroke& stroke = *scene_.cue().stroke;
+    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue().target)];
     if (target.velocity != Vec3(0, 0, 0))
-      error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue.target) +
+      error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue().target) +
                             " its velocity, so expected velocity 0 0 0 on its ball line" + line_of(target.loc) +
                             ", found " + fmt(target.velocity.x()) + " " + fmt(target.velocity.y()) + " " +
                             fmt(target.velocity.z()));
     for (const auto& spin : map_.spins)
-      if (spin.ball == scene_.cue.target)
-        error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue.target) +
+      if (spin.ball == scene_.cue().target)
+        error(stroke.loc, "the stroke gives ball index " + std::to_string(scene_.cue().target) +
                               " its spin, so expected no 'spin' line for it, found one" + line_of(spin.loc));
   }
 
   void cue_heading() {
-    if (!ball_exists(scene_.cue.target)) return;
-    if (scene_.cue.stroke) return cue_stroke();
-    if (scene_.cue.aims()) return;
-    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue.target)];
+    if (!ball_exists(scene_.cue().target)) return;
+    if (scene_.cue().stroke) return cue_stroke();
+    if (scene_.cue().aims()) return;
+    const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue().target)];
     const double vx = target.velocity.x(), vy = target.velocity.y();
     if (std::hypot(vx, vy) == 0) {
-      warning(scene_.cue.target_loc, "the cue strikes ball index " + std::to_string(scene_.cue.target) +
+      warning(scene_.cue().target_loc, "the cue strikes ball index " + std::to_string(scene_.cue().target) +
                                          ", whose velocity has no part along the table; the stick will not move it");
       return;
     }
     const double along = std::atan2(vy, vx) * 180.0 / std::numbers::pi;
-    double off = std::remainder(scene_.cue.heading_deg - along, 360.0);
+    double off = std::remainder(scene_.cue().heading_deg - along, 360.0);
     if (std::abs(off) > kHeadingToleranceDeg)
-      warning(scene_.cue.heading_loc, "the cue's heading " + fmt(scene_.cue.heading_deg) +
+      warning(scene_.cue().heading_loc, "the cue's heading " + fmt(scene_.cue().heading_deg) +
                                           " degrees disagrees with its ball's velocity, which points at " + fmt(along) +
                                           " degrees (off by " + fmt(std::abs(off)) + " degrees)");
   }

@@ -149,7 +149,7 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const std::v
     auto& track = script.tracks_[static_cast<std::size_t>(shot.ball)];
     if (track) continue;
     std::optional<double> heading;
-    if (shot.ball == scene.cue.target) heading = scene.cue.heading_deg * kDegToRad;
+    if (shot.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
     track.emplace(timeline, shot.ball, heading);
   }
   return script;

@@ -51,10 +51,10 @@ double lerp(double a, double b, double f) { return a + (b - a) * f; }
 CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera)
     : scene_(&scene), timeline_(&timeline), camera_(&camera) {
   cue_time_ = timeline.cue_time();
-  const int target = scene.cue.target;
+  const int target = scene.cue().target;
   if (!(cue_time_ > 0) || target < 0 || target >= static_cast<int>(scene.balls.size())) return;
 
-  const double heading = scene.cue.heading_deg * kDegToRad;
+  const double heading = scene.cue().heading_deg * kDegToRad;
   heading_ = Vec3(std::cos(heading), std::sin(heading), 0);
   double ball_speed = scene.ball(target).velocity.norm();
   for (const Event& event : timeline.events()) {
@@ -64,7 +64,7 @@ CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraS
 
   // A stroke gives the elevation, raised only as far as the cushion and the balls need; else the seed's
   // shot takes the lowest that clears from kMinElevationDeg.
-  choose_elevation(scene.cue.stroke ? scene.cue.stroke->elevation_deg : kMinElevationDeg);
+  choose_elevation(scene.cue().stroke ? scene.cue().stroke->elevation_deg : kMinElevationDeg);
   // The struck ball must stay ahead of the tip (a very slow shot, or a velocity that disagrees with
   // the heading): shorten the follow-through until it does.
   for (int tries = 0; tries < 8 && !follow_through_clear(); ++tries) {
@@ -119,10 +119,10 @@ void CueScript::choose_elevation(double lowest_deg) {
 
 Vec3 CueScript::tip_contact(const Vec3& centre, double radius) const {
   const Vec3 toward_butt = place(0, 0).axis;                      // the axis does not depend on the contact point
-  if (!scene_->cue.stroke) return centre + radius * toward_butt;  // through the ball's centre
+  if (!scene_->cue().stroke) return centre + radius * toward_butt;  // through the ball's centre
   // The stroke's offsets across the stick: side to the shooter's right, height up across the axis
   // (the frame of strike.h), so the tip touches the ball where the strike's impulse acts.
-  const Stroke& stroke = *scene_->cue.stroke;
+  const Stroke& stroke = *scene_->cue().stroke;
   const Vec3 d = -toward_butt;
   const Vec3 right(heading_.y(), -heading_.x(), 0);
   const Vec3 up = right.cross(d);
@@ -136,8 +136,8 @@ void CueScript::plan_stroke(double elevation) {
   // ball_speed_ * cos(elevation) would follow it in, so steep strokes are slower.
   tip_speed_ = std::max(std::min(ball_speed_ / kBallToTipSpeed, kSteepSpeedShare * ball_speed_ * std::cos(elevation)),
                         kMinTipSpeed);
-  if (scene_->cue.stroke) tip_speed_ = scene_->cue.stroke->speed;  // the stroke's speed at impact
-  const Vec3 centre = scene_->balls[static_cast<std::size_t>(scene_->cue.target)].position;
+  if (scene_->cue().stroke) tip_speed_ = scene_->cue().stroke->speed;  // the stroke's speed at impact
+  const Vec3 centre = scene_->balls[static_cast<std::size_t>(scene_->cue().target)].position;
   contact_ = tip_contact(centre, timeline_->physics().ball_radius);
 
   // Constant acceleration from rest at the back-swing to tip_speed_ at contact.
@@ -153,7 +153,7 @@ void CueScript::plan_stroke(double elevation) {
   follow_time_ = 2.0 * follow_ / tip_speed_;
   // With a stroke the practice strokes grow with its speed too (a break is a long stroke, a touch a
   // short one); the seed's shots keep its fixed reach.
-  amplitude_ = scene_->cue.stroke ? std::clamp(0.5 * backswing_, kMinBackswing, kMaxFollow) : kStrokeAmplitude;
+  amplitude_ = scene_->cue().stroke ? std::clamp(0.5 * backswing_, kMinBackswing, kMaxFollow) : kStrokeAmplitude;
 }
 
 double CueScript::stroke_clearance() const {
@@ -163,18 +163,18 @@ double CueScript::stroke_clearance() const {
   const double farthest = std::max(backswing_, kAddressGap + amplitude_);
   double gap = std::numeric_limits<double>::infinity();
   for (double behind = 0; behind <= farthest + 1e-9; behind += 0.005)
-    gap = std::min(gap, stick_clearance(place(behind, 0), *scene_, resting, radius, scene_->cue.target));
+    gap = std::min(gap, stick_clearance(place(behind, 0), *scene_, resting, radius, scene_->cue().target));
   // During the follow-through the struck ball leaves and the others may start to move.
   for (int i = 0; i <= 8; ++i) {
     const double t = cue_time_ + follow_time_ * i / 8.0;
-    gap = std::min(gap, stick_clearance(path(t), *scene_, timeline_->states(t), radius, scene_->cue.target));
+    gap = std::min(gap, stick_clearance(path(t), *scene_, timeline_->states(t), radius, scene_->cue().target));
   }
   return gap;
 }
 
 bool CueScript::follow_through_clear() const {
   const double radius = timeline_->physics().ball_radius;
-  const int target = scene_->cue.target;
+  const int target = scene_->cue().target;
   for (int i = 1; i <= 16; ++i) {
     const double t = cue_time_ + follow_time_ * i / 16.0;
     if (stick_ball_gap(path(t), timeline_->state(target, t).position, radius) < 0) return false;

@@ -405,10 +405,10 @@ Stroke Director::the_stroke() const {
   stroke.begin = 0.0;
   stroke.end = timeline_.duration();
   stroke.cue_time = timeline_.cue_time();
-  stroke.cue_ball = scene_.cue.target;
+  stroke.cue_ball = scene_.cue().target;
   const Ball& cue = scene_.balls[static_cast<std::size_t>(stroke.cue_ball)];
   stroke.cue_at = cue.position;
-  const double heading_rad = scene_.cue.heading_deg * kDegToRad;
+  const double heading_rad = scene_.cue().heading_deg * kDegToRad;
   stroke.aim = horizontal_unit(cue.velocity, Vec3(std::cos(heading_rad), std::sin(heading_rad), 0));
   // The cue ball's first object ball.
   const std::vector<Contact> cue_contacts = contacts(stroke.cue_ball);

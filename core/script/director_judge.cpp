@@ -57,7 +57,7 @@ Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& sa
       radius_(scene.physics.ball_radius) {
   for (int b = 0; b < timeline.ball_count(); ++b) {
     const bool pocketed = std::isfinite(samples.drop_time[static_cast<std::size_t>(b)]);
-    if (pocketed || b == scene.cue.target) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
+    if (pocketed || b == scene.cue().target) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
   }
 }
 

@@ -123,9 +123,9 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
     // The tip's click follows the stick: with a stroke, at the ball speed a centre hit at the stroke's
     // speed gives (so an off-centre hit clicks as loud as a centre one of the same stroke).
     double speed = e.speed;
-    if (e.type == EventType::cue && shot.scene.cue.stroke) {
+    if (e.type == EventType::cue && shot.scene.cue().stroke) {
       const PhysicsParams& p = shot.scene.physics;
-      speed = (1 + p.e_tip) * shot.scene.cue.stroke->speed / (1 + p.ball_mass / p.cue_mass);
+      speed = (1 + p.e_tip) * shot.scene.cue().stroke->speed / (1 + p.ball_mass / p.cue_mass);
     }
     cues.push_back(event_cue(shot, kind, e.time, speed, e.where, cue_seed(kind, e.index, ball)));
   }

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     }
   }
   const bsim::ParseResult parsed = bsim::parse_scene(text, "aim_bench");
-  if (!parsed.scene || !parsed.scene->cue.aims()) {
+  if (!parsed.scene || !parsed.scene->cue().aims()) {
     std::fprintf(stderr, "aim_bench: the scene does not parse or its cue does not aim\n");
     return 1;
   }
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     }
   }
   std::sort(ms.begin(), ms.end());
-  const bsim::Vec3 from = scene.ball(scene.cue.target).position;
+  const bsim::Vec3 from = scene.ball(scene.cue().target).position;
   const double ghost = std::atan2(probe.ghost.y() - from.y(), probe.ghost.x() - from.x()) * 180 / std::numbers::pi;
   std::printf("ghost-ball heading %.6f deg, found %.6f deg (%+.4f)\n", ghost, *probe.heading_deg,
               *probe.heading_deg - ghost);

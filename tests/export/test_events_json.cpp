@@ -60,9 +60,12 @@ TEST_SUITE("events.json") {
         "{\n"
         "  \"duration\": 3,\n"
         "  \"events\": [\n"
-        "    {\"index\": 0, \"time\": 0, \"type\": \"start\"},\n"
-        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"balls\": [0], \"speed\": 0, \"heading\": 0},\n"
-        "    {\"index\": 2, \"time\": 3, \"type\": \"end\"}\n"
+        "    {\"index\": 0, \"time\": 0, \"type\": \"start\", \"shot\": 1},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": 0, \"heading\": 0},\n"
+        "    {\"index\": 2, \"time\": 3, \"type\": \"end\", \"shot\": 1}\n"
+        "  ],\n"
+        "  \"shots\": [\n"
+        "    {\"shot\": 1, \"cue\": 2.5, \"rest\": 2.5}\n"
         "  ],\n"
         "  \"pocketed\": [],\n"
         "  \"final\": [\n"
@@ -84,7 +87,7 @@ TEST_SUITE("events.json") {
     bool rail = false, ball_ball = false;
     for (const Event& e : shot.timeline.events()) {
       const std::string head = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
-                               ", \"type\": \"" + std::string(to_string(e.type)) + "\"";
+                               ", \"type\": \"" + std::string(to_string(e.type)) + "\", \"shot\": 1";
       CHECK(json.find(head) != std::string::npos);
       if (e.type == EventType::ball_rail) {
         rail = true;
@@ -112,20 +115,20 @@ TEST_SUITE("events.json") {
     // spec.md "events.json": "heading" on every cue event; "stroke" {speed, side, height, elevation}.
     Scene scene = scenes::standard_table();
     scene.balls.push_back(scenes::ball_at(0, -0.5, 0.1, scene.physics));
-    scene.cue.heading_deg = 12.5;
+    scene.cue().heading_deg = 12.5;
     Stroke stroke;
     stroke.speed = 2;
     stroke.side = 0.1;
     stroke.height = -0.25;
     stroke.elevation_deg = 5;
-    scene.cue.stroke = stroke;
+    scene.cue().stroke = stroke;
     const std::unique_ptr<Shot> shot = shot_of(scene);
     const Event& cue = shot->timeline.events()[1];
     REQUIRE(cue.type == EventType::cue);
     // The struck ball's speed just after the strike, squirt and bed included (strike.h).
     CHECK(cue.speed == doctest::Approx(strike(stroke, 12.5, scene.physics).velocity.norm()).epsilon(1e-15));
     CHECK(cue.speed > 2);
-    CHECK(events_json(*shot).find("\"type\": \"cue\", \"balls\": [0], \"speed\": " + format_number(cue.speed) +
+    CHECK(events_json(*shot).find("\"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": " + format_number(cue.speed) +
                                   ", \"heading\": 12.5, \"stroke\": {\"speed\": 2, \"side\": 0.1, \"height\": -0.25, "
                                   "\"elevation\": 5}}") != std::string::npos);
   }
@@ -156,7 +159,7 @@ TEST_SUITE("events.json") {
     CHECK(hit.speed == fastest);
     CHECK(events_json(*owner).find(
               "{\"index\": 2, \"time\": " + format_number(hit.time) +
-              ", \"type\": \"ball-ball\", \"balls\": [0, 1, 2, 3], \"speed\": " + format_number(hit.speed) +
+              ", \"type\": \"ball-ball\", \"shot\": 1, \"balls\": [0, 1, 2, 3], \"speed\": " + format_number(hit.speed) +
               ", \"contacts\": [" + contacts + "]}") != std::string::npos);
   }
 

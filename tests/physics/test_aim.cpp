@@ -59,7 +59,7 @@ bool loaded_pots(const std::string& text, int pocket, double* heading = nullptr)
   const ShotResult r = load_shot(text, "aim");
   for (const Diagnostic& d : r.diagnostics) INFO(format_diagnostic(d, "aim"));
   REQUIRE(r.shot != nullptr);
-  if (heading) *heading = r.shot->scene.cue.heading_deg;
+  if (heading) *heading = r.shot->scene.cue().heading_deg;
   return pots(r.shot->timeline, 1, pocket);
 }
 
@@ -147,7 +147,7 @@ TEST_SUITE("aim") {
     const Scene scene = parsed(kSwerve);
     Scene struck = scene;
     strike_heading(scene, 90, struck);
-    CHECK(struck.cue.heading_deg == 90);
+    CHECK(struck.cue().heading_deg == 90);
     CHECK(struck.ball(0).velocity.x() == doctest::Approx(0).scale(1));
     CHECK(struck.ball(0).velocity.y() == doctest::Approx(2));
     // Spin (5, 0, 60) written for a shot along +x is (0, 5, 60) for a shot along +y.

@@ -193,8 +193,8 @@ TEST_SUITE("simulate") {
     for (int i = 0; i < a.ball_count(); ++i) segments.push_back(a.segments(i));
     std::vector<Event> events = a.events();
     events[2].where.x() = std::nextafter(events[2].where.x(), INFINITY);
-    CHECK_FALSE(Timeline(scene, segments, events, a.pocket_drops()) == a);
-    CHECK(Timeline(scene, segments, a.events(), a.pocket_drops()) == a);
+    CHECK_FALSE(Timeline(scene, segments, events, a.pocket_drops(), a.shots()) == a);
+    CHECK(Timeline(scene, segments, a.events(), a.pocket_drops(), a.shots()) == a);
   }
 
   TEST_CASE("random breaks and scattered tables: no overlap, nobody past a cushion, no NaN, energy never rises") {

@@ -112,12 +112,12 @@ TEST_SUITE("strike") {
     auto shot = test::load_clean(
         "cue 1 90\nstroke 2 0 0.2 0\nball 0 0.5 0 0.028575 0 0 0 1 0 0 0\n"
         "ball 1 0 0 0.028575 0 0 0 1 0 0 0\n");
-    const StrikeResult r = strike(*shot->scene.cue.stroke, 90, shot->scene.physics);
+    const StrikeResult r = strike(*shot->scene.cue().stroke, 90, shot->scene.physics);
     CHECK(shot->scene.balls[1].velocity == r.velocity);
     CHECK(shot->scene.balls[1].spin == r.spin);
     CHECK(shot->scene.balls[0].velocity == Vec3(0, 0, 0));
     Scene seed = shot->scene;
-    seed.cue.stroke.reset();
+    seed.cue().stroke.reset();
     seed.balls[1].velocity = Vec3(1, 0, 0);
     strike_cue_ball(seed);
     CHECK(seed.balls[1].velocity == Vec3(1, 0, 0));

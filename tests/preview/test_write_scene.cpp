@@ -29,12 +29,12 @@ TEST_SUITE("preview: --write-scene") {
     const auto aimed = loaded(text);
     const std::string resolved = scene_text_resolved(text, aimed->scene);
     CHECK(resolved.find("cue 0 pot") == std::string::npos);
-    CHECK(resolved.find("cue 0 " + format_number(aimed->scene.cue.heading_deg) + "\n") != std::string::npos);
+    CHECK(resolved.find("cue 0 " + format_number(aimed->scene.cue().heading_deg) + "\n") != std::string::npos);
     CHECK(resolved.find("stroke 1.5 0.4 0 0\n") != std::string::npos);  // the stroke strikes at the heading
     CHECK(resolved.find("ball 0  -0.9 -0.3 0.028575   0 0 0 ") != std::string::npos);  // no velocity written
     const auto replayed = loaded(resolved);
-    CHECK_FALSE(replayed->scene.cue.aims());
-    CHECK(replayed->scene.cue.heading_deg == aimed->scene.cue.heading_deg);
+    CHECK_FALSE(replayed->scene.cue().aims());
+    CHECK(replayed->scene.cue().heading_deg == aimed->scene.cue().heading_deg);
     CHECK(replayed->timeline.events() == aimed->timeline.events());
     CHECK(replayed->timeline.pocket_drops() == aimed->timeline.pocket_drops());
   }
@@ -48,7 +48,7 @@ TEST_SUITE("preview: --write-scene") {
         "camera\nevent 0 0 0 hover  -0.2 -1.5 1.7  0.2 0.1 0\nendcamera\n";
     const auto aimed = loaded(text);
     const std::string resolved = scene_text_resolved(text, aimed->scene);
-    CHECK(resolved.find("cue 0 " + format_number(aimed->scene.cue.heading_deg) + "\n") != std::string::npos);
+    CHECK(resolved.find("cue 0 " + format_number(aimed->scene.cue().heading_deg) + "\n") != std::string::npos);
     CHECK(resolved.find("ball 0  -0.9 -0.3 0.028575   2.0 0 0 ") == std::string::npos);  // turned to the heading
     CHECK(resolved.find("spin 0  0 0 60") != std::string::npos);  // side spin about the vertical stays
     const auto replayed = loaded(resolved);

@@ -59,11 +59,11 @@ TEST_SUITE("scene_parse") {
   TEST_CASE("a scene in the seed's grammar reads into SI values with its locations") {
     const Scene s = parse_ok(kSeedScene);
     CHECK(s.name == "test");
-    CHECK(s.cue.target == 1);
-    CHECK(s.cue.heading_deg == 90);
-    check_loc(s.cue.loc, 1, 1);
-    check_loc(s.cue.target_loc, 1, 5);
-    check_loc(s.cue.heading_loc, 1, 7);
+    CHECK(s.cue().target == 1);
+    CHECK(s.cue().heading_deg == 90);
+    check_loc(s.cue().loc, 1, 1);
+    check_loc(s.cue().target_loc, 1, 5);
+    check_loc(s.cue().heading_loc, 1, 7);
 
     REQUIRE(s.balls.size() == 2);
     CHECK(s.balls[0].number == 0);
@@ -128,7 +128,7 @@ TEST_SUITE("scene_parse") {
         "ball 0 0.6 0 0.028575 -1 0 0 1 0 0 0\n");
     REQUIRE(s.balls.size() == 2);
     CHECK(s.balls[0].number == 3);
-    CHECK(s.cue.target == 1);
+    CHECK(s.cue().target == 1);
     CHECK(s.rails.size() == 1);
     CHECK(s.camera.size() == 1);
   }
@@ -136,7 +136,7 @@ TEST_SUITE("scene_parse") {
   TEST_CASE("tokens may be split by any whitespace, and columns count bytes") {
     const Scene s = parse_ok("cue\t0 0\r\nball 0\t\t0 0 0.028575\n1 0 0\n1 0 0 0");
     CHECK(s.balls[0].velocity.x() == 1);
-    check_loc(s.cue.heading_loc, 1, 7);
+    check_loc(s.cue().heading_loc, 1, 7);
     check_loc(s.balls[0].loc, 2, 1);
   }
 
@@ -192,7 +192,7 @@ TEST_SUITE("scene_parse extensions") {
         "ball 0 0 0 0.028575 1#comment\n"
         "0 0 1 0 0 0 ### more\n");
     CHECK(s.balls[0].velocity.x() == 1);
-    check_loc(s.cue.loc, 2, 1);
+    check_loc(s.cue().loc, 2, 1);
   }
 
   TEST_CASE("spin gives a ball its angular velocity by file-order index") {

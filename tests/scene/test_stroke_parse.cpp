@@ -26,8 +26,8 @@ TEST_SUITE("stroke: parsing") {
     INFO(messages(r));
     REQUIRE(r.scene.has_value());
     CHECK(r.diagnostics.empty());  // no "stick will not move it" warning: the stroke moves it
-    REQUIRE(r.scene->cue.stroke.has_value());
-    const Stroke& s = *r.scene->cue.stroke;
+    REQUIRE(r.scene->cue().stroke.has_value());
+    const Stroke& s = *r.scene->cue().stroke;
     CHECK(s.speed == 2.5);
     CHECK(s.side == -0.1);
     CHECK(s.height == 0.3);
@@ -39,7 +39,7 @@ TEST_SUITE("stroke: parsing") {
   TEST_CASE("the seed's velocity form has no stroke") {
     const ParseResult r = parse_scene("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\n", "t");
     REQUIRE(r.scene.has_value());
-    CHECK_FALSE(r.scene->cue.stroke.has_value());
+    CHECK_FALSE(r.scene->cue().stroke.has_value());
   }
 
   TEST_CASE("the stick's params, with their defaults") {

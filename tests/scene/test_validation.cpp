@@ -98,8 +98,8 @@ TEST_SUITE("validation: tokens") {
     expect_error("cue 0 0\n" + kCam, 4, 10, {"expected at least one ball description", "found none"});
   }
 
-  TEST_CASE("one cue and one camera description per scene") {
-    expect_error("cue 0 0\n" + kBall0 + "cue 0 0\n", 3, 1, {"already one on line 1"});
+  TEST_CASE("a later cue needs its stroke; one camera description per scene") {
+    expect_error("cue 0 0\n" + kBall0 + "cue 0 0\n", 3, 1, {"expected a 'stroke' line under this cue"});
     expect_error("cue 0 0\n" + kBall0 + kCam + kCam, 6, 1, {"one camera description", "already one on line 3"});
   }
 
@@ -318,10 +318,10 @@ TEST_SUITE("validation: aim") {
     INFO(all_messages(r));
     REQUIRE(r.scene.has_value());
     CHECK(r.diagnostics.empty());
-    CHECK(r.scene->cue.aims());
-    CHECK(r.scene->cue.pot_ball == 1);
-    CHECK(r.scene->cue.pot_pocket == 2);
-    CHECK(r.scene->cue.pot_pocket_loc.column == 13);
+    CHECK(r.scene->cue().aims());
+    CHECK(r.scene->cue().pot_ball == 1);
+    CHECK(r.scene->cue().pot_pocket == 2);
+    CHECK(r.scene->cue().pot_pocket_loc.column == 13);
   }
 
   TEST_CASE("a pocket that does not exist is an error at the pocket number") {

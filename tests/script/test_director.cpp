@@ -164,7 +164,7 @@ void check_watched(const Shot& shot) {
   for (int b = 0; b < timeline.ball_count(); ++b) {
     const double dropped = drop[static_cast<std::size_t>(b)];
     const bool pocketed = std::isfinite(dropped);
-    if (!pocketed && b != shot.scene.cue.target) continue;
+    if (!pocketed && b != shot.scene.cue().target) continue;
     int travelling = 0, seen = 0;
     for (int k = 0; k / kPictureHz <= duration; ++k) {
       const double t = k / kPictureHz;
@@ -221,7 +221,7 @@ TEST_SUITE("director") {
     const CameraShot& stroke = script.shots[0];
     CHECK(camera_key_text(stroke.key) == "start");
     const Vec3 cue = shot->scene.balls[0].position;
-    const double heading = shot->scene.cue.heading_deg * kDegToRad;  // the break is a stroke along it
+    const double heading = shot->scene.cue().heading_deg * kDegToRad;  // the break is a stroke along it
     const Vec3 aim(std::cos(heading), std::sin(heading), 0);
     CHECK((stroke.location - cue).dot(aim) < -0.5);
     CHECK(stroke.location.z() > cue.z() + 0.3);

@@ -68,8 +68,8 @@ inline Scene break_scene(const BreakSetup& setup, std::uint64_t seed) {
   const double speed = rng.uniform(setup.speed - setup.speed_spread, setup.speed + setup.speed_spread);
   scene.balls.push_back(scenes::ball_at(0, x, y, scene.physics, speed * Vec3(std::cos(heading), std::sin(heading), 0)));
   for (const RackedBall& b : rack) scene.balls.push_back(scenes::ball_at(b.number, b.x, b.y, scene.physics));
-  scene.cue.target = 0;
-  scene.cue.heading_deg = heading * 180.0 / std::numbers::pi;
+  scene.cue().target = 0;
+  scene.cue().heading_deg = heading * 180.0 / std::numbers::pi;
   return scene;
 }
 

@@ -116,7 +116,7 @@ inline Scene random_break(std::uint64_t seed) {
   const double jitter = tight ? rng.uniform(0, 4e-6) : rng.uniform(0, 5e-5);
   const double gap = 3 * jitter + (tight ? 0.0 : rng.uniform(0, 3e-4));
   add_rack(scene, apex, gap, jitter, &rng);
-  scene.cue.heading_deg = aim * 180 / M_PI;
+  scene.cue().heading_deg = aim * 180 / M_PI;
   return scene;
 }
 

@@ -1,0 +1,227 @@
+#include "play.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "aim.h"
+#include "simulate.h"
+#include "strike.h"
+
+namespace bsim {
+
+namespace {
+
+/// m, the step along the long axis between places tried for a ball put back.
+constexpr double kRespotStep = 0.001;
+
+std::string ball_name(const Scene& scene, int i) {
+  const int number = scene.ball(i).number;
+  return "ball index " + std::to_string(i) + (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
+}
+
+std::string xy(const Vec3& p) {
+  char text[48];
+  std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x(), p.y());
+  return text;
+}
+
+/// Whether a ball centred at p touches any ball on the bed but `self`.
+bool touches(const std::vector<Ball>& balls, const Vec3& p, int self, double radius) {
+  for (std::size_t j = 0; j < balls.size(); ++j) {
+    if (static_cast<int>(j) == self || balls[j].pocket >= 0) continue;
+    if (std::hypot(balls[j].position.x() - p.x(), balls[j].position.y() - p.y()) < 2 * radius) return true;
+  }
+  return false;
+}
+
+/// "after shot 2 the balls stood at 0 (the cue ball) (-0.412, 0.118), ...; down: the 1 (pocket 4)".
+std::string where_balls_were(const Scene& scene, const std::vector<Ball>& balls, int after_shot) {
+  std::string on, down;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const int number = balls[i].number;
+    const std::string name = number == 0 ? "the cue ball" : "the " + std::to_string(number);
+    if (balls[i].pocket >= 0) {
+      down += (down.empty() ? "" : ", ") + name + " (pocket " + std::to_string(balls[i].pocket) + ")";
+    } else {
+      on += (on.empty() ? "" : ", ") + std::to_string(i) + " " + name + " " + xy(balls[i].position);
+    }
+  }
+  (void)scene;
+  return "after shot " + std::to_string(after_shot) + " the balls stood at " + (on.empty() ? "nowhere" : on) +
+         (down.empty() ? "" : "; down: " + down);
+}
+
+/// Lays the shots' own simulations end to end.
+class Chain {
+ public:
+  explicit Chain(const Scene& scene) : scene_(scene), segments_(scene.balls.size()) {}
+
+  /// A later shot's scene: the balls where the shots so far left them, at rest.
+  void stand_balls(Scene& shot) const {
+    for (std::size_t i = 0; i < shot.balls.size(); ++i) {
+      const MotionSegment& last = segments_[i].back();
+      Ball& ball = shot.balls[i];
+      ball.position = last.start.position;
+      ball.velocity.setZero();
+      ball.spin.setZero();
+      ball.pocket = last.start.motion == Motion::pocketed ? last.pocket : -1;
+    }
+  }
+
+  double rest() const { return shots_.empty() ? 0.0 : shots_.back().rest; }
+
+  /// Adds one shot's simulation, struck from `shot` (whose balls `moved` were put where they stand
+  /// before it: placed or put back), starting at `offset`.
+  void add(SimulationResult r, const Scene& shot, const std::vector<char>& moved, double offset, int k) {
+    for (std::size_t i = 0; i < segments_.size(); ++i) {
+      auto& list = r.segments[i];
+      std::size_t first = 1;
+      if (k == 0 || moved[i]) first = 0;
+      for (std::size_t j = first; j < list.size(); ++j) {
+        MotionSegment seg = list[j];
+        seg.t0 += offset;
+        segments_[i].push_back(seg);
+      }
+    }
+    for (Event& e : r.events) {
+      if (e.type == EventType::end || (k > 0 && e.type == EventType::start)) continue;
+      e.time += offset;
+      for (Contact& c : e.contacts) c.time += offset;
+      e.shot = k;
+      events_.push_back(std::move(e));
+    }
+    for (PocketDrop d : r.drops) {
+      d.time += offset;
+      drops_.push_back(d);
+    }
+    shots_.push_back({offset, offset + kCueLeadTime, offset + r.rest});
+    (void)shot;
+  }
+
+  Timeline finish() {
+    Event end;
+    end.type = EventType::end;
+    end.time = shot_end(rest());
+    end.shot = std::max(0, static_cast<int>(shots_.size()) - 1);
+    events_.push_back(end);
+    for (std::size_t i = 0; i < events_.size(); ++i) events_[i].index = static_cast<int>(i);
+    return Timeline(scene_, std::move(segments_), std::move(events_), std::move(drops_), std::move(shots_));
+  }
+
+ private:
+  const Scene& scene_;
+  std::vector<std::vector<MotionSegment>> segments_;
+  std::vector<Event> events_;
+  std::vector<PocketDrop> drops_;
+  std::vector<ShotSpan> shots_;
+};
+
+/// The shot's `place` lines: each ball at rest where the line says, or where it first stood. A failure
+/// when a placed ball lands on another.
+std::optional<PlayFailure> place_balls(const Scene& scene, int k, Scene& shot, std::vector<char>& moved) {
+  const Cue& cue = scene.cues[static_cast<std::size_t>(k)];
+  const double radius = scene.physics.ball_radius;
+  for (const BallPlacement& p : cue.places) {
+    Ball& ball = shot.balls[static_cast<std::size_t>(p.ball)];
+    const Vec3 at = p.at ? *p.at : scene.ball(p.ball).position;
+    ball.position = Vec3(at.x(), at.y(), radius);
+    ball.pocket = -1;
+    moved[static_cast<std::size_t>(p.ball)] = 1;
+  }
+  for (const BallPlacement& p : cue.places) {
+    const Vec3& at = shot.ball(p.ball).position;
+    for (std::size_t j = 0; j < shot.balls.size(); ++j) {
+      const Ball& other = shot.balls[j];
+      if (static_cast<int>(j) == p.ball || other.pocket >= 0) continue;
+      if (std::hypot(other.position.x() - at.x(), other.position.y() - at.y()) < 2 * radius - 1e-9)
+        return PlayFailure{k, p.loc,
+                           "shot " + std::to_string(k + 1) + " places " + ball_name(scene, p.ball) + " at " + xy(at) +
+                               " on " + ball_name(scene, static_cast<int>(j)) + ", which stands at " +
+                               xy(other.position) + "; place it at least " + std::to_string(2 * radius).substr(0, 6) +
+                               " m (a ball's diameter) away, or place that ball too"};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Vec3 respot_place(const Scene& scene, const std::vector<Ball>& balls, int ball) {
+  const double radius = scene.physics.ball_radius;
+  double lowest = kHeadSpotX, highest = kHeadSpotX;  // the cushions' reach along the long axis
+  for (const Rail& r : scene.rails) {
+    lowest = std::min({lowest, r.a.x(), r.b.x()});
+    highest = std::max({highest, r.a.x(), r.b.x()});
+  }
+  for (int direction : {-1, 1}) {
+    for (int step = 0;; ++step) {
+      const Vec3 p(kHeadSpotX + direction * step * kRespotStep, kHeadSpotY, radius);
+      if (p.x() - radius < lowest || p.x() + radius > highest) break;
+      if (!touches(balls, p, ball, radius)) return p;
+    }
+  }
+  return Vec3(kHeadSpotX, kHeadSpotY, radius);  // a table packed full: the spot itself
+}
+
+PlayResult play(Scene& scene) {
+  Chain chain(scene);
+  PlayResult result;
+  Scene shot = scene;  // one shot's scene: its cue alone, the balls where they stand before it
+  shot.camera.clear();
+  for (int k = 0; k < scene.shot_count(); ++k) {
+    const Cue& cue = scene.cues[static_cast<std::size_t>(k)];
+    shot.cues = {cue};
+    std::vector<char> moved(scene.balls.size(), 0);
+    const double offset = k == 0 ? 0.0 : chain.rest();
+    if (k > 0) {
+      chain.stand_balls(shot);
+      if (auto failure = place_balls(scene, k, shot, moved)) {
+        result.failure = std::move(failure);
+        break;
+      }
+      Ball& struck = shot.balls[static_cast<std::size_t>(cue.target)];
+      if (struck.pocket >= 0) {  // a scratch: back on the head spot
+        struck.pocket = -1;
+        struck.position = respot_place(scene, shot.balls, cue.target);
+        moved[static_cast<std::size_t>(cue.target)] = 1;
+      }
+    }
+    if (cue.aims()) {
+      const std::string shot_name = "shot " + std::to_string(k + 1);
+      const Ball& target = shot.ball(cue.pot_ball);
+      std::string why;
+      std::optional<double> heading;
+      if (target.pocket >= 0) {
+        why = shot_name + " cannot pot " + ball_name(scene, cue.pot_ball) + ": it is already down (pocket " +
+              std::to_string(target.pocket) + ")";
+      } else {
+        const AimResult aim = aim_cue(shot);
+        heading = aim.heading_deg;
+        if (!heading) why = (k == 0 ? "" : shot_name + ": ") + aim.failure;
+      }
+      if (!heading) {
+        if (k > 0) why += "; " + where_balls_were(scene, shot.balls, k);
+        result.failure = PlayFailure{k, cue.loc, why};
+        break;
+      }
+      const Scene written = shot;
+      strike_heading(written, *heading, shot);
+      scene.cues[static_cast<std::size_t>(k)].heading_deg = *heading;
+    } else {
+      strike_cue_ball(shot);
+    }
+    if (k == 0) scene.balls = shot.balls;  // the first shot's struck ball as struck
+    chain.add(simulate_events(shot), shot, moved, offset, k);
+  }
+  result.timeline = chain.finish();
+  return result;
+}
+
+Timeline simulate(const Scene& scene) {
+  Scene played = scene;
+  for (Cue& cue : played.cues) cue.pot_ball = -1;  // the headings as given
+  return play(played).timeline;
+}
+
+}  // namespace bsim
