@@ -17,7 +17,8 @@ constexpr double kRespotStep = 0.001;
 
 std::string ball_name(const Scene& scene, int i) {
   const int number = scene.ball(i).number;
-  return "ball index " + std::to_string(i) + (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
+  return "ball index " + std::to_string(i) +
+         (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
 }
 
 std::string xy(const Vec3& p) {
@@ -35,8 +36,8 @@ bool touches(const std::vector<Ball>& balls, const Vec3& p, int self, double rad
   return false;
 }
 
-/// "after shot 2 the balls stood at 0 (the cue ball) (-0.412, 0.118), ...; down: the 1 (pocket 4)".
-std::string where_balls_were(const Scene& scene, const std::vector<Ball>& balls, int after_shot) {
+/// "after shot 2 the balls stood: 0 (the cue ball) at (-0.412, 0.118), ...; down: the 1 (pocket 4)".
+std::string where_balls_were(const std::vector<Ball>& balls, int after_shot) {
   std::string on, down;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const int number = balls[i].number;
@@ -44,11 +45,10 @@ std::string where_balls_were(const Scene& scene, const std::vector<Ball>& balls,
     if (balls[i].pocket >= 0) {
       down += (down.empty() ? "" : ", ") + name + " (pocket " + std::to_string(balls[i].pocket) + ")";
     } else {
-      on += (on.empty() ? "" : ", ") + std::to_string(i) + " " + name + " " + xy(balls[i].position);
+      on += (on.empty() ? "" : ", ") + std::to_string(i) + " (" + name + ") at " + xy(balls[i].position);
     }
   }
-  (void)scene;
-  return "after shot " + std::to_string(after_shot) + " the balls stood at " + (on.empty() ? "nowhere" : on) +
+  return "after shot " + std::to_string(after_shot) + " the balls stood: " + (on.empty() ? "none on the bed" : on) +
          (down.empty() ? "" : "; down: " + down);
 }
 
@@ -71,9 +71,9 @@ class Chain {
 
   double rest() const { return shots_.empty() ? 0.0 : shots_.back().rest; }
 
-  /// Adds one shot's simulation, struck from `shot` (whose balls `moved` were put where they stand
-  /// before it: placed or put back), starting at `offset`.
-  void add(SimulationResult r, const Scene& shot, const std::vector<char>& moved, double offset, int k) {
+  /// Adds shot k's simulation, starting at `offset`; its balls `moved` were put where they stand before
+  /// it (placed or put back), so they start a segment there.
+  void add(SimulationResult r, const std::vector<char>& moved, double offset, int k) {
     for (std::size_t i = 0; i < segments_.size(); ++i) {
       auto& list = r.segments[i];
       std::size_t first = 1;
@@ -96,7 +96,6 @@ class Chain {
       drops_.push_back(d);
     }
     shots_.push_back({offset, offset + kCueLeadTime, offset + r.rest});
-    (void)shot;
   }
 
   Timeline finish() {
@@ -201,7 +200,7 @@ PlayResult play(Scene& scene) {
         if (!heading) why = (k == 0 ? "" : shot_name + ": ") + aim.failure;
       }
       if (!heading) {
-        if (k > 0) why += "; " + where_balls_were(scene, shot.balls, k);
+        if (k > 0) why += "; " + where_balls_were(shot.balls, k);
         result.failure = PlayFailure{k, cue.loc, why};
         break;
       }
@@ -212,7 +211,7 @@ PlayResult play(Scene& scene) {
       strike_cue_ball(shot);
     }
     if (k == 0) scene.balls = shot.balls;  // the first shot's struck ball as struck
-    chain.add(simulate_events(shot), shot, moved, offset, k);
+    chain.add(simulate_events(shot), moved, offset, k);
   }
   result.timeline = chain.finish();
   return result;

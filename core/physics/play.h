@@ -20,7 +20,7 @@ inline constexpr double kHeadSpotY = 0.0;
 /// Why a shot could not be played: a `pot` with no heading from where the balls stopped, a `place`
 /// that puts a ball onto another.
 struct PlayFailure {
-  int shot = 0;  ///< from 0
+  int shot = 0;   ///< from 0
   SourceLoc loc;  ///< the line to blame: the shot's `cue` line, or a `place` line
   std::string message;
 };

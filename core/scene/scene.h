@@ -54,9 +54,9 @@ struct Stroke {
 /// A `place` line (extension) under a later shot's `cue` line: before that shot, ball `ball` is put at
 /// rest at `at`, or, without coordinates, where its `ball` line (or the rack) first put it.
 struct BallPlacement {
-  int ball = -1;  ///< file-order index
+  int ball = -1;           ///< file-order index
   std::optional<Vec3> at;  ///< m on the bed (z = ball radius), or none: the ball's starting place
-  SourceLoc loc;  ///< the `place` keyword
+  SourceLoc loc;           ///< the `place` keyword
   SourceLoc ball_loc, at_loc;
 };
 
@@ -72,7 +72,7 @@ struct Cue {
   int pot_pocket = -1;
   SourceLoc pot_ball_loc, pot_pocket_loc;
   bool aims() const { return pot_ball >= 0; }
-  std::optional<Stroke> stroke;  ///< the `stroke` line; without one the ball lines give the velocities
+  std::optional<Stroke> stroke;       ///< the `stroke` line; without one the ball lines give the velocities
   std::vector<BallPlacement> places;  ///< a later shot's `place` lines, in file order
 };
 

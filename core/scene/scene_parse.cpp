@@ -216,8 +216,8 @@ class Parser {
     if (in_camera_) return camera_entry();
     const Token& t = lexed_.tokens[pos_++];
     const std::string_view k = t.text;
-    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke" ||
-                             k == "place"))
+    if (options_.strict &&
+        (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke" || k == "place"))
       fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
     if (k == "cue") return cue(t);
     if (k == "ball") return ball(t);
@@ -259,8 +259,10 @@ class Parser {
       c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
     }
     if (map_.has_cue && options_.strict)
-      fail(keyword.loc, "several shots (a second 'cue' line) are an extension that --strict rejects; the first cue is "
-                        "on line " + std::to_string(scene_.cues.front().loc.line));
+      fail(keyword.loc,
+           "several shots (a second 'cue' line) are an extension that --strict rejects; the first cue is "
+           "on line " +
+               std::to_string(scene_.cues.front().loc.line));
     if (!map_.has_cue) scene_.cues.clear();  // the default cue of a scene built in code
     scene_.cues.push_back(c);
     map_.has_cue = true;
@@ -278,11 +280,14 @@ class Parser {
       const double y = number("the place's y in metres", &y_loc);
       p.at = Vec3(x, y, 0);
     }
-    if (!map_.has_cue) fail(keyword.loc, "expected the 'cue' line of the shot this place belongs to above it, found none");
+    if (!map_.has_cue)
+      fail(keyword.loc, "expected the 'cue' line of the shot this place belongs to above it, found none");
     Cue& cue = scene_.cues.back();
     if (scene_.cues.size() == 1)
-      fail(keyword.loc, "the first shot's balls stand where their 'ball' lines put them; 'place' belongs under a "
-                        "later 'cue' line (the cue on line " + std::to_string(cue.loc.line) + " is the first)");
+      fail(keyword.loc,
+           "the first shot's balls stand where their 'ball' lines put them; 'place' belongs under a "
+           "later 'cue' line (the cue on line " +
+               std::to_string(cue.loc.line) + " is the first)");
     for (const BallPlacement& other : cue.places)
       if (other.ball == p.ball)
         fail(p.ball_loc, "ball index " + std::to_string(p.ball) + " is already placed for this shot on line " +

@@ -118,12 +118,13 @@ class Validator {
   void later_shot(const Cue& cue) {
     if (&cue == &scene_.cues.front()) return;
     if (!cue.stroke)
-      error(cue.loc, "expected a 'stroke' line under this cue: a later shot is struck by its stroke (the 'ball' "
-                     "lines' velocities are the first shot's)");
+      error(cue.loc,
+            "expected a 'stroke' line under this cue: a later shot is struck by its stroke (the 'ball' "
+            "lines' velocities are the first shot's)");
     for (const BallPlacement& p : cue.places) {
       if (!ball_exists(p.ball)) {
-        error(p.ball_loc, "expected the index of the ball to place " + index_range() + ", found " +
-                              std::to_string(p.ball));
+        error(p.ball_loc,
+              "expected the index of the ball to place " + index_range() + ", found " + std::to_string(p.ball));
         continue;
       }
       if (!p.at) continue;
@@ -267,15 +268,15 @@ class Validator {
     const double vx = target.velocity.x(), vy = target.velocity.y();
     if (std::hypot(vx, vy) == 0) {
       warning(scene_.cue().target_loc, "the cue strikes ball index " + std::to_string(scene_.cue().target) +
-                                         ", whose velocity has no part along the table; the stick will not move it");
+                                           ", whose velocity has no part along the table; the stick will not move it");
       return;
     }
     const double along = std::atan2(vy, vx) * 180.0 / std::numbers::pi;
     double off = std::remainder(scene_.cue().heading_deg - along, 360.0);
     if (std::abs(off) > kHeadingToleranceDeg)
       warning(scene_.cue().heading_loc, "the cue's heading " + fmt(scene_.cue().heading_deg) +
-                                          " degrees disagrees with its ball's velocity, which points at " + fmt(along) +
-                                          " degrees (off by " + fmt(std::abs(off)) + " degrees)");
+                                            " degrees disagrees with its ball's velocity, which points at " +
+                                            fmt(along) + " degrees (off by " + fmt(std::abs(off)) + " degrees)");
   }
 
   const Scene& scene_;
