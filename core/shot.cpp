@@ -33,11 +33,15 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   } else {
     check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
     shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
-    if (const auto& stroke = shot->scene.cue().stroke; stroke && !shot->cue->clears())
-      result.diagnostics.push_back(
-          {Severity::warning, stroke->loc,
-           "the stick raised " + format_number(stroke->elevation_deg) +
-               " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
+    // Each shot's stroke that no elevation clears: a warning at that shot's `stroke` line.
+    for (const CueStroke& planned : shot->cue->strokes()) {
+      const auto& stroke = shot->scene.cues[static_cast<std::size_t>(planned.shot)].stroke;
+      if (stroke && !planned.clears)
+        result.diagnostics.push_back(
+            {Severity::warning, stroke->loc,
+             "the stick raised " + format_number(stroke->elevation_deg) +
+                 " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
+    }
   }
   result.shot = std::move(shot);
   return result;

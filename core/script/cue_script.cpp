@@ -34,6 +34,10 @@ constexpr double kFollowFraction = 0.5;
 constexpr double kApproachShare = 0.4, kStrokesShare = 0.4;
 /// s from the end of the follow-through to the stick's removal at the latest.
 constexpr double kRetractTime = 1.2;
+/// s, the least a retraction is cut to when the next shot starts soon after the strike.
+constexpr double kMinRetractTime = 0.2;
+/// s before the next shot's start by which a stroke's stick is removed (when the shot lasts long enough).
+constexpr double kLeaveMargin = 0.1;
 /// rad the stick swings up about the contact point while out of play.
 constexpr double kLift = 60.0 * kDegToRad;
 /// m behind the contact point tried for the out-of-play position, nearest first, until out of view.
@@ -46,64 +50,151 @@ constexpr int kMinElevationDeg = 5, kMaxElevationDeg = 75;
 constexpr double kHideStep = 1.0 / 240.0;
 
 double lerp(double a, double b, double f) { return a + (b - a) * f; }
-}  // namespace
 
-CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera)
-    : scene_(&scene), timeline_(&timeline), camera_(&camera) {
-  cue_time_ = timeline.cue_time();
-  const int target = scene.cue().target;
-  if (!(cue_time_ > 0) || target < 0 || target >= static_cast<int>(scene.balls.size())) return;
+/// The stick `behind` m behind the stroke's contact point along its axis, swung `lift` rad up about it.
+CuePose place(const CueStroke& s, double behind, double lift) {
+  const double angle = s.elevation + lift;
+  CuePose pose;
+  pose.axis = Vec3(-std::cos(angle) * s.heading.x(), -std::cos(angle) * s.heading.y(), std::sin(angle));
+  pose.tip = s.contact + behind * pose.axis;
+  pose.visible = true;
+  return pose;
+}
 
-  const double heading = scene.cue().heading_deg * kDegToRad;
-  heading_ = Vec3(std::cos(heading), std::sin(heading), 0);
-  double ball_speed = scene.ball(target).velocity.norm();
-  for (const Event& event : timeline.events()) {
-    if (event.type == EventType::cue && event.speed > 0) ball_speed = event.speed;
+/// The times that split a stroke's lead (its shot's start to the strike) into its parts.
+struct LeadTimes {
+  double forward = 0;          ///< s, the forward stroke begins
+  double approach_end = 0;     ///< s
+  double stroke = 0;           ///< s, one practice stroke
+  double backswing_begin = 0;  ///< s
+  double retract_begin = 0;    ///< s
+};
+
+LeadTimes lead_times(const CueStroke& s) {
+  LeadTimes l;
+  l.forward = s.cue_time - s.accel_time;
+  l.approach_end = s.start + kApproachShare * (l.forward - s.start);
+  l.stroke = 0.5 * kStrokesShare * (l.forward - s.start);
+  l.backswing_begin = l.approach_end + 2.0 * l.stroke;
+  l.retract_begin = s.cue_time + s.follow_time;
+  return l;
+}
+
+/// The stick of stroke `s` at time t (visible, whatever t).
+CuePose path(const CueStroke& s, double t) {
+  const LeadTimes l = lead_times(s);
+  if (t < l.approach_end) {
+    // Swung down and slid in from out of view; the swing ends before the slide so the tip arrives level.
+    const double u = (std::max(t, s.start) - s.start) / (l.approach_end - s.start);
+    return place(s, lerp(s.approach_from, kAddressGap, smooth(u)), kLift * (1.0 - smooth(u / 0.7)));
   }
-  ball_speed_ = ball_speed;
+  if (t < l.backswing_begin) {
+    const double w = std::sin(std::numbers::pi * (t - l.approach_end) / l.stroke);
+    return place(s, kAddressGap + s.amplitude * w * w, 0);
+  }
+  if (t < l.forward) {
+    const double u = (t - l.backswing_begin) / (l.forward - l.backswing_begin);
+    return place(s, lerp(kAddressGap, s.backswing, smooth(u)), 0);
+  }
+  if (t <= s.cue_time) {
+    // Measured back from the strike so the tip is exactly on the ball at the cue event.
+    const double before = s.cue_time - t;
+    return place(s, s.tip_speed * before - 0.5 * s.tip_speed / s.accel_time * before * before, 0);
+  }
+  if (t < l.retract_begin) {
+    const double after = t - s.cue_time;
+    return place(s, -(s.tip_speed * after - 0.5 * s.tip_speed / s.follow_time * after * after), 0);
+  }
+  // Slid back first, then swung up, so the part past the contact point never dips toward the bed.
+  const double u = std::min((t - l.retract_begin) / s.retract_time, 1.0);
+  return place(s, lerp(-s.follow, s.retract_to, smooth(u)), kLift * smooth((u - 0.3) / 0.7));
+}
+
+/// Plans one shot's stroke around its strike.
+class StrokePlanner {
+ public:
+  StrokePlanner(const Scene& scene, const Timeline& timeline, const CameraScript& camera, CueStroke& s)
+      : scene_(scene),
+        timeline_(timeline),
+        camera_(camera),
+        cue_(scene.cues[static_cast<std::size_t>(s.shot)]),
+        s_(s) {}
+
+  void plan();
+
+ private:
+  /// The lowest elevation from `lowest_deg` (whole degrees above it) that clears, else the one that
+  /// comes closest.
+  void choose_elevation(double lowest_deg);
+  /// m, where the tip's face centre meets the ball: on the axis through the centre, or with a stroke at
+  /// its offsets across the stick.
+  Vec3 tip_contact(const Vec3& centre, double radius) const;
+  /// The plan for one elevation: back-swing, forward stroke and follow-through.
+  void plan_stroke(double elevation);
+  /// m, the least gap to the balls at rest and the cushions over the stroke, at the planned elevation.
+  double stroke_clearance() const;
+  /// Whether the tip stays off the struck ball as it leaves.
+  bool follow_through_clear() const;
+  /// When the stick slides back and swings up, and when it is removed (once out of view).
+  void plan_retraction();
+
+  const Scene& scene_;
+  const Timeline& timeline_;
+  const CameraScript& camera_;
+  const Cue& cue_;
+  CueStroke& s_;
+};
+
+void StrokePlanner::plan() {
+  const double heading = cue_.heading_deg * kDegToRad;
+  s_.heading = Vec3(std::cos(heading), std::sin(heading), 0);
+  double ball_speed = timeline_.motion_state(s_.target, s_.cue_time).velocity.norm();
+  for (const Event& event : timeline_.events()) {
+    if (event.type == EventType::cue && event.shot == s_.shot && event.speed > 0) ball_speed = event.speed;
+  }
+  s_.ball_speed = ball_speed;
 
   // A stroke gives the elevation, raised only as far as the cushion and the balls need; else the seed's
   // shot takes the lowest that clears from kMinElevationDeg.
-  choose_elevation(scene.cue().stroke ? scene.cue().stroke->elevation_deg : kMinElevationDeg);
+  choose_elevation(cue_.stroke ? cue_.stroke->elevation_deg : kMinElevationDeg);
   // The struck ball must stay ahead of the tip (a very slow shot, or a velocity that disagrees with
   // the heading): shorten the follow-through until it does.
   for (int tries = 0; tries < 8 && !follow_through_clear(); ++tries) {
-    follow_ *= 0.5;
-    follow_time_ = 2.0 * follow_ / tip_speed_;
+    s_.follow *= 0.5;
+    s_.follow_time = 2.0 * s_.follow / s_.tip_speed;
   }
-  if (!follow_through_clear()) follow_ = follow_time_ = 0;
+  if (!follow_through_clear()) s_.follow = s_.follow_time = 0;
+  plan_retraction();
+}
 
-  const double forward = cue_time_ - accel_time_;
-  const double approach_end = kApproachShare * forward;
-  const double retract_begin = cue_time_ + follow_time_;
-  const double retract_end = retract_begin + kRetractTime;
+void StrokePlanner::plan_retraction() {
+  const double retract_begin = s_.cue_time + s_.follow_time;
+  // Gone before the next shot's start, so that shot's stick can come in from where its player stands.
+  s_.retract_time = kRetractTime;
+  if (s_.next_start >= 0)
+    s_.retract_time = std::clamp(s_.next_start - kLeaveMargin - retract_begin, kMinRetractTime, kRetractTime);
+  const double retract_end = retract_begin + s_.retract_time;
 
   // Out of play: the nearest swung-up position the camera cannot see at that moment.
   auto away = [&](double t) {
     for (double distance : kAwayDistances) {
-      if (!stick_in_view(place(distance, kLift), camera_->pose(t))) return distance;
+      if (!stick_in_view(place(s_, distance, kLift), camera_.pose(t))) return distance;
     }
     return kAwayDistances[std::size(kAwayDistances) - 1];
   };
-  approach_from_ = away(0.0);
-  retract_to_ = away(retract_end);
-  hide_time_ = retract_end;
+  s_.approach_from = away(s_.start);
+  s_.retract_to = away(retract_end);
+  s_.hide_time = retract_end;
   for (double t = retract_begin; t < retract_end; t += kHideStep) {
-    if (!stick_in_view(path(t), camera_->pose(t))) {
-      hide_time_ = t;
+    if (!stick_in_view(path(s_, t), camera_.pose(t))) {
+      s_.hide_time = t;
       break;
     }
   }
-
-  phases_ = {{CuePhase::approach, 0.0, approach_end},
-             {CuePhase::preflight, approach_end, forward},
-             {CuePhase::impact, forward, retract_begin},
-             {CuePhase::retraction, retract_begin, hide_time_}};
+  if (s_.next_start >= 0) s_.hide_time = std::min(s_.hide_time, s_.next_start);
 }
 
-double CueScript::elevation_deg() const { return elevation_ / kDegToRad; }
-
-void CueScript::choose_elevation(double lowest_deg) {
+void StrokePlanner::choose_elevation(double lowest_deg) {
   // The lowest elevation from lowest_deg whose stroke clears everything, else the one that comes closest.
   double best_gap = -std::numeric_limits<double>::infinity(), best = lowest_deg;
   for (double degrees = lowest_deg; degrees <= std::max<double>(kMaxElevationDeg, lowest_deg);
@@ -114,121 +205,113 @@ void CueScript::choose_elevation(double lowest_deg) {
     if (gap >= kClearance) break;
   }
   plan_stroke(best * kDegToRad);
-  clears_ = best_gap >= kClearance;
+  s_.clears = best_gap >= kClearance;
 }
 
-Vec3 CueScript::tip_contact(const Vec3& centre, double radius) const {
-  const Vec3 toward_butt = place(0, 0).axis;                      // the axis does not depend on the contact point
-  if (!scene_->cue().stroke) return centre + radius * toward_butt;  // through the ball's centre
+Vec3 StrokePlanner::tip_contact(const Vec3& centre, double radius) const {
+  const Vec3 toward_butt = place(s_, 0, 0).axis;           // the axis does not depend on the contact point
+  if (!cue_.stroke) return centre + radius * toward_butt;  // through the ball's centre
   // The stroke's offsets across the stick: side to the shooter's right, height up across the axis
   // (the frame of strike.h), so the tip touches the ball where the strike's impulse acts.
-  const Stroke& stroke = *scene_->cue().stroke;
+  const Stroke& stroke = *cue_.stroke;
   const Vec3 d = -toward_butt;
-  const Vec3 right(heading_.y(), -heading_.x(), 0);
+  const Vec3 right(s_.heading.y(), -s_.heading.x(), 0);
   const Vec3 up = right.cross(d);
   const double depth = std::sqrt(std::max(0.0, 1.0 - stroke.side * stroke.side - stroke.height * stroke.height));
   return centre + radius * (depth * toward_butt + stroke.side * right + stroke.height * up);
 }
 
-void CueScript::plan_stroke(double elevation) {
-  elevation_ = elevation;
-  // After the strike the ball leaves level at ball_speed_; a steep tip closing on it faster than
-  // ball_speed_ * cos(elevation) would follow it in, so steep strokes are slower.
-  tip_speed_ = std::max(std::min(ball_speed_ / kBallToTipSpeed, kSteepSpeedShare * ball_speed_ * std::cos(elevation)),
-                        kMinTipSpeed);
-  if (scene_->cue().stroke) tip_speed_ = scene_->cue().stroke->speed;  // the stroke's speed at impact
-  const Vec3 centre = scene_->balls[static_cast<std::size_t>(scene_->cue().target)].position;
-  contact_ = tip_contact(centre, timeline_->physics().ball_radius);
+void StrokePlanner::plan_stroke(double elevation) {
+  s_.elevation = elevation;
+  // After the strike the ball leaves level at ball_speed; a steep tip closing on it faster than
+  // ball_speed * cos(elevation) would follow it in, so steep strokes are slower.
+  s_.tip_speed = std::max(
+      std::min(s_.ball_speed / kBallToTipSpeed, kSteepSpeedShare * s_.ball_speed * std::cos(elevation)), kMinTipSpeed);
+  if (cue_.stroke) s_.tip_speed = cue_.stroke->speed;  // the stroke's speed at impact
+  // The struck ball where it stands at the strike (a later shot's: where the shot before left it).
+  const Vec3 centre = timeline_.motion_state(s_.target, s_.cue_time).position;
+  s_.contact = tip_contact(centre, timeline_.physics().ball_radius);
 
-  // Constant acceleration from rest at the back-swing to tip_speed_ at contact.
-  accel_time_ = kAccelTime;
-  backswing_ = std::clamp(0.5 * tip_speed_ * accel_time_, kMinBackswing, kMaxBackswing);
-  accel_time_ = std::min(2.0 * backswing_ / tip_speed_, 0.4 * cue_time_);
-  backswing_ = 0.5 * tip_speed_ * accel_time_;
+  // Constant acceleration from rest at the back-swing to tip_speed at contact.
+  const double lead = s_.cue_time - s_.start;
+  s_.backswing = std::clamp(0.5 * s_.tip_speed * kAccelTime, kMinBackswing, kMaxBackswing);
+  s_.accel_time = std::min(2.0 * s_.backswing / s_.tip_speed, 0.4 * lead);
+  s_.backswing = 0.5 * s_.tip_speed * s_.accel_time;
 
   // Constant deceleration after contact; the tip dips along the axis, so it must stop above the bed.
-  const double above_bed = contact_.z() - kCueTipRadius * std::cos(elevation) - kClearance;
-  follow_ = std::min({kMaxFollow, kFollowFraction * backswing_, above_bed / std::sin(elevation)});
-  follow_ = std::max(follow_, 0.0);
-  follow_time_ = 2.0 * follow_ / tip_speed_;
+  const double above_bed = s_.contact.z() - kCueTipRadius * std::cos(elevation) - kClearance;
+  s_.follow = std::min({kMaxFollow, kFollowFraction * s_.backswing, above_bed / std::sin(elevation)});
+  s_.follow = std::max(s_.follow, 0.0);
+  s_.follow_time = 2.0 * s_.follow / s_.tip_speed;
   // With a stroke the practice strokes grow with its speed too (a break is a long stroke, a touch a
   // short one); the seed's shots keep its fixed reach.
-  amplitude_ = scene_->cue().stroke ? std::clamp(0.5 * backswing_, kMinBackswing, kMaxFollow) : kStrokeAmplitude;
+  s_.amplitude = cue_.stroke ? std::clamp(0.5 * s_.backswing, kMinBackswing, kMaxFollow) : kStrokeAmplitude;
 }
 
-double CueScript::stroke_clearance() const {
-  const double radius = timeline_->physics().ball_radius;
-  // Before the strike every ball rests; the stick only slides along its line.
-  const std::vector<BallState> resting = timeline_->states(0);
-  const double farthest = std::max(backswing_, kAddressGap + amplitude_);
+double StrokePlanner::stroke_clearance() const {
+  const double radius = timeline_.physics().ball_radius;
+  // Before the strike every ball rests (a placed or put-back ball already in its place).
+  const std::vector<BallState> resting = timeline_.states(0.5 * (s_.start + s_.cue_time));
+  const double farthest = std::max(s_.backswing, kAddressGap + s_.amplitude);
   double gap = std::numeric_limits<double>::infinity();
   for (double behind = 0; behind <= farthest + 1e-9; behind += 0.005)
-    gap = std::min(gap, stick_clearance(place(behind, 0), *scene_, resting, radius, scene_->cue().target));
+    gap = std::min(gap, stick_clearance(place(s_, behind, 0), scene_, resting, radius, s_.target));
   // During the follow-through the struck ball leaves and the others may start to move.
   for (int i = 0; i <= 8; ++i) {
-    const double t = cue_time_ + follow_time_ * i / 8.0;
-    gap = std::min(gap, stick_clearance(path(t), *scene_, timeline_->states(t), radius, scene_->cue().target));
+    const double t = s_.cue_time + s_.follow_time * i / 8.0;
+    gap = std::min(gap, stick_clearance(path(s_, t), scene_, timeline_.states(t), radius, s_.target));
   }
   return gap;
 }
 
-bool CueScript::follow_through_clear() const {
-  const double radius = timeline_->physics().ball_radius;
-  const int target = scene_->cue().target;
+bool StrokePlanner::follow_through_clear() const {
+  const double radius = timeline_.physics().ball_radius;
   for (int i = 1; i <= 16; ++i) {
-    const double t = cue_time_ + follow_time_ * i / 16.0;
-    if (stick_ball_gap(path(t), timeline_->state(target, t).position, radius) < 0) return false;
+    const double t = s_.cue_time + s_.follow_time * i / 16.0;
+    if (stick_ball_gap(path(s_, t), timeline_.motion_state(s_.target, t).position, radius) < 0) return false;
   }
   return true;
 }
 
-CuePose CueScript::place(double behind, double lift) const {
-  const double angle = elevation_ + lift;
-  CuePose pose;
-  pose.axis = Vec3(-std::cos(angle) * heading_.x(), -std::cos(angle) * heading_.y(), std::sin(angle));
-  pose.tip = contact_ + behind * pose.axis;
-  pose.visible = true;
-  return pose;
+}  // namespace
+
+double CueStroke::elevation_deg() const { return elevation / kDegToRad; }
+
+CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera) : timeline_(&timeline) {
+  const std::vector<ShotSpan>& shots = timeline.shots();
+  stroke_of_shot_.assign(shots.size(), -1);
+  for (std::size_t k = 0; k < shots.size() && k < scene.cues.size(); ++k) {
+    CueStroke s;
+    s.shot = static_cast<int>(k);
+    s.target = scene.cues[k].target;
+    s.start = shots[k].start;
+    s.cue_time = shots[k].cue;
+    if (k + 1 < shots.size()) s.next_start = shots[k + 1].start;
+    if (!(s.cue_time > s.start) || s.target < 0 || s.target >= static_cast<int>(scene.balls.size())) continue;
+    StrokePlanner(scene, timeline, camera, s).plan();
+    stroke_of_shot_[k] = static_cast<int>(strokes_.size());
+    strokes_.push_back(s);
+    const LeadTimes l = lead_times(s);
+    phases_.push_back({CuePhase::approach, s.start, l.approach_end, s.shot});
+    phases_.push_back({CuePhase::preflight, l.approach_end, l.forward, s.shot});
+    phases_.push_back({CuePhase::impact, l.forward, l.retract_begin, s.shot});
+    phases_.push_back({CuePhase::retraction, l.retract_begin, s.hide_time, s.shot});
+  }
 }
 
-CuePose CueScript::path(double t) const {
-  const double forward = cue_time_ - accel_time_;
-  const double approach_end = kApproachShare * forward;
-  const double stroke = 0.5 * kStrokesShare * forward;
-  const double backswing_begin = approach_end + 2.0 * stroke;
-  const double retract_begin = cue_time_ + follow_time_;
-
-  if (t < approach_end) {
-    // Swung down and slid in from out of view; the swing ends before the slide so the tip arrives level.
-    const double u = std::max(t, 0.0) / approach_end;
-    return place(lerp(approach_from_, kAddressGap, smooth(u)), kLift * (1.0 - smooth(u / 0.7)));
-  }
-  if (t < backswing_begin) {
-    const double s = std::sin(std::numbers::pi * (t - approach_end) / stroke);
-    return place(kAddressGap + amplitude_ * s * s, 0);
-  }
-  if (t < forward) {
-    const double u = (t - backswing_begin) / (forward - backswing_begin);
-    return place(lerp(kAddressGap, backswing_, smooth(u)), 0);
-  }
-  if (t <= cue_time_) {
-    // Measured back from the strike so the tip is exactly on the ball at the cue event.
-    const double before = cue_time_ - t;
-    return place(tip_speed_ * before - 0.5 * tip_speed_ / accel_time_ * before * before, 0);
-  }
-  if (t < retract_begin) {
-    const double after = t - cue_time_;
-    return place(-(tip_speed_ * after - 0.5 * tip_speed_ / follow_time_ * after * after), 0);
-  }
-  // Slid back first, then swung up, so the part past the contact point never dips toward the bed.
-  const double u = std::min((t - retract_begin) / kRetractTime, 1.0);
-  return place(lerp(-follow_, retract_to_, smooth(u)), kLift * smooth((u - 0.3) / 0.7));
+const CueStroke& CueScript::first() const {
+  static const CueStroke kNone;
+  return strokes_.empty() ? kNone : strokes_.front();
 }
 
 CuePose CueScript::pose(double t) const {
-  if (phases_.empty()) return {};
-  CuePose pose = path(t);
-  pose.visible = t < hide_time_;
+  const int shot = timeline_->shot_at(t);
+  if (shot < 0 || shot >= static_cast<int>(stroke_of_shot_.size())) return {};
+  const int index = stroke_of_shot_[static_cast<std::size_t>(shot)];
+  if (index < 0) return {};
+  const CueStroke& s = strokes_[static_cast<std::size_t>(index)];
+  CuePose pose = path(s, t);
+  pose.visible = t < s.hide_time;
   return pose;
 }
 

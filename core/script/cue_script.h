@@ -1,5 +1,6 @@
 #pragma once
-// The scripted cue stick: approach, two practice strokes, the strike, retraction (the seed's four phases).
+// The scripted cue stick: for every shot of the scene, approach, two practice strokes, the strike and
+// retraction (the seed's four phases), the stick leaving after each stroke and coming back for the next.
 #include <vector>
 
 #include "camera_script.h"
@@ -15,6 +16,32 @@ struct CuePhaseSpan {
   CuePhase phase = CuePhase::approach;
   double begin = 0;  ///< s
   double end = 0;    ///< s
+  int shot = 0;      ///< the shot whose stroke it is, from 0 (Timeline::shots())
+};
+
+/// One shot's stroke as the stick plays it: where and how it strikes and the timing of its phases.
+struct CueStroke {
+  int shot = 0;              ///< from 0 (Timeline::shots(), Scene::cues)
+  int target = 0;            ///< file-order index of the struck ball
+  double start = 0;          ///< s, the shot's start: the stick comes in from here
+  double cue_time = 0;       ///< s, the strike
+  double next_start = -1;    ///< s, the next shot's start (the stick is gone by then); -1 for the last shot
+  Vec3 contact{0, 0, 0};     ///< m, where the tip meets the struck ball (the ball as it stands at the strike)
+  Vec3 heading{1, 0, 0};     ///< unit, horizontal: the direction the stick pushes
+  double elevation = 0;      ///< rad
+  double ball_speed = 0;     ///< m/s the strike gives the ball
+  double tip_speed = 0;      ///< m/s at contact
+  double backswing = 0;      ///< m behind the contact point where the forward stroke starts
+  double follow = 0;         ///< m past the contact point where the tip stops
+  double accel_time = 0;     ///< s of the forward stroke
+  double follow_time = 0;    ///< s of the follow-through
+  double retract_time = 0;   ///< s of the retraction at most (shorter when the next shot starts sooner)
+  double approach_from = 0;  ///< m behind the contact point at the start (swung up, out of view)
+  double retract_to = 0;     ///< m behind the contact point at the end of retraction
+  double hide_time = 0;      ///< s, the stick is removed from here on
+  double amplitude = 0;      ///< m, reach of the practice strokes
+  bool clears = true;        ///< see CueScript::clears()
+  double elevation_deg() const;
 };
 
 class CueScript {
@@ -22,59 +49,35 @@ class CueScript {
   /// `scene`, `timeline` and `camera` must outlive the script.
   CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera);
 
+  /// The stick at time t: the pose of the stroke of the shot under way (Timeline::shot_at), hidden
+  /// between one stroke's removal and the next shot's start.
   CuePose pose(double t) const;
-  /// Approach, preflight (two strokes and the back-swing), impact (forward stroke and follow-through),
-  /// retraction (ends when the stick is removed). Empty when the shot has no cue strike.
+  /// Every shot's approach, preflight (two strokes and the back-swing), impact (forward stroke and
+  /// follow-through), retraction (ends when the stick is removed), in time order, four per stroke.
+  /// Empty when the scene has no cue strike.
   const std::vector<CuePhaseSpan>& phases() const { return phases_; }
+  /// The strokes, one per shot the stick plays, in shot order.
+  const std::vector<CueStroke>& strokes() const { return strokes_; }
 
+  /// The first shot's stroke (the one-shot accessors below read it); a default one without strokes.
+  const CueStroke& first() const;
   /// m, where the tip meets the struck ball: where the stick's axis enters its surface.
-  const Vec3& contact_point() const { return contact_; }
+  const Vec3& contact_point() const { return first().contact; }
   /// deg the butt is raised above the horizontal: from the stroke's (or 5 without one) up, the least that
   /// clears the cushions and balls.
-  double elevation_deg() const;
+  double elevation_deg() const { return first().elevation_deg(); }
   /// m/s, the tip's speed at the strike: the stroke's speed when the scene has a stroke.
-  double tip_speed() const { return tip_speed_; }
+  double tip_speed() const { return first().tip_speed; }
   /// Whether the stick's stroke keeps clear of every ball and cushion at elevation_deg(): the stroke's
   /// elevation, or the least above it that clears (a level stroke is drawn raised over the cushion;
   /// the strike keeps the stroke's elevation); false when no elevation clears.
-  bool clears() const { return clears_; }
+  bool clears() const { return first().clears; }
 
  private:
-  /// The stick `behind` m behind the contact point along its axis, swung `lift` rad up about it.
-  CuePose place(double behind, double lift) const;
-  /// The lowest elevation from `lowest_deg` (whole degrees above it) that clears, else the one that
-  /// comes closest.
-  void choose_elevation(double lowest_deg);
-  /// m, where the tip's face centre meets the ball: on the axis through the centre, or with a stroke at
-  /// its offsets across the stick.
-  Vec3 tip_contact(const Vec3& centre, double radius) const;
-  /// The plan for one elevation: back-swing, forward stroke and follow-through.
-  void plan_stroke(double elevation);
-  /// m, the least gap to the balls at rest and the cushions over the stroke, at the planned elevation.
-  double stroke_clearance() const;
-  /// Whether the tip stays off the struck ball as it leaves.
-  bool follow_through_clear() const;
-  CuePose path(double t) const;
-
-  const Scene* scene_ = nullptr;
   const Timeline* timeline_ = nullptr;
-  const CameraScript* camera_ = nullptr;
   std::vector<CuePhaseSpan> phases_;
-  Vec3 contact_{0, 0, 0};     ///< m
-  Vec3 heading_{1, 0, 0};     ///< unit, horizontal: the direction the stick pushes
-  double elevation_ = 0;      ///< rad
-  double cue_time_ = 0;       ///< s
-  double ball_speed_ = 0;     ///< m/s the strike gives the ball
-  double tip_speed_ = 0;      ///< m/s at contact
-  double backswing_ = 0;      ///< m behind the contact point where the forward stroke starts
-  double follow_ = 0;         ///< m past the contact point where the tip stops
-  double accel_time_ = 0;     ///< s of the forward stroke
-  double follow_time_ = 0;    ///< s of the follow-through
-  double approach_from_ = 0;  ///< m behind the contact point at the start (swung up, out of view)
-  double retract_to_ = 0;     ///< m behind the contact point at the end of retraction
-  double hide_time_ = 0;      ///< s, the stick is removed from here on
-  double amplitude_ = 0;      ///< m, reach of the practice strokes
-  bool clears_ = true;
+  std::vector<CueStroke> strokes_;
+  std::vector<int> stroke_of_shot_;  ///< per shot, its index in strokes_, or -1 when the stick does not play it
 };
 
 }  // namespace bsim

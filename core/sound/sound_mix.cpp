@@ -123,9 +123,14 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
     // The tip's click follows the stick: with a stroke, at the ball speed a centre hit at the stroke's
     // speed gives (so an off-centre hit clicks as loud as a centre one of the same stroke).
     double speed = e.speed;
-    if (e.type == EventType::cue && shot.scene.cue().stroke) {
+    // Each shot's click follows its own cue's stroke.
+    const auto shot_index = static_cast<std::size_t>(std::max(e.shot, 0));
+    const Stroke* stroke = nullptr;
+    if (shot_index < shot.scene.cues.size() && shot.scene.cues[shot_index].stroke)
+      stroke = &*shot.scene.cues[shot_index].stroke;
+    if (e.type == EventType::cue && stroke) {
       const PhysicsParams& p = shot.scene.physics;
-      speed = (1 + p.e_tip) * shot.scene.cue().stroke->speed / (1 + p.ball_mass / p.cue_mass);
+      speed = (1 + p.e_tip) * stroke->speed / (1 + p.ball_mass / p.cue_mass);
     }
     cues.push_back(event_cue(shot, kind, e.time, speed, e.where, cue_seed(kind, e.index, ball)));
   }

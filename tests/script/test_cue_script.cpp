@@ -1,10 +1,12 @@
 // The cue stick's four phases on simulated shots: the strike lands exactly at the cue event, two
-// practice strokes, removal out of view, and no contact with the bed, the cushions or other balls.
+// practice strokes, removal out of view, and no contact with the bed, the cushions or other balls;
+// in a scene of several shots, every shot's stick comes in, strikes and leaves.
 #include <doctest/doctest.h>
 #include <cmath>
 #include <string>
 
 #include "cue_geometry.h"
+#include "files.h"
 #include "shot.h"
 #include "shots.h"
 #include "timeline.h"
@@ -281,5 +283,132 @@ TEST_SUITE("cue_script: the stick tells the stroke") {
       warned = warned || (d.severity == Severity::warning && d.loc.line == 2 && d.loc.column == 1 &&
                           d.message.find("no pose clears") != std::string::npos);
     CHECK(warned);
+  }
+}
+
+TEST_SUITE("cue_script: several shots") {
+  /// tests/scene/three_shots.scn: the cue ball struck three times, each aimed from where it stopped.
+  std::unique_ptr<Shot> three_shots() {
+    const std::optional<std::string> text = test::read_file(test::source_path("tests/scene/three_shots.scn"));
+    REQUIRE(text);
+    return load(*text);
+  }
+
+  TEST_CASE("every shot's tip meets its struck ball where it stands at that shot's strike, along that cue's heading") {
+    const auto shot = three_shots();
+    const CueScript& cue = *shot->cue;
+    const auto& shots = shot->timeline.shots();
+    REQUIRE(shots.size() == 3);
+    REQUIRE(cue.strokes().size() == 3);
+    for (std::size_t k = 0; k < shots.size(); ++k) {
+      CAPTURE(k);
+      const Cue& written = shot->scene.cues[k];
+      const double strike = shots[k].cue;
+      const Vec3 centre = shot->timeline.state(written.target, strike).position;
+      if (k > 0) CHECK((centre - shot->scene.balls[0].position).norm() > 0.1);  // the ball has moved since
+      const CuePose at = cue.pose(strike);
+      CHECK(at.visible);
+      // On the ball's surface (within a millimetre; the script puts it there exactly).
+      CHECK(std::abs((at.tip - centre).norm() - kR) < 1e-3);
+      CHECK((at.tip - cue.strokes()[k].contact).norm() < 1e-3);
+      // A level stroke (`stroke V A B 0`) at A = 0 or B = 0: the axis passes the centre at the offset.
+      CHECK(at.axis.z() > 0);
+      const double heading = std::atan2(-at.axis.y(), -at.axis.x()) / kDegToRad;
+      CHECK(std::abs(std::remainder(heading - written.heading_deg, 360.0)) < 1e-9);
+      // The tip arrives at the shot's stroke speed (2, 2.2 and 2.2 m/s in the file).
+      const double h = 1e-6;
+      const Vec3 moved = cue.pose(strike).tip - cue.pose(strike - h).tip;
+      CHECK(moved.norm() / h == doctest::Approx(written.stroke->speed).epsilon(1e-4));
+      // Never on the ball before its strike, from the shot's start.
+      for (double t = shots[k].start; t < strike - 1e-6; t += 1.0 / 120)
+        CHECK(stick_ball_gap(cue.pose(t), centre, kR) > 0);
+    }
+  }
+
+  TEST_CASE("the stick leaves after each stroke and comes back out of view for the next") {
+    const auto shot = three_shots();
+    const CueScript& cue = *shot->cue;
+    const auto& shots = shot->timeline.shots();
+    const auto& phases = cue.phases();
+    REQUIRE(phases.size() == 12);
+    for (std::size_t i = 0; i < phases.size(); ++i) {
+      CAPTURE(i);
+      CHECK(phases[i].shot == static_cast<int>(i / 4));
+      CHECK(static_cast<int>(phases[i].phase) == static_cast<int>(i % 4));
+      CHECK(phases[i].end >= phases[i].begin);
+      if (i > 0) CHECK(phases[i].begin >= phases[i - 1].end);
+    }
+    for (std::size_t k = 0; k < shots.size(); ++k) {
+      CAPTURE(k);
+      const double start = shots[k].start;
+      CHECK(phases[4 * k].begin == start);
+      // The approach and strokes take the same share of the 2.5 s lead as the first shot's.
+      CHECK(phases[4 * k].end - start == test::near(phases[0].end, 1e-9));
+      CHECK(phases[4 * k + 1].end < shots[k].cue);
+      CHECK(phases[4 * k + 2].end > shots[k].cue);
+      // It comes in from where the camera cannot see it.
+      CHECK_FALSE(stick_in_view(cue.pose(start), shot->camera->pose(start)));
+      if (k == 0) continue;
+      // The stroke before was removed before this shot's start, and nothing shows in between.
+      CHECK(phases[4 * k - 1].end < start);
+      for (double t = phases[4 * k - 1].end; t < start; t += 0.05) CHECK_FALSE(cue.pose(t).visible);
+      CHECK_FALSE(cue.pose(start - 1e-3).visible);
+    }
+  }
+
+  TEST_CASE("across the whole scene the stick never passes through a ball, a cushion or the bed") {
+    const auto shot = three_shots();
+    const auto& shots = shot->timeline.shots();
+    // Sampled over the whole scene while the stick is seen, each strike's instant included.
+    std::vector<double> times;
+    for (double t = 0; t <= shot->timeline.duration(); t += 1.0 / 120) times.push_back(t);
+    for (const ShotSpan& span : shots) times.push_back(span.cue);
+    double worst = 1e9;
+    for (double t : times) {
+      const CuePose pose = shot->cue->pose(t);
+      if (!pose.visible) continue;
+      const int k = shot->timeline.shot_at(t);
+      const Cue& written = shot->scene.cues[static_cast<std::size_t>(k)];
+      const bool strike = std::abs(t - shots[static_cast<std::size_t>(k)].cue) < 1e-6;
+      // At the strike the tip's flat face touches the struck ball at the stroke's offset, its centre
+      // on the surface: the face's rim then reaches in at most the tip's radius times the offset's
+      // sine, sqrt(A^2 + B^2) (0.2 here: 1.3 mm), which the leather's give takes up. The rest clears.
+      worst = std::min(worst,
+                       stick_clearance(pose, shot->scene, shot->timeline.states(t), kR, strike ? written.target : -1));
+      if (strike) {
+        const double offset = std::hypot(written.stroke->side, written.stroke->height);
+        const Vec3 centre = shot->timeline.state(written.target, t).position;
+        CHECK(stick_ball_gap(pose, centre, kR) >= -kCueTipRadius * offset - 1e-9);
+      }
+    }
+    CHECK(worst >= -1e-9);
+    // Continuous within each stroke.
+    for (const CuePhaseSpan& span : shot->cue->phases()) {
+      const double edge = span.end;
+      CHECK((shot->cue->pose(edge - 1e-9).tip - shot->cue->pose(edge + 1e-9).tip).norm() < 1e-6);
+    }
+  }
+
+  TEST_CASE("a later shot's stroke that no elevation clears: a warning at that shot's stroke") {
+    // The first shot sends ball 0 away up the table; the second strikes ball 1, a wall half a metre
+    // high just behind it.
+    const ShotResult loaded = load_shot(
+        "ball 0 0.5 0.3 0.028575 0 0 0 1 0 0 0\n"
+        "ball 1 -0.6 0 0.028575 0 0 0 1 0 0 0\n"
+        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5\n"
+        "cue 0 90\nstroke 0.5 0 0 30\n"
+        "cue 1 0\nstroke 1 0 0 0\n" +
+            kCamera,
+        "t", {}, CameraChoice::scene);
+    REQUIRE(loaded.shot);
+    int warnings = 0;
+    bool at_second = false;
+    for (const Diagnostic& d : loaded.diagnostics) {
+      if (d.severity != Severity::warning || d.message.find("no pose clears") == std::string::npos) continue;
+      ++warnings;
+      at_second = at_second || (d.loc.line == 7 && d.loc.column == 1);
+    }
+    CHECK(warnings == 1);
+    CHECK(at_second);
   }
 }

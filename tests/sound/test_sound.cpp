@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "builtin_scene.h"
+#include "files.h"
 #include "fixtures.h"
 #include "hertz.h"
 #include "loudness.h"
@@ -633,5 +634,38 @@ TEST_SUITE("sound: the tip's click follows the stroke") {
     CHECK(cue_click_speed("4 0 0 0") == test::near(2 * 2.661608, 2e-6));
     CHECK(impact_gain(SoundKind::cue, cue_click_speed("4 0 0 0")) >
           impact_gain(SoundKind::cue, cue_click_speed("2 0 0 0")));
+  }
+}
+
+TEST_SUITE("sound: a scene of several shots") {
+  TEST_CASE("every shot's strike clicks at its own time and stroke, and the room runs on between shots") {
+    const std::optional<std::string> text = test::read_file(test::source_path("tests/scene/three_shots.scn"));
+    REQUIRE(text);
+    const auto shot = test::load_scene(*text, "three_shots");
+    REQUIRE(shot->camera);
+    const auto& shots = shot->timeline.shots();
+    REQUIRE(shots.size() == 3);
+    std::vector<SoundCue> clicks;
+    for (const SoundCue& c : sound_cues({shot->scene, shot->timeline, *shot->camera}))
+      if (c.kind == SoundKind::cue) clicks.push_back(c);
+    REQUIRE(clicks.size() == 3);
+    // The strokes are 2, 2.2 and 2.2 m/s: a centre hit's ball speed 1.75 V / (1 + 0.170097 / 0.54)
+    // (TP A-30), 2.661608 and 2.927769 m/s.
+    const double ball_speed[] = {2.661608, 2.927769, 2.927769};
+    for (std::size_t k = 0; k < 3; ++k) {
+      CAPTURE(k);
+      CHECK(clicks[k].time == shots[k].cue);
+      CHECK(clicks[k].speed == test::near(ball_speed[k], 1e-5));
+    }
+    // On the track: each strike stands out of the quiet before it, and no stretch of it is silent
+    // (the room's tone goes on between the shots).
+    const AudioBuffer audio = track_of(*shot);
+    CHECK(audio.left.size() == static_cast<std::size_t>(std::llround(shot->timeline.duration() * kSampleRate)));
+    for (const ShotSpan& span : shots) {
+      CAPTURE(span.cue);
+      CHECK(std::abs(onset_near(audio, span.cue) - span.cue) <= 0.002);
+      CHECK(peak(audio, span.cue + 0.001, span.cue + 0.006) > 4 * peak(audio, span.cue - 0.012, span.cue - 0.003));
+    }
+    CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
   }
 }
