@@ -138,6 +138,11 @@ TEST_SUITE("preview snapshots") {
     REQUIRE(run_command(preview(scene + " --at " + seconds.str() + " --overlay aim --size 160x90 -o " + by_time))
                 .exit_code == 0);
     CHECK(require_file(by_shot) == require_file(by_time));
+    // The aim overlay draws shot 2's aim at shot 2's strike (the first shot's aim ended at its first
+    // contact): the picture differs from the one without it.
+    const std::string bare = (dir.path / "bare.png").string();
+    REQUIRE(run_command(preview(scene + " --at shot:2 --size 160x90 -o " + bare)).exit_code == 0);
+    CHECK(require_file(bare) != require_file(by_shot));
     // Shot 1's strike is another picture (the balls are elsewhere).
     const std::string first = (dir.path / "f.png").string();
     REQUIRE(run_command(preview(scene + " --at shot:1 --overlay aim --size 160x90 -o " + first)).exit_code == 0);
