@@ -111,7 +111,12 @@ void event_list(ViewerState& state, float window_height) {
     const Event* current = nullptr;
     for (const Event& e : state.shot->timeline.events())
       if (e.time <= state.time + 1e-9) current = &e;
+    int listed_shot = state.shot_count() > 1 ? -1 : 0;
     for (const Event& e : state.shot->timeline.events()) {
+      if (e.shot != listed_shot) {  // a scene of several shots: each shot's events under its name
+        listed_shot = e.shot;
+        ImGui::TextDisabled("shot %d", e.shot + 1);
+      }
       char label[160];
       std::snprintf(label, sizeof label, "%3d  %7.3f s  %s", e.index, e.time,
                     event_label(e, state.timeline.painted).c_str());
