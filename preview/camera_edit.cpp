@@ -135,6 +135,8 @@ CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* exist
   }
   // The eye as the follow camera's offset: ahead, left and up in the ball's frame at time t.
   std::optional<double> heading;
+  // The track the camera script builds for this ball (camera_script.cpp), so the offset written puts the
+  // eye where it is now: its heading at rest is the first shot's, also in a scene of several shots.
   if (placement.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
   const BallTrack track(timeline, placement.ball, heading);
   const Vec3 ahead = track.heading(t), left(-ahead.y(), ahead.x(), 0), from = placement.eye - track.position(t);

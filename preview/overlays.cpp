@@ -408,10 +408,10 @@ void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
 
 namespace {
 
-/// The first ball-ball event in which balls a and b both take part, or null.
-const Event* first_meeting(const Timeline& timeline, int a, int b) {
+/// The first ball-ball event of shot `shot` (from 0) in which balls a and b both take part, or null.
+const Event* first_meeting(const Timeline& timeline, int a, int b, int shot) {
   for (const Event& e : timeline.events()) {
-    if (e.type != EventType::ball_ball) continue;
+    if (e.type != EventType::ball_ball || e.shot != shot) continue;
     const bool has_a = std::find(e.balls.begin(), e.balls.end(), a) != e.balls.end();
     if (has_a && std::find(e.balls.begin(), e.balls.end(), b) != e.balls.end()) return &e;
   }
@@ -433,26 +433,34 @@ void draw_ring(ImDrawList& list, const Projector& project, const Vec3& centre, d
 
 void draw_aim(ImDrawList& list, const OverlayFrame& f) {
   const Scene& scene = f.shot.scene;
-  if (!scene.cue().aims()) return;
   const Timeline& timeline = f.shot.timeline;
-  const int struck = scene.cue().target, target = scene.cue().pot_ball;
-  const Event* meeting = first_meeting(timeline, struck, target);
+  // The shot in play at this time: its cue, and the balls where that shot found them.
+  const int shot = std::clamp(timeline.shot_at(f.time), 0, std::max(scene.shot_count() - 1, 0));
+  if (scene.cues.empty() || !scene.cues[static_cast<std::size_t>(shot)].aims()) return;
+  const Cue& cue = scene.cues[static_cast<std::size_t>(shot)];
+  const int struck = cue.target, target = cue.pot_ball;
+  const Event* meeting = first_meeting(timeline, struck, target, shot);
   if (!meeting || f.time >= meeting->time) return;
   const std::size_t k = static_cast<std::size_t>(std::find(meeting->balls.begin(), meeting->balls.end(), struck) -
                                                  meeting->balls.begin());
   const double R = scene.physics.ball_radius;
   const auto on_bed = [](Vec3 p, double z) { return Vec3(p.x(), p.y(), z); };
+  // The first shot from the scene's own lines; a later one from where the shot before left the balls.
+  const double strike = shot == 0 ? 0.0 : timeline.shots()[static_cast<std::size_t>(shot)].cue;
+  const auto where = [&](int b) {
+    return shot == 0 ? scene.ball(b).position : timeline.motion_state(b, strike).position;
+  };
   const Vec3 ghost = on_bed(meeting->before[k].position, R);
-  const Vec3 from = on_bed(scene.ball(struck).position, 0.002);
-  const Vec3 ball = on_bed(scene.ball(target).position, 0.002);
-  const Vec3 pocket = on_bed(scene.pockets[static_cast<std::size_t>(scene.cue().pot_pocket)].center, 0.002);
+  const Vec3 from = on_bed(where(struck), 0.002);
+  const Vec3 ball = on_bed(where(target), 0.002);
+  const Vec3 pocket = on_bed(scene.pockets[static_cast<std::size_t>(cue.pot_pocket)].center, 0.002);
   const Projector project = projector(f);
   const float scale = ui_scale(f);
   // The struck ball's way to the ghost ball as played (curving with swerve), then the ghost ball.
   std::vector<Vec3> way;
   if (f.paths)
     for (const auto& p : f.paths->balls[static_cast<std::size_t>(struck)])
-      if (p.time <= meeting->time) way.push_back(on_bed(p.where, 0.002));
+      if (p.time >= strike && p.time <= meeting->time) way.push_back(on_bed(p.where, 0.002));
   if (way.empty()) way.push_back(from);
   way.push_back(on_bed(ghost, 0.002));
   draw_projected_path(list, project, way, IM_COL32(255, 255, 255, 200), 2.f * scale);

@@ -46,6 +46,12 @@ bool parse_time(const std::string& text, TimeSpec& at) {
     at = {0, *n};
     return true;
   }
+  if (text.starts_with("shot:")) {
+    const auto k = parse_int_option(std::string_view(text).substr(5), 1, 65535);
+    if (!k) return false;
+    at = {0, -1, *k};
+    return true;
+  }
   const auto seconds = parse_real_option(text);
   if (!seconds || *seconds < 0) return false;
   at = {*seconds, -1};
@@ -153,12 +159,13 @@ bool check_combination(PreviewOptions& o, std::string& message) {
 OptionTable preview_option_table(PreviewOptions& o) {
   using S = const std::string&;
   return {
-      {"--at", "SECONDS|event:N",
-       "write the frame at this time, or at the instant of event N (needs -o);\n"
-       "give it several times for one picture per time",
+      {"--at", "SECONDS|event:N|shot:K",
+       "write the frame at this time, at the instant of event N, or at shot K's\n"
+       "strike (needs -o); give it several times for one picture per time",
        [&o](S n, S v, std::string& m) {
          TimeSpec at;
-         if (!parse_time(v, at)) return bad(m, n, v, "seconds from 0 (e.g. 2.5) or event:N (e.g. event:3)");
+         if (!parse_time(v, at))
+           return bad(m, n, v, "seconds from 0 (e.g. 2.5), event:N (e.g. event:3) or shot:K from 1 (e.g. shot:2)");
          o.at.push_back(at);
          return true;
        }},
@@ -166,8 +173,8 @@ OptionTable preview_option_table(PreviewOptions& o) {
        [&o](S, S, std::string&) { return o.timeline = true; }},
       {"-o, --output", "FILE.png",
        "the picture --at or --timeline writes; for several --at, a directory\n"
-       "(DIR/: pictures at_2.500.png, at_event_3.png) or a name with %t\n"
-       "(shot_%t.png: shot_2.500.png, shot_event_3.png)",
+       "(DIR/: pictures at_2.500.png, at_event_3.png, at_shot_2.png) or a name\n"
+       "with %t (shot_%t.png: shot_2.500.png, shot_event_3.png)",
        store_file(o.output)},
       {"--movie", "FILE.mp4", "write the animatic: the whole shot at preview quality", store_file(o.movie)},
       {"--size",
@@ -220,6 +227,7 @@ OptionTable preview_option_table(PreviewOptions& o) {
 
 std::string time_label(const TimeSpec& at) {
   if (at.event >= 0) return "event_" + std::to_string(at.event);
+  if (at.shot >= 1) return "shot_" + std::to_string(at.shot);
   char text[64];
   std::snprintf(text, sizeof text, "%.3f", at.seconds);
   return text;

@@ -8,14 +8,15 @@
 
 namespace bsim {
 
-/// What the user asked to see: a time in seconds or the instant of event N.
+/// What the user asked to see: a time in seconds, the instant of event N or shot K's strike.
 struct TimeSpec {
   double seconds = 0;
   int event = -1;  ///< >= 0 when given as `event:N`
+  int shot = 0;    ///< >= 1 when given as `shot:K` (counted from 1, as in `shot K` camera keys)
 };
 
 /// How a time names its picture when -o is a directory or a pattern: the seconds to three decimals
-/// ("2.500") or "event_N".
+/// ("2.500"), "event_N" or "shot_K".
 std::string time_label(const TimeSpec& at);
 
 struct PreviewOverlays {
@@ -32,7 +33,7 @@ struct PreviewOverlays {
 struct PreviewOptions : SharedOptions {
   std::optional<std::string> scene_path;   ///< none: the built-in break
   std::optional<std::string> output;       ///< -o FILE.png, DIR/ or a pattern with %t (for --at)
-  std::vector<TimeSpec> at;                ///< each --at SECONDS | event:N, in command-line order
+  std::vector<TimeSpec> at;                ///< each --at SECONDS | event:N | shot:K, in command-line order
   std::vector<std::string> pictures;       ///< set by the parser: the file each --at writes, in the same order
   std::optional<std::string> picture_dir;  ///< set by the parser when -o names a directory (made if missing)
   bool timeline = false;                   ///< --timeline

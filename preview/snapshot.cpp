@@ -22,6 +22,16 @@ constexpr int kTimelineWidth = 1600, kTimelineMinHeight = 360, kTimelineMaxHeigh
 }  // namespace
 
 std::optional<double> resolve_time(const TimeSpec& at, const Timeline& timeline, std::string& error) {
+  if (at.shot >= 1) {
+    const int shots = timeline.shot_count();
+    if (at.shot > shots) {
+      error = "--at shot:" + std::to_string(at.shot) + ": this scene has " + std::to_string(shots) +
+              (shots == 1 ? " shot, numbered 1" : " shots, numbered 1 to " + std::to_string(shots)) +
+              " (one per cue line)";
+      return std::nullopt;
+    }
+    return timeline.shots()[static_cast<std::size_t>(at.shot - 1)].cue;
+  }
   if (at.event < 0) return std::clamp(at.seconds, 0.0, timeline.duration());
   const auto count = static_cast<int>(timeline.events().size());
   if (at.event >= count) {
@@ -43,7 +53,7 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
       std::cerr << "billiards-preview: " << error << "\n";
       return 2;
     }
-    if (at.event < 0 && at.seconds > shot.timeline.duration())
+    if (at.event < 0 && at.shot < 1 && at.seconds > shot.timeline.duration())
       std::cerr << "billiards-preview: warning: --at " << at.seconds << " is after the end of the shot; showing "
                 << shot.timeline.duration() << " s\n";
     times.push_back(*t);
@@ -90,8 +100,8 @@ int run_timeline_picture(const PreviewOptions& options, const TimelineData& data
   // camera script that failed, its errors and each description's second line.
   const int rows = (static_cast<int>(data.events.size()) + 4) / 5;
   const int errors = static_cast<int>(data.script_errors.size());
-  // The stroke's ball diagram makes the title about 40 px taller.
-  const int extra = (errors > 0 ? 60 + errors * 17 : 0) + (data.stroke ? 40 : 0);
+  // The stroke's ball diagram makes the title about 40 px taller; the band of a scene's shots adds about 60.
+  const int extra = (errors > 0 ? 60 + errors * 17 : 0) + (data.stroke ? 40 : 0) + (data.shots.empty() ? 0 : 60);
   const int width = options.size_given ? options.width : kTimelineWidth;
   const int height =
       options.size_given ? options.height : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);

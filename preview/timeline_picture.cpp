@@ -30,6 +30,15 @@ constexpr ImU32 kWindowEdge = IM_COL32(255, 255, 255, 90);
 constexpr ImU32 kCursor = IM_COL32(255, 70, 70, 255);
 constexpr ImU32 kError = IM_COL32(226, 40, 40, 255);
 constexpr ImU32 kErrorText = IM_COL32(255, 120, 110, 255);
+constexpr ImU32 kSectionEven = IM_COL32(44, 50, 64, 255);
+constexpr ImU32 kSectionOdd = IM_COL32(36, 40, 50, 255);
+constexpr ImU32 kSeparator = IM_COL32(240, 200, 110, 220);
+
+/// px the band of shot sections needs: the shot's name, two lines of detail, or the stroke's diagram.
+float sections_height(const UiFonts& fonts, const TimelineData& data) {
+  if (data.shots.empty()) return 0;
+  return std::max(fonts.bold_size + 2 * fonts.small_size + 8, stroke_diagram_size(fonts).y) + 8;
+}
 
 ImVec2 text_size(ImFont* font, float size, const std::string& text) {
   return font->CalcTextSizeA(size, FLT_MAX, 0, text.c_str());
@@ -80,15 +89,17 @@ struct RowLayout {
   static constexpr float kEventsExtra = 6, kDropsExtra = 8, kCueExtra = 6, kAxisExtra = 8;
   static constexpr float kGap = 2;
 
-  float small = 0;          ///< px, the small text the rows are measured in
-  float pad = 0;            ///< px, the picture's spacing unit
-  float top_margin = 0;     ///< px above the title, or above the rows when compact
-  float label_height = 0;   ///< px, one level of event numbers
-  float camera_height = 0;  ///< px of the camera band
-  float lane = 0;           ///< px at the bottom of the camera band for the labels too long for their bar
+  float sections_height = 0;  ///< px of the band of shot sections (0: one shot, or the scrub bar)
+  float small = 0;            ///< px, the small text the rows are measured in
+  float pad = 0;              ///< px, the picture's spacing unit
+  float top_margin = 0;       ///< px above the title, or above the rows when compact
+  float label_height = 0;     ///< px, one level of event numbers
+  float camera_height = 0;    ///< px of the camera band
+  float lane = 0;             ///< px at the bottom of the camera band for the labels too long for their bar
 
   // Set by place().
   int label_levels = 0;
+  float sections_top = 0, sections_bottom = 0;
   float labels_top = 0;
   float events_top = 0, events_bottom = 0;
   float drops_top = 0, drops_bottom = 0;
@@ -96,8 +107,9 @@ struct RowLayout {
   float cue_top = 0, cue_bottom = 0;
   float axis_top = 0, axis_bottom = 0;
 
-  RowLayout(const UiFonts& fonts, bool compact, bool script_failed)
-      : small(fonts.small_size),
+  RowLayout(const UiFonts& fonts, bool compact, bool script_failed, float sections = 0)
+      : sections_height(sections),
+        small(fonts.small_size),
         pad(std::round(fonts.regular_size * 0.6f)),
         top_margin(pad * (compact ? 0.5f : 1.f)),
         label_height(small + 2),
@@ -107,18 +119,24 @@ struct RowLayout {
     camera_height += lane;
   }
 
+  /// px the band of shot sections takes with the gap under it.
+  float sections_gap() const { return sections_height > 0 ? sections_height + 2 * kGap : 0; }
+
   /// px, the bottom of the camera bars (above the lane).
   float bars_bottom() const { return camera_bottom - lane; }
 
   /// px the four bands and the axis take, gaps aside: the height the label levels cannot have.
   float bands_height() const {
-    return (small + kEventsExtra) + (small + kDropsExtra) + camera_height + (small + kCueExtra) + (small + kAxisExtra);
+    return sections_gap() + (small + kEventsExtra) + (small + kDropsExtra) + camera_height + (small + kCueExtra) +
+           (small + kAxisExtra);
   }
 
   /// Places the rows from `top` down, with `levels` levels of event numbers above the events band.
   void place(float top, int levels) {
     label_levels = levels;
-    labels_top = top;
+    sections_top = top;
+    sections_bottom = top + sections_height;
+    labels_top = top + sections_gap();
     events_top = labels_top + label_levels * label_height;
     events_bottom = events_top + small + kEventsExtra;
     drops_top = events_bottom + kGap;
@@ -265,7 +283,7 @@ class TimelinePainter {
         right_(layout.x + layout.width),
         bottom_(layout.y + layout.height),
         script_failed_(!data.script_errors.empty()),
-        rows_(fonts, layout.compact, script_failed_) {}
+        rows_(fonts, layout.compact, script_failed_, layout.compact ? 0.f : sections_height(fonts, data)) {}
 
   const TimelineAxis& axis() const { return across_.axis; }
 
@@ -306,6 +324,38 @@ class TimelinePainter {
       list_.AddRectFilled(ImVec2(across_.x0, band.top), ImVec2(across_.x1, band.bottom), kRowBackground, 2.f);
     for (std::size_t k = 0; k < bands.size(); ++k)
       row_name(list_, fonts_, layout_.x + rows_.pad, bands[k].top, bands[k].bottom, kRowNames[k]);
+  }
+
+  // A scene of several shots: a band above the rows with a section per shot, its name, what it does
+  // and its stroke's diagram at the section's right end when there is room (the text clipped short
+  // of it).
+  void draw_shot_sections() {
+    const float top = rows_.sections_top, bottom = rows_.sections_bottom, pad = rows_.pad;
+    if (bottom <= top) return;
+    row_name(list_, fonts_, layout_.x + rows_.pad, top, bottom, "shots");
+    const ImVec2 size = stroke_diagram_size(fonts_);
+    for (std::size_t k = 0; k < data_.shots.size(); ++k) {
+      const TimelineShotSection& s = data_.shots[k];
+      const float a = at(s.start), b = std::max(at(s.end), a + 2);
+      list_.AddRectFilled(ImVec2(a, top), ImVec2(b, bottom), k % 2 ? kSectionOdd : kSectionEven, 2.f);
+      const ImVec2 diagram(b - pad - size.x, top + (bottom - top - size.y) / 2);
+      const bool room = s.stroke && diagram.x >= a + pad + text_size(fonts_.bold, fonts_.bold_size, s.label).x + pad;
+      if (room) draw_stroke_diagram(list_, *s.stroke, fonts_, diagram);
+      list_.PushClipRect(ImVec2(a + 1, top), ImVec2(room ? diagram.x - pad / 2 : b - 1, bottom), true);
+      list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(a + pad, top + 3), kText, s.label.c_str());
+      list_.AddText(fonts_.small, fonts_.small_size, ImVec2(a + pad, top + 3 + fonts_.bold_size + 2), kDim,
+                    s.detail.c_str());
+      list_.PopClipRect();
+    }
+  }
+
+  // Where each later shot begins: a line through every row (the scrub bar too).
+  void draw_shot_separators() {
+    const float top = rows_.sections_bottom > rows_.sections_top ? rows_.sections_top : rows_.events_top;
+    for (std::size_t k = 1; k < data_.shots.size(); ++k) {
+      const float x = at(data_.shots[k].start);
+      list_.AddLine(ImVec2(x, top), ImVec2(x, rows_.axis_top + 5), kSeparator, 2.f);
+    }
   }
 
   void draw_grid_and_axis() {
@@ -617,6 +667,46 @@ class TimelinePainter {
   Across across_;
 };
 
+/// A scene of several shots: each shot's section, named as a `shot K` camera key counts ("shot 2").
+std::vector<TimelineShotSection> shot_sections(const Shot& shot, const std::vector<int>& painted) {
+  std::vector<TimelineShotSection> sections;
+  const std::vector<ShotSpan>& spans = shot.timeline.shots();
+  for (std::size_t k = 0; k < spans.size() && k < shot.scene.cues.size(); ++k) {
+    const Cue& cue = shot.scene.cues[k];
+    TimelineShotSection s;
+    s.start = spans[k].start;
+    s.cue = spans[k].cue;
+    s.end = k + 1 < spans.size() ? spans[k + 1].start : shot.timeline.duration();
+    s.label = "shot " + std::to_string(k + 1);
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "%.1f\xC2\xB0\nstrike at %.2f s", cue.heading_deg, s.cue);
+    s.detail = "cue " + ball_index_text(cue.target, painted) +
+               (cue.aims() ? " pot " + ball_index_text(cue.pot_ball, painted) + " into pocket " +
+                                 std::to_string(cue.pot_pocket) + " at "
+                           : " at ") +
+               buffer;
+    s.stroke = cue.stroke;
+    sections.push_back(std::move(s));
+  }
+  return sections;
+}
+
+/// The events, the camera's descriptions and windows, and the stick's phases.
+void add_events_and_camera(const Shot& shot, TimelineData& data) {
+  for (const Event& e : shot.timeline.events())
+    data.events.push_back({e.index, e.time, e.type, event_label(e, data.painted)});
+  if (shot.camera) {
+    for (const CameraSegment& s : shot.camera->segments()) {
+      if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
+      const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
+      const std::string key = c.key.kind == CameraKeyKind::event ? std::string() : camera_key_text(c.key);
+      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c, data.painted), {}, true, key});
+    }
+    for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
+  }
+  if (shot.cue) data.cue = shot.cue->phases();
+}
+
 }  // namespace
 
 TimelineData timeline_data(const Shot& shot) {
@@ -633,26 +723,19 @@ TimelineData timeline_data(const Shot& shot) {
                 shot.scene.name.c_str(), data.duration, timeline.events().size(),
                 timeline.events().empty() ? 0 : timeline.events().size() - 1, pocketed);
   data.title = buffer;
-  if (const auto& stroke = shot.scene.cue().stroke) {
+  data.painted = painted_numbers(shot.scene);
+  if (timeline.shot_count() > 1) {
+    // Each shot's stroke goes in its section.
+    data.title += ", " + std::to_string(timeline.shot_count()) + " shots";
+    data.shots = shot_sections(shot, data.painted);
+  } else if (const auto& stroke = shot.scene.cue().stroke) {
     // The stroke: the tip's speed, where it meets the ball (fractions of the radius) and the elevation.
     std::snprintf(buffer, sizeof buffer, ", stroke %.2f m/s at side %+.2f height %+.2f, %.0f\xC2\xB0 up", stroke->speed,
                   stroke->side, stroke->height, stroke->elevation_deg);
     data.title += buffer;
     data.stroke = stroke;
   }
-  data.painted = painted_numbers(shot.scene);
-  for (const Event& e : timeline.events())
-    data.events.push_back({e.index, e.time, e.type, event_label(e, data.painted)});
-  if (shot.camera) {
-    for (const CameraSegment& s : shot.camera->segments()) {
-      if (s.shot < 0 || s.shot >= static_cast<int>(shot.scene.camera.size())) continue;
-      const CameraShot& c = shot.scene.camera[static_cast<std::size_t>(s.shot)];
-      const std::string key = c.key.kind == CameraKeyKind::event ? std::string() : camera_key_text(c.key);
-      data.camera.push_back({s.begin, s.end, c.event, c.mode, camera_shot_label(c, data.painted), {}, true, key});
-    }
-    for (const CameraWindow& w : shot.camera->windows()) data.windows.push_back({w.begin, w.event_time, w.end});
-  }
-  if (shot.cue) data.cue = shot.cue->phases();
+  add_events_and_camera(shot, data);
   return data;
 }
 
@@ -668,12 +751,14 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   painter.draw_background();
   painter.lay_out(painter.draw_header());
   painter.draw_row_backgrounds();
+  painter.draw_shot_sections();
   painter.draw_grid_and_axis();
   painter.draw_cue_phases();
   painter.draw_camera_descriptions();
   painter.draw_unplaced_descriptions();
   painter.draw_no_stick_note();
   painter.draw_interpolation_windows();
+  painter.draw_shot_separators();
   painter.draw_events();
   painter.draw_pocket_drops();
   painter.draw_cursor();

@@ -40,6 +40,14 @@ struct TimelineCameraSpan {
   std::string key;      ///< the camera key as written ("hit 0 5"), empty when it names an event number
 };
 
+/// One shot of a scene of several: its stretch of the timeline and its stroke.
+struct TimelineShotSection {
+  double start = 0, cue = 0, end = 0;  ///< s: the stick may come in, the strike, the next shot's start (or the end)
+  std::string label;                   ///< "shot 2"
+  std::string detail;                  ///< "cue 0 pot 2 into pocket 3 at 41.2°\nstrike at 10.87 s" (two lines)
+  std::optional<Stroke> stroke;        ///< drawn as a small diagram in its section
+};
+
 struct TimelineWindow {
   double begin = 0, event_time = 0, end = 0;  ///< s
 };
@@ -59,8 +67,12 @@ struct TimelineData {
   /// Set when the camera script does not fit the shot: every error as printed. The camera row then
   /// shows the script as written (see script_as_written.h), and there are no windows or cue phases.
   std::vector<std::string> script_errors;
-  /// The scene's stroke, drawn as a small ball diagram at the right end of the title; none: no diagram.
+  /// The scene's stroke, drawn as a small ball diagram at the right end of the title; none: no diagram
+  /// (a scene of several shots draws each shot's in its section instead).
   std::optional<Stroke> stroke;
+  /// A scene of several shots: one section per shot, drawn as a band of labelled sections above the
+  /// rows and separators through them; empty for a scene of one shot (its picture as before).
+  std::vector<TimelineShotSection> shots;
 };
 
 TimelineData timeline_data(const Shot& shot);

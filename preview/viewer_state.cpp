@@ -68,6 +68,30 @@ void ViewerState::step_event(int direction) {
   playing = false;
 }
 
+void ViewerState::step_shot(int direction) {
+  if (!shot) return;
+  constexpr double kSame = 1e-9;  // s; a strike closer than this is the one we are on
+  const std::vector<ShotSpan>& spans = shot->timeline.shots();
+  if (direction > 0) {
+    for (const ShotSpan& s : spans)
+      if (s.cue > time + kSame) {
+        set_time(s.cue);
+        break;
+      }
+  } else {
+    for (auto it = spans.rbegin(); it != spans.rend(); ++it)
+      if (it->cue < time - kSame) {
+        set_time(it->cue);
+        break;
+      }
+  }
+  playing = false;
+}
+
+int ViewerState::shot_in_play() const { return shot ? shot->timeline.shot_at(time) : 0; }
+
+int ViewerState::shot_count() const { return shot ? std::max(shot->timeline.shot_count(), 1) : 1; }
+
 bool load_into(ViewerState& state) {
   LoadedShot loaded = load_source(state.source);
   state.messages = std::move(loaded.messages);

@@ -54,6 +54,12 @@ struct ViewerState {
   void step_frames(int frames);
   /// Jumps to the next (+1) or previous (-1) event.
   void step_event(int direction);
+  /// Jumps to the next (+1) or previous (-1) shot's strike (its cue event), as `--at shot:K` shows it.
+  void step_shot(int direction);
+  /// The shot in play at the current time, from 0 (Timeline::shot_at); 0 without a shot.
+  int shot_in_play() const;
+  /// How many shots the scene has (1 without a shot loaded).
+  int shot_count() const;
 };
 
 /// Loads the source into the state; on errors keeps the previous shot and records the messages.

@@ -20,9 +20,20 @@ namespace {
 constexpr float kEventListWidth = 300;  // px
 constexpr double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0};
 constexpr const char* kKeyHelp =
-    "Space play/pause   \xE2\x86\x90 \xE2\x86\x92 frame   Shift+\xE2\x86\x90 \xE2\x86\x92 or , . event   Home End   "
+    "Space play/pause   \xE2\x86\x90 \xE2\x86\x92 frame   Shift+\xE2\x86\x90 \xE2\x86\x92 or , . event   [ ] shot   "
+    "Home End   "
     "C scripted/free camera   K write the free camera into the scene   L look at/follow the ball under the cursor   "
     "U undo   P paths   E events   M camera map   A antialias   R reload   Q quit";
+
+// A scene of several shots: which one is in play, and a step to the previous or next shot's strike.
+void shot_buttons(ViewerState& state) {
+  ImGui::SameLine(0, 16);
+  if (ImGui::Button("[ shot")) state.step_shot(-1);
+  ImGui::SameLine();
+  ImGui::Text("shot %d of %d", state.shot_in_play() + 1, state.shot_count());
+  ImGui::SameLine();
+  if (ImGui::Button("shot ]")) state.step_shot(1);
+}
 
 void transport(ViewerState& state) {
   if (ImGui::Button("|<")) state.set_time(0);
@@ -41,6 +52,7 @@ void transport(ViewerState& state) {
   if (ImGui::Button("event >>")) state.step_event(1);
   ImGui::SameLine();
   if (ImGui::Button(">|")) state.set_time(state.duration());
+  if (state.shot_count() > 1) shot_buttons(state);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
   char speed[16];
@@ -99,7 +111,12 @@ void event_list(ViewerState& state, float window_height) {
     const Event* current = nullptr;
     for (const Event& e : state.shot->timeline.events())
       if (e.time <= state.time + 1e-9) current = &e;
+    int listed_shot = state.shot_count() > 1 ? -1 : 0;
     for (const Event& e : state.shot->timeline.events()) {
+      if (e.shot != listed_shot) {  // a scene of several shots: each shot's events under its name
+        listed_shot = e.shot;
+        ImGui::TextDisabled("shot %d", e.shot + 1);
+      }
       char label[160];
       std::snprintf(label, sizeof label, "%3d  %7.3f s  %s", e.index, e.time,
                     event_label(e, state.timeline.painted).c_str());
@@ -139,15 +156,22 @@ void problems(const ViewerState& state, float window_width) {
 // The scene's stroke as a small ball diagram (speed, where the tip meets the ball, elevation), in a
 // panel at the bottom left of the picture; none without a stroke.
 void stroke_panel(const ViewerState& state, const UiFonts& fonts, float window_height) {
-  if (!state.shot || !state.shot->scene.cue().stroke) return;
+  if (!state.shot) return;
+  const std::vector<Cue>& cues = state.shot->scene.cues;
+  const auto k = static_cast<std::size_t>(state.shot_in_play());
+  if (k >= cues.size() || !cues[k].stroke) return;
+  const Stroke& stroke = *cues[k].stroke;
   const ImVec2 size = stroke_diagram_size(fonts);
   ImGui::SetNextWindowPos(ImVec2(8, window_height - kControlsHeight - 8), ImGuiCond_FirstUseEver, ImVec2(0, 1));
   ImGui::SetNextWindowBgAlpha(0.8f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse;
-  if (ImGui::Begin("Stroke", nullptr, flags)) {
+  // The title names the shot when there are several; "###" keeps the panel the same window across shots.
+  const std::string title =
+      (state.shot_count() > 1 ? "Stroke of shot " + std::to_string(k + 1) : std::string("Stroke")) + "###stroke";
+  if (ImGui::Begin(title.c_str(), nullptr, flags)) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::Dummy(size);
-    draw_stroke_diagram(*ImGui::GetWindowDrawList(), *state.shot->scene.cue().stroke, fonts, at);
+    draw_stroke_diagram(*ImGui::GetWindowDrawList(), stroke, fonts, at);
   }
   ImGui::End();
 }
@@ -185,8 +209,14 @@ void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, cons
   list.PushClipRect(ImVec2(view.x, view.y), ImVec2(view.x + view.width, view.y + view.height), true);
   if (state.free_camera) draw_scripted_frustum(list, frame, static_cast<double>(view.width) / view.height);
   draw_overlays(list, frame, state.overlays);
-  const char* which =
-      state.free_camera ? "free orbit camera (drag: orbit, right-drag: pan, wheel: zoom)" : "scripted camera";
+  // With several shots, which one is in play ("shot 2 of 3 · scripted camera").
+  const std::string shot_text = state.shot_count() > 1 ? "shot " + std::to_string(state.shot_in_play() + 1) + " of " +
+                                                             std::to_string(state.shot_count()) + "  \xC2\xB7  "
+                                                       : std::string();
+  const std::string which_text =
+      shot_text +
+      (state.free_camera ? "free orbit camera (drag: orbit, right-drag: pan, wheel: zoom)" : "scripted camera");
+  const char* which = which_text.c_str();
   list.AddText(fonts.small, fonts.small_size,
                ImVec2(view.x + view.width - fonts.small->CalcTextSizeA(fonts.small_size, 1e9f, 0, which).x - 8,
                       view.y + view.height - fonts.small_size - 6),

@@ -120,6 +120,8 @@ bool handle_keys(ViewerState& state, GLFWwindow* window, const ViewRect& view) {
   if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) shift ? state.step_event(-1) : state.step_frames(-1);
   if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN) || ImGui::IsKeyPressed(GLFW_KEY_PERIOD)) state.step_event(1);
   if (ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP) || ImGui::IsKeyPressed(GLFW_KEY_COMMA)) state.step_event(-1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET)) state.step_shot(1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET)) state.step_shot(-1);
   if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) state.set_time(0);
   if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) state.set_time(state.duration());
   if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) state.free_camera = !state.free_camera;
@@ -137,7 +139,7 @@ bool handle_keys(ViewerState& state, GLFWwindow* window, const ViewRect& view) {
 // A test hook, not an option: BSIM_WINDOW_INPUT="C K shift+Right mouse:320,180 L U" plays key
 // presses into the window as if typed, one every other frame (pressed, then released), and closes
 // the window after the last. `mouse:X,Y` puts the cursor at X,Y (window units) from then on.
-// Keys: a letter, `.`, `,`, Right, Left, Home, End, Space, each optionally after `shift+`.
+// Keys: a letter, `.`, `,`, `[`, `]`, Right, Left, Home, End, Space, each optionally after `shift+`.
 class InputScript {
  public:
   explicit InputScript(const char* text) {
@@ -196,8 +198,9 @@ class InputScript {
   static int key_code(const std::string& name) {
     if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return GLFW_KEY_A + (name[0] - 'A');
     static const std::pair<const char*, int> kNames[] = {
-        {".", GLFW_KEY_PERIOD},  {",", GLFW_KEY_COMMA}, {"Right", GLFW_KEY_RIGHT}, {"Left", GLFW_KEY_LEFT},
-        {"Home", GLFW_KEY_HOME}, {"End", GLFW_KEY_END}, {"Space", GLFW_KEY_SPACE}};
+        {".", GLFW_KEY_PERIOD},        {",", GLFW_KEY_COMMA},     {"[", GLFW_KEY_LEFT_BRACKET},
+        {"]", GLFW_KEY_RIGHT_BRACKET}, {"Right", GLFW_KEY_RIGHT}, {"Left", GLFW_KEY_LEFT},
+        {"Home", GLFW_KEY_HOME},       {"End", GLFW_KEY_END},     {"Space", GLFW_KEY_SPACE}};
     for (const auto& [n, code] : kNames)
       if (name == n) return code;
     return -1;

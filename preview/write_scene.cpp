@@ -27,25 +27,35 @@ std::string numbers(const Vec3& v) {
 }  // namespace
 
 std::string scene_text_resolved(std::string_view text, const Scene& played) {
-  if (!played.cue().aims()) return std::string(text);
+  if (std::none_of(played.cues.begin(), played.cues.end(), [](const Cue& c) { return c.aims(); }))
+    return std::string(text);
   const LexedText lexed = lex_scene(text);
   const std::vector<Token>& tokens = lexed.tokens;
   const auto offset = [&](std::size_t k) { return static_cast<std::size_t>(tokens[k].text.data() - text.data()); };
   const auto span = [&](std::size_t first, std::size_t last, std::string with) {
     return Edit{offset(first), offset(last) + tokens[last].text.size(), std::move(with)};
   };
-  const int target = played.cue().target;
-  const Ball& struck = played.ball(target);
+  // Each shot's `cue` line, found by where it is written; only the first shot can lack a stroke (its
+  // ball and spin lines then carry what the heading gave the struck ball).
+  const auto aimed_cue = [&](const Token& token) -> const Cue* {
+    for (const Cue& c : played.cues)
+      if (c.aims() && same_place(token.loc, c.loc)) return &c;
+    return nullptr;
+  };
+  const Cue& first = played.cue();
+  const bool first_resolves_balls = first.aims() && !first.stroke;
+  const Ball& struck = played.ball(first.target);
   std::vector<Edit> edits;
   for (std::size_t k = 0; k < tokens.size(); ++k) {
     const std::string_view t = tokens[k].text;
-    if (t == "cue" && same_place(tokens[k].loc, played.cue().loc) && k + 4 < tokens.size())
-      edits.push_back(span(k + 2, k + 4, format_number(played.cue().heading_deg)));  // pot B P
-    else if (played.cue().stroke)
+    const Cue* cue = t == "cue" ? aimed_cue(tokens[k]) : nullptr;
+    if (cue && k + 4 < tokens.size())
+      edits.push_back(span(k + 2, k + 4, format_number(cue->heading_deg)));  // pot B P
+    else if (!first_resolves_balls)
       continue;  // a stroke strikes the ball at the heading: its ball and spin lines stay as written
     else if (t == "ball" && same_place(tokens[k].loc, struck.loc) && k + 7 < tokens.size())
       edits.push_back(span(k + 5, k + 7, numbers(struck.velocity)));  // after the number and the position
-    else if (t == "spin" && k + 4 < tokens.size() && tokens[k + 1].text == std::to_string(target))
+    else if (t == "spin" && k + 4 < tokens.size() && tokens[k + 1].text == std::to_string(first.target))
       edits.push_back(span(k + 2, k + 4, numbers(struck.spin)));
   }
   std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin > b.begin; });

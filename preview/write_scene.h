@@ -9,11 +9,12 @@ namespace bsim {
 struct Scene;
 struct Shot;
 
-/// `text` (the scene as written) with `cue I pot B P` replaced by `cue I HEADING`, the heading `played`
-/// was shot at, and the struck ball's `ball`-line velocity and `spin`-line spin replaced by the ones that
-/// heading gave it (aim.h: strike_heading), every number in its shortest exact form: the text written
-/// plays the same shot to the bit. Everything else (comments, spacing, order) is kept. A scene without
-/// `pot` comes back unchanged.
+/// `text` (the scene as written) with each `cue I pot B P` replaced by `cue I HEADING`, the heading `played`
+/// struck that shot at (with several shots, each aimed from where the shot before left the balls), and
+/// for a first shot without a stroke the struck ball's `ball`-line velocity and `spin`-line spin replaced by the ones
+/// that heading gave it (aim.h: strike_heading), every number in its shortest exact form: the text written plays the
+/// same shot to the bit. Everything else (comments, spacing, order) is kept. A scene without `pot` comes back
+/// unchanged.
 std::string scene_text_resolved(std::string_view text, const Scene& played);
 
 /// Writes scene_text_resolved into `path` ("-": standard output), in place atomically. Returns the exit

@@ -67,6 +67,13 @@ TEST_SUITE("preview command line") {
     const PreviewOptions event = accepted({"--at=event:3", "--output", "f.png"});
     REQUIRE(event.at.size() == 1);
     CHECK(event.at[0].event == 3);
+    // shot:K counts from 1, as `shot K` camera keys do; its picture is named after it.
+    const PreviewOptions shot = accepted({"--at", "shot:2", "--at", "1", "-o", "shots/"});
+    REQUIRE(shot.at.size() == 2);
+    CHECK(shot.at[0].shot == 2);
+    CHECK(shot.at[0].event == -1);
+    CHECK(shot.at[1].shot == 0);
+    CHECK(shot.pictures[0] == "shots/at_shot_2.png");
   }
 
   TEST_CASE("--timeline, --movie, --overlay, --fps, --strict") {
@@ -103,6 +110,11 @@ TEST_SUITE("preview command line") {
     CHECK(contains(rejection({"--at", "soon", "-o", "f.png"}), "bad value 'soon' for --at"));
     CHECK(contains(rejection({"--at", "-1", "-o", "f.png"}), "--at"));
     CHECK(contains(rejection({"--at", "event:x", "-o", "f.png"}), "--at"));
+    // Shots count from 1: shot:0 is no shot; the message says what is accepted.
+    CHECK(contains(rejection({"--at", "shot:0", "-o", "f.png"}), "bad value 'shot:0' for --at"));
+    CHECK(contains(rejection({"--at", "shot:0", "-o", "f.png"}), "shot:K from 1"));
+    CHECK(contains(rejection({"--at", "shot:two", "-o", "f.png"}), "bad value 'shot:two' for --at"));
+    CHECK(contains(rejection({"--at", "shot:", "-o", "f.png"}), "--at"));
     CHECK(contains(rejection({"--size", "12"}), "bad value '12' for --size"));
     CHECK(contains(rejection({"--fps", "0", "--movie", "a.mp4"}), "--fps"));
     CHECK(contains(rejection({"--overlay", "paths,stars"}), "bad value 'paths,stars' for --overlay"));

@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -108,6 +109,51 @@ TimelineData made_up_failed_script() {
   data.script_errors = {
       "golden.scn:9:7: error: event 2 is listed after event 6: list the camera's events in increasing order",
       "golden.scn:10:7: error: event 9 does not exist: the shot has 8 events (0 to 7)"};
+  return data;
+}
+
+// A scene of three shots: the made-up shot above played three times, 6 s apart, each with its stroke
+// (draw, follow, right english), as timeline_data lays out a scene of several shots.
+TimelineData made_up_three_shots() {
+  TimelineData data = made_up_timeline();
+  data.title = "golden  \xE2\x80\x94  18.00 s, 20 events (0 to 19), 3 pocketed, 3 shots";
+  data.duration = 18.0;
+  const TimelineData one = made_up_timeline();
+  data.events.clear();
+  data.drops.clear();
+  data.camera.clear();
+  data.windows.clear();
+  data.cue.clear();
+  int index = 0;
+  const char* strokes[] = {"0 -0.2", "0 0.2", "0.2 0"};
+  for (int k = 0; k < 3; ++k) {
+    const double t0 = 6.0 * k;
+    for (const TimelineEventMark& e : one.events) {
+      if ((e.type == EventType::start && k > 0) || (e.type == EventType::end && k < 2)) continue;
+      data.events.push_back({index++, t0 + e.time, e.type, e.label});
+    }
+    data.drops.push_back({t0 + 4.9, 1 + k, 2});
+    // The first shot filmed as the one-shot picture films it, the later ones by one description each.
+    for (const TimelineCameraSpan& c : one.camera)
+      if (k == 0) data.camera.push_back(c);
+    if (k > 0)
+      data.camera.push_back(
+          {t0, t0 + 6.0, 0, CameraMode::follow, "follow ball 0", "", true, "shot " + std::to_string(k + 1) + " start"});
+    if (k == 0) data.windows = one.windows;
+    for (const CuePhaseSpan& p : one.cue) data.cue.push_back({p.phase, t0 + p.begin, t0 + p.end});
+    TimelineShotSection section;
+    section.start = t0;
+    section.cue = t0 + 2.5;
+    section.end = t0 + 6.0;
+    section.label = "shot " + std::to_string(k + 1);
+    section.detail = "cue 0 pot " + std::to_string(k + 1) + " into pocket 2 at 12.5\xC2\xB0\nstrike at " +
+                     std::to_string(static_cast<int>(t0 + 2.5)) + ".50 s";
+    Stroke stroke;
+    stroke.speed = 2.0;
+    std::sscanf(strokes[k], "%lf %lf", &stroke.side, &stroke.height);
+    section.stroke = stroke;
+    data.shots.push_back(section);
+  }
   return data;
 }
 
@@ -214,6 +260,40 @@ TEST_SUITE("preview golden pictures") {
     draw_timeline(*list, made_up_timeline(), canvas.fonts(), {0, 0, 800, 300});
     canvas.end_2d();
     check_against_golden(canvas, "timeline.png");
+  }
+
+  TEST_CASE("the timeline of three shots: a labelled section per shot with its stroke, separators through the rows") {
+    HeadlessCanvas canvas;
+    std::string error;
+    REQUIRE_MESSAGE(canvas.open(1200, 400, 14, error), error);
+    ImDrawList* list = canvas.begin_2d();
+    draw_timeline(*list, made_up_three_shots(), canvas.fonts(), {0, 0, 1200, 400});
+    canvas.end_2d();
+    check_against_golden(canvas, "timeline_shots.png");
+  }
+
+  TEST_CASE("the timeline data of tests/scene/three_shots.scn: a section per shot over its span; one shot: none") {
+    const ShotResult three = load_shot(test::require_file(test::source_path("tests/scene/three_shots.scn")), "three");
+    REQUIRE(three.shot);
+    const TimelineData data = timeline_data(*three.shot);
+    const std::vector<ShotSpan>& spans = three.shot->timeline.shots();
+    REQUIRE(spans.size() == 3);
+    REQUIRE(data.shots.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(data.shots[k].label == "shot " + std::to_string(k + 1));
+      CHECK(data.shots[k].start == spans[k].start);
+      CHECK(data.shots[k].cue == spans[k].cue);
+      CHECK(data.shots[k].end == (k < 2 ? spans[k + 1].start : three.shot->timeline.duration()));
+      REQUIRE(data.shots[k].stroke);
+      CHECK(data.shots[k].stroke->speed == three.shot->scene.cues[k].stroke->speed);
+      CHECK(data.shots[k].stroke->side == three.shot->scene.cues[k].stroke->side);
+      CHECK(data.shots[k].stroke->height == three.shot->scene.cues[k].stroke->height);
+    }
+    CHECK_FALSE(data.stroke);  // each shot's stroke is in its section, none in the title
+    CHECK(data.title.find("3 shots") != std::string::npos);
+    const ShotResult one = load_shot(test::require_file(test::source_path("scenes/pot_corner.scn")), "pot_corner");
+    REQUIRE(one.shot);
+    CHECK(timeline_data(*one.shot).shots.empty());
   }
 
   TEST_CASE("a timeline whose camera script does not fit: the script as written, faults in red, the errors") {

@@ -13,6 +13,7 @@
 
 #include <stb_image.h>
 
+#include "files.h"
 #include "fixtures.h"
 #include "shot.h"
 #include "support.h"
@@ -117,6 +118,48 @@ TEST_SUITE("preview snapshots") {
     CHECK(bad.exit_code == 2);
     CHECK(bad.err.find("numbered 0 to " + std::to_string(events.size() - 1)) != std::string::npos);
     CHECK_FALSE(std::ifstream(missing).good());
+  }
+
+  TEST_CASE("--at shot:K shows shot K's strike; a shot the scene lacks is a usage error naming the range") {
+    // tests/scene/three_shots.scn: three shots; shot 2's strike is Timeline::shots()[1].cue, its cue event.
+    const std::string scene = test::quoted(test::source_path("tests/scene/three_shots.scn").string());
+    const ShotResult loaded = load_shot(test::require_file(test::source_path("tests/scene/three_shots.scn")), "three");
+    REQUIRE(loaded.shot);
+    const Timeline& timeline = loaded.shot->timeline;
+    REQUIRE(timeline.shot_count() == 3);
+    std::ostringstream seconds;
+    seconds.precision(17);
+    seconds << timeline.shots()[1].cue;
+    TempDir dir;
+    const std::string by_shot = (dir.path / "s.png").string(), by_time = (dir.path / "t.png").string();
+    const auto shot = run_command(preview(scene + " --at shot:2 --overlay aim --size 160x90 -o " + by_shot));
+    INFO(shot.err);
+    REQUIRE(shot.exit_code == 0);
+    REQUIRE(run_command(preview(scene + " --at " + seconds.str() + " --overlay aim --size 160x90 -o " + by_time))
+                .exit_code == 0);
+    CHECK(require_file(by_shot) == require_file(by_time));
+    // The aim overlay draws shot 2's aim at shot 2's strike (the first shot's aim ended at its first
+    // contact): the picture differs from the one without it.
+    const std::string bare = (dir.path / "bare.png").string();
+    REQUIRE(run_command(preview(scene + " --at shot:2 --size 160x90 -o " + bare)).exit_code == 0);
+    CHECK(require_file(bare) != require_file(by_shot));
+    // Shot 1's strike is another picture (the balls are elsewhere).
+    const std::string first = (dir.path / "f.png").string();
+    REQUIRE(run_command(preview(scene + " --at shot:1 --overlay aim --size 160x90 -o " + first)).exit_code == 0);
+    CHECK(require_file(first) != require_file(by_shot));
+
+    for (const char* bad : {"shot:4", "shot:0"}) {
+      const std::string missing = (dir.path / "m.png").string();
+      const auto r =
+          run_command(preview(scene + " --at shot:1 --at " + bad + " -o " + (dir.path / "m_%t.png").string()));
+      CAPTURE(bad);
+      CHECK(r.exit_code == 2);
+      CHECK(r.err.find(bad) != std::string::npos);
+      CHECK_FALSE(std::ifstream((dir.path / "m_shot_1.png").string()).good());  // nothing written
+    }
+    const auto beyond = run_command(preview(scene + " --at shot:4 -o " + (dir.path / "b.png").string()));
+    CHECK(beyond.err.find("--at shot:4: this scene has 3 shots, numbered 1 to 3") != std::string::npos);
+    CHECK_FALSE(std::ifstream((dir.path / "b.png").string()).good());
   }
 
   TEST_CASE("different times give different pictures; the overlays add to the picture") {

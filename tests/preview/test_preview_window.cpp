@@ -194,6 +194,60 @@ TEST_SUITE("preview window") {
     CHECK(state.time == 3.0);
   }
 
+  TEST_CASE("shot stepping lands on each shot's strike, and the shot in play follows the time") {
+    // tests/scene/three_shots.scn: `]` and `[` step over Timeline::shots()[k].cue, as --at shot:K shows it.
+    ViewerState state;
+    state.source = scene_source(test::source_path("tests/scene/three_shots.scn").string(), false);
+    REQUIRE(load_into(state));
+    const std::vector<ShotSpan>& spans = state.shot->timeline.shots();
+    REQUIRE(spans.size() == 3);
+    CHECK(state.shot_count() == 3);
+    state.set_time(0);
+    CHECK(state.shot_in_play() == 0);
+    state.step_shot(1);
+    CHECK(state.time == spans[0].cue);
+    state.step_shot(1);
+    CHECK(state.time == spans[1].cue);
+    CHECK(state.shot_in_play() == 1);
+    state.step_shot(1);
+    CHECK(state.time == spans[2].cue);
+    state.step_shot(1);  // no shot after the last: stays
+    CHECK(state.time == spans[2].cue);
+    state.set_time((spans[1].cue + spans[1].rest) / 2);  // in the middle of shot 2: back to its strike
+    state.step_shot(-1);
+    CHECK(state.time == spans[1].cue);
+    state.step_shot(-1);
+    CHECK(state.time == spans[0].cue);
+    CHECK(state.shot_in_play() == 0);
+  }
+
+  TEST_CASE("under Xvfb, ] and [ step the window shot by shot") {
+    // `]` twice lands on shot 2's strike and K writes the free camera there; the key written names that
+    // instant, so the file shows where the keys took the window.
+    test::require_program("xvfb-run");
+    test::require_program("xauth");
+    TempDir dir;
+    const std::string path =
+        dir.file("three.scn", test::require_file(test::source_path("tests/scene/three_shots.scn")));
+    ViewerState state;
+    state.source = scene_source(path, false);
+    REQUIRE(load_into(state));
+    const double strike2 = state.shot->timeline.shots()[1].cue;
+    const auto r =
+        run_command("BSIM_WINDOW_INPUT=" + test::quoted("C ] ] ] [ K") + " xvfb-run -a -s '-screen 0 1024x768x24' " +
+                    bin("billiards-preview") + " " + path + " --size 640x360");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CameraPlacement hover;
+    const ViewCamera free = OrbitCamera{}.view();
+    hover.eye = free.eye;
+    hover.look_at = free.target;
+    const CameraEdit expected =
+        place_camera(test::require_file(test::source_path("tests/scene/three_shots.scn")), path, strike2, hover);
+    REQUIRE(expected.error.empty());
+    CHECK(test::read_file(path) == expected.text);
+  }
+
   TEST_CASE("frame and event stepping land on frames and events") {
     ViewerState state;
     state.source = scene_source(std::nullopt, false);

@@ -56,6 +56,35 @@ TEST_SUITE("preview: --write-scene") {
     CHECK(replayed->timeline.pocket_drops() == aimed->timeline.pocket_drops());
   }
 
+  TEST_CASE("tests/scene/three_shots.scn resolved: each shot's own heading, read back, the same events to the bit") {
+    // Three `cue 0 pot B P` lines, each aimed from where the shot before left the balls (play.h): each
+    // line gets the heading its own shot was played at, so the text plays the same run of shots.
+    const std::string text = test::require_file(test::source_path("tests/scene/three_shots.scn"));
+    const auto aimed = loaded(text);
+    REQUIRE(aimed->scene.cues.size() == 3);
+    const std::string resolved = scene_text_resolved(text, aimed->scene);
+    CHECK(resolved.find("pot") == std::string::npos);
+    std::size_t from = 0;
+    for (const Cue& cue : aimed->scene.cues) {
+      const std::string line = "cue 0 " + format_number(cue.heading_deg) + "\n";
+      const std::size_t at = resolved.find(line, from);
+      CHECK_MESSAGE(at != std::string::npos, line);
+      from = at == std::string::npos ? from : at + line.size();
+    }
+    // Three different headings: the shots are aimed apart, not all at the first one's.
+    CHECK(aimed->scene.cues[0].heading_deg != aimed->scene.cues[1].heading_deg);
+    CHECK(aimed->scene.cues[1].heading_deg != aimed->scene.cues[2].heading_deg);
+    const auto replayed = loaded(resolved);
+    REQUIRE(replayed->scene.cues.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK_FALSE(replayed->scene.cues[k].aims());
+      CHECK(replayed->scene.cues[k].heading_deg == aimed->scene.cues[k].heading_deg);
+    }
+    CHECK(replayed->timeline.events() == aimed->timeline.events());
+    CHECK(replayed->timeline.pocket_drops() == aimed->timeline.pocket_drops());
+    CHECK(replayed->timeline.shots() == aimed->timeline.shots());
+  }
+
   TEST_CASE("a scene with a numeric heading comes back unchanged") {
     const std::string text = test::require_file(test::source_path("scenes/cut_corner.scn"));
     CHECK(scene_text_resolved(text, loaded(text)->scene) == text);
