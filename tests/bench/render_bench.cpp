@@ -12,6 +12,8 @@
 // (--whole-frames) and tracing only what changed (changed_region.h). It prints POV-Ray's CPU seconds
 // (the children's user and system time) and the wall time of each, the share of the pixels traced,
 // and checks that the two made the same pictures.
+// --scene FILE: any of the above on that scene instead of the built-in break (e.g. --reuse --scene
+// scenes/runout.scn --fps 5: a run of shots, a minute of movie).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -21,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <set>
 #include <string>
@@ -131,7 +134,7 @@ std::map<std::string, std::string> pictures(const std::string& frames_dir) {
 
 /// --reuse: the movie's frames rendered whole and reusing what did not change, side by side.
 int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, const std::string& frames_dir,
-                const std::string& povray) {
+                const std::string& povray, const std::string& name) {
   const int frames = bsim::frame_count(shot.timeline.duration(), options.fps);
   // Frames alike are rendered once, as in a run.
   const std::vector<std::uint64_t> keys = bsim::frame_store_keys(frames_dir, frames, options);
@@ -149,9 +152,9 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
     for (const bsim::PixelRect& r : job.rects) traced += r.area();
   }
   std::printf(
-      "default break, final %dx%d, %d frames, %zu rendered (the rest alike); reusing: %d traced in part, "
+      "%s, final %dx%d at %d fps, %d frames, %zu rendered (the rest alike); reusing: %d traced in part, "
       "%.1f%% of the rendered frames' pixels traced\n",
-      options.width, options.height, frames, whole.size(), partial,
+      name.c_str(), options.width, options.height, options.fps, frames, whole.size(), partial,
       100.0 * static_cast<double>(traced) / static_cast<double>(pixels * static_cast<long>(whole.size())));
   std::fflush(stdout);
   bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 2, ""};
@@ -165,8 +168,8 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   const double changed_cpu = children_cpu() - cpu;
   const std::map<std::string, std::string> changed_pictures = pictures(frames_dir);
   int differ = 0;
-  for (const auto& [name, bytes] : all_pictures)
-    differ += changed_pictures.count(name) == 0 || changed_pictures.at(name) != bytes;
+  for (const auto& [picture, bytes] : all_pictures)
+    differ += changed_pictures.count(picture) == 0 || changed_pictures.at(picture) != bytes;
   std::printf("%-16s %12s %10s\n", "", "POV-Ray CPU", "wall");
   std::printf("%-16s %10.1f s %8.1f s\n", "--whole-frames", all_cpu, all.wall);
   std::printf("%-16s %10.1f s %8.1f s\n", "reusing", changed_cpu, changed.wall);
@@ -175,8 +178,8 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   return differ == 0 ? 0 : 1;
 }
 
-/// The command line: --every K, --fps N, --reuse, --size WxH.
-bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse) {
+/// The command line: --every K, --fps N, --reuse, --size WxH, --scene FILE.
+bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse, std::string& scene) {
   bsim::ExportOptions options;
   options.quality = bsim::Quality::draft;
   for (int i = 1; i < argc; ++i) {
@@ -190,6 +193,8 @@ bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool&
       ++i;
     else if (flag == "--every" && i + 1 < argc)
       every = std::max(1, std::atoi(argv[++i]));
+    else if (flag == "--scene" && i + 1 < argc)
+      scene = argv[++i];
     else if (flag == "--fps" && i + 1 < argc)
       options.fps = std::max(1, std::atoi(argv[++i]));
   }
@@ -201,7 +206,16 @@ bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool&
 int main(int argc, char** argv) {
   int every = 1;
   bool reuse = false;
-  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse);
+  std::string scene_file;
+  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse, scene_file);
+  std::string text(bsim::builtin_scene_text()), name = "default break";
+  if (!scene_file.empty()) {
+    std::ifstream in(scene_file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    name = fs::path(scene_file).stem().string();
+  }
   const std::string povray = bsim::find_program("povray"), ffmpeg = bsim::find_program("ffmpeg");
   if (povray.empty() || ffmpeg.empty()) {
     std::fprintf(stderr, "render_bench: povray and ffmpeg are needed; run `bash .ci/install-deps`\n");
@@ -210,8 +224,11 @@ int main(int argc, char** argv) {
 
   // The exporter's own work: scene -> shot -> frame files and sound track.
   auto start = Clock::now();
-  bsim::ShotResult loaded = bsim::load_shot(bsim::builtin_scene_text(), bsim::kBuiltinSceneName);
-  if (!loaded.scripted()) return 1;
+  bsim::ShotResult loaded = bsim::load_shot(text, scene_file.empty() ? bsim::kBuiltinSceneName : name);
+  if (!loaded.scripted()) {
+    for (const auto& d : loaded.diagnostics) std::fprintf(stderr, "%s\n", bsim::format_diagnostic(d, name).c_str());
+    return 1;
+  }
   const double load_time = seconds_since(start);
   const fs::path dir = fs::temp_directory_path() / ("render-bench-" + std::to_string(::getpid()));
   bsim::OutputStage stage;
@@ -226,7 +243,7 @@ int main(int argc, char** argv) {
   const double write_time = seconds_since(start);
 
   if (reuse) {
-    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray);
+    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray, name);
     fs::remove_all(dir);
     return status;
   }
