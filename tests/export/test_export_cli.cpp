@@ -169,6 +169,15 @@ TEST_SUITE("export end to end") {
         {"cue 0 0\nball 0 0 0\n", 2},
         {"", 1},
         {"cue 3 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\n", 1},
+        // Several shots: a later cue without its stroke; a place onto a ball (found when shot 2 comes);
+        // a later pot of a ball shot 1 already potted (found when shot 2 is aimed).
+        {"ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\ncue 0 90\n", 4},
+        {"ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\nball 1 0.3 0 0.028575 0 0 0 1 0 0 0\ncue 1 90\nstroke 0.3 0 0 0\n"
+         "cue 0 0\nstroke 1 0 0 0\nplace 1 -0.6 0\n",
+         7},
+        {"ball 0 -0.45 -0.25 0.028575 0 0 0 1 0 0 0\nball 1 0.55 0.25 0.028575 0 0 0 1 0 0 0\ncue 0 pot 1 2\n"
+         "stroke 2 0 0 0\ncue 0 pot 1 2\nstroke 2 0 0 0\n",
+         5},
     };
     int n = 0;
     for (const auto& [text, line] : cases) {
