@@ -79,6 +79,21 @@ bool check_balls(const Scene& scene, const std::vector<CameraShot>& shots, std::
   return ok;
 }
 
+/// rad, the heading of the stick that first sets `ball` going, when a stick does: the cue of the shot
+/// in play then (each shot has its own); none when a ball sets it going first (its track then takes
+/// the direction of its first motion).
+std::optional<double> struck_heading(const Scene& scene, const Timeline& timeline, int ball) {
+  for (const Event& e : timeline.events()) {
+    if (e.type == EventType::start || e.type == EventType::end) continue;
+    if (std::find(e.balls.begin(), e.balls.end(), ball) == e.balls.end()) continue;
+    if (e.type != EventType::cue) return std::nullopt;
+    const auto k = static_cast<std::size_t>(std::clamp(e.shot, 0, scene.shot_count() - 1));
+    return scene.cues[k].heading_deg * kDegToRad;
+  }
+  if (ball == scene.cue().target) return scene.cue().heading_deg * kDegToRad;
+  return std::nullopt;
+}
+
 }  // namespace
 
 CameraShot CameraScript::default_shot(const Scene& scene) {
@@ -148,9 +163,7 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const std::v
     if (shot.mode == CameraMode::hover) continue;
     auto& track = script.tracks_[static_cast<std::size_t>(shot.ball)];
     if (track) continue;
-    std::optional<double> heading;
-    if (shot.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
-    track.emplace(timeline, shot.ball, heading);
+    track.emplace(timeline, shot.ball, struck_heading(scene, timeline, shot.ball));
   }
   return script;
 }
