@@ -134,9 +134,7 @@ CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* exist
     return shot;
   }
   // The eye as the follow camera's offset: ahead, left and up in the ball's frame at time t.
-  std::optional<double> heading;
-  if (placement.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
-  const BallTrack track(timeline, placement.ball, heading);
+  const BallTrack track(timeline, placement.ball, struck_heading(scene, timeline, placement.ball));
   const Vec3 ahead = track.heading(t), left(-ahead.y(), ahead.x(), 0), from = placement.eye - track.position(t);
   shot.mode = CameraMode::follow;
   shot.location = rounded(Vec3(from.dot(ahead), from.dot(left), from.z()));

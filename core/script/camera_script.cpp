@@ -79,9 +79,8 @@ bool check_balls(const Scene& scene, const std::vector<CameraShot>& shots, std::
   return ok;
 }
 
-/// rad, the heading of the stick that first sets `ball` going, when a stick does: the cue of the shot
-/// in play then (each shot has its own); none when a ball sets it going first (its track then takes
-/// the direction of its first motion).
+}  // namespace
+
 std::optional<double> struck_heading(const Scene& scene, const Timeline& timeline, int ball) {
   for (const Event& e : timeline.events()) {
     if (e.type == EventType::start || e.type == EventType::end) continue;
@@ -93,8 +92,6 @@ std::optional<double> struck_heading(const Scene& scene, const Timeline& timelin
   if (ball == scene.cue().target) return scene.cue().heading_deg * kDegToRad;
   return std::nullopt;
 }
-
-}  // namespace
 
 CameraShot CameraScript::default_shot(const Scene& scene) {
   // The nose lines' extent (the standard bed's when the scene has none).
