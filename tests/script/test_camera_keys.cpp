@@ -534,4 +534,20 @@ TEST_SUITE("camera_keys") {
     CHECK(segments[4].begin == shot.timeline.shots()[2].start);
     CHECK(segments[5].begin == shot.timeline.duration());
   }
+
+  TEST_CASE("billiards-export: a shot beyond the scene's, an error at the number, nothing written") {
+    test::TempDir dir;
+    const std::string balls = three_shots();
+    const int line = first_description_line(balls);
+    const std::string scene = dir.file("three.scn", balls + fx::camera({"event shot 4 cue 0 0 hover 0 -3 2 0 0 0"}));
+    const auto out = dir.path / "out";
+    const test::CommandResult r =
+        test::run_command(test::bin("billiards-export") + " '" + scene + "' --events-only -o '" + out.string() + "'");
+    CHECK(r.exit_code != 0);
+    CHECK_MESSAGE(r.err.find("three.scn:" + std::to_string(line) +
+                             ":12: error: expected a shot from 1 to 3 (the scene has 3 shots, one per 'cue' line), "
+                             "found 4") != std::string::npos,
+                  r.err);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
 }
