@@ -157,7 +157,8 @@ CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* exist
     return shot;
   }
   // The eye as the follow camera's offset: ahead, left and up in the ball's frame at time t.
-  const BallTrack track(timeline, placement.ball, struck_heading(scene, timeline, placement.ball));
+  const BallTrack track(timeline, placement.ball, struck_heading(scene, timeline, placement.ball),
+                        later_strikes(scene, timeline, placement.ball));
   const Vec3 ahead = track.heading(t), left(-ahead.y(), ahead.x(), 0), from = placement.eye - track.position(t);
   shot.mode = CameraMode::follow;
   shot.location = rounded(Vec3(from.dot(ahead), from.dot(left), from.z()));

@@ -70,4 +70,8 @@ class CameraScript {
 /// ball sets it going first (the track then takes the direction of its first motion).
 std::optional<double> struck_heading(const Scene& scene, const Timeline& timeline, int ball);
 
+/// The later strikes of `ball` by a stick (after the event that first sets it going), each from its
+/// shot's start: from there the track heads along that shot's stick.
+std::vector<TrackStrike> later_strikes(const Scene& scene, const Timeline& timeline, int ball);
+
 }  // namespace bsim
