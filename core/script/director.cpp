@@ -17,9 +17,9 @@
 //   - a shot holds long enough to be read: no description spans less than kMinDescriptionSeconds
 //     (R. Thompson and C. J. Bowen, "Grammar of the Edit", 2009: a shot needs time for the viewer to
 //     take in its content);
-//   - one camera, carried: every change is a blend (no cut), the camera never moves faster than a
-//     person walks with it (kCameraCarrySpeed), keeps room around the balls and stays above the
-//     table, below the ceiling and out of the lamp.
+//   - one camera, carried: every change within a shot is a blend (no cut), the camera never moves
+//     faster than a person walks with it (kCameraCarrySpeed), keeps room around the balls and stays
+//     above the table, below the ceiling and out of the lamp.
 // Each placement is chosen from a fixed, ordered list of candidates by simulating the real camera
 // (CameraScript::pose) over the shot: the first that keeps every pocketed ball and the cue ball in
 // the picture long enough and breaks no rule wins, so the result is deterministic.
