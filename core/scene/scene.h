@@ -89,11 +89,11 @@ struct CameraKey {
   int ordinal = 1;         ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
   int a = -1, b = -1;      ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
   double seconds = 0;      ///< at: s after the start of the shot (as text: camera_key_text.h)
+  SourceLoc a_loc, b_loc;  ///< the ball index tokens
   /// `shot K` before the key (an extension): the 0-based shot it counts within (K - 1); -1 without
   /// it, counting over the whole scene.
   int shot = -1;
-  SourceLoc a_loc, b_loc;  ///< the ball index tokens
-  SourceLoc shot_loc;      ///< the shot number token after `shot`
+  SourceLoc shot_loc;  ///< the shot number token after `shot`
 };
 
 /// One `event N pre post <mode> ...` line of the camera script.

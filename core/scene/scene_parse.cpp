@@ -559,8 +559,10 @@ class Parser {
     const Token& number = take("a shot number after 'shot'");
     key.shot_loc = number.loc;
     if (!parse_integer(number.text, k))
-      fail_at_value(number, "expected an integer for the shot number after 'shot' (from 1, one shot per 'cue' line), "
-                            "found " + quote_token(number.text));
+      fail_at_value(number,
+                    "expected an integer for the shot number after 'shot' (from 1, one shot per 'cue' line), "
+                    "found " +
+                        quote_token(number.text));
     if (k < 1)
       fail(number.loc, "expected a shot from 1 (the first 'cue' line's shot), found " + quote_token(number.text));
     key.shot = static_cast<int>(std::min<long long>(k, INT_MAX) - 1);
