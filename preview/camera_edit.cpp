@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <tuple>
 #include <utility>
 
 #include "atomic_file.h"
@@ -63,46 +64,68 @@ struct Instant {
   int event = -1;
 };
 
-/// Every moment a key can name, in the order the events list them.
+/// The text of a key that counts within shot `shot` (0-based) when the scene has several, else over it.
+std::string shot_key_text(const Timeline& timeline, int shot, CameraKeyKind kind, int a = -1, int b = -1,
+                          int ordinal = 1) {
+  CameraKey key = key_of(kind, a, b, ordinal);
+  key.shot = timeline.shot_count() > 1 ? shot : -1;
+  return camera_key_text(key);
+}
+
+/// Every moment a key can name, in the order the events list them (then the later shots' starts). In a
+/// scene of several shots each key counts within its shot (`shot 2 cue`, `shot 2 hit 0 3`), so it stays
+/// on its moment whatever the shots before it do.
 std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
   std::vector<NamedMoment> moments;
-  std::map<std::pair<int, int>, std::vector<Instant>> hits;
-  std::map<int, std::vector<Instant>> cushions;
-  bool cue_named = false;
+  std::map<std::tuple<int, int, int>, std::vector<Instant>> hits;  // by shot and the two balls
+  std::map<std::pair<int, int>, std::vector<Instant>> cushions;    // by shot and ball
+  std::vector<int> cues_named;
+  const int last = std::max(1, timeline.shot_count()) - 1;
   for (const Event& e : timeline.events()) {
     switch (e.type) {
-      case EventType::start: moments.push_back({camera_key_text(key_of(CameraKeyKind::start)), e.time, e.index}); break;
-      case EventType::end: moments.push_back({camera_key_text(key_of(CameraKeyKind::end)), e.time, e.index}); break;
+      case EventType::start:
+        moments.push_back({shot_key_text(timeline, 0, CameraKeyKind::start), e.time, e.index});
+        break;
+      case EventType::end:
+        moments.push_back({shot_key_text(timeline, last, CameraKeyKind::end), e.time, e.index});
+        break;
       case EventType::cue:
-        if (!cue_named) moments.push_back({camera_key_text(key_of(CameraKeyKind::cue)), e.time, e.index});
-        cue_named = true;
+        if (std::find(cues_named.begin(), cues_named.end(), e.shot) == cues_named.end())
+          moments.push_back({shot_key_text(timeline, e.shot, CameraKeyKind::cue), e.time, e.index});
+        cues_named.push_back(e.shot);
         break;
       case EventType::ball_ball:
-        for (const Contact& c : e.contacts) hits[{std::min(c.a, c.b), std::max(c.a, c.b)}].push_back({c.time, e.index});
+        for (const Contact& c : e.contacts)
+          hits[{e.shot, std::min(c.a, c.b), std::max(c.a, c.b)}].push_back({c.time, e.index});
         break;
       case EventType::ball_rail:
-        if (!e.balls.empty()) cushions[e.balls[0]].push_back({e.time, e.index});
+        if (!e.balls.empty()) cushions[{e.shot, e.balls[0]}].push_back({e.time, e.index});
         break;
     }
   }
+  for (int k = 1; k <= last; ++k)
+    moments.push_back(
+        {shot_key_text(timeline, k, CameraKeyKind::start), timeline.shots()[static_cast<std::size_t>(k)].start, -1});
   // Counted in time order, as the keys resolve (camera_key.cpp).
-  for (auto& [pair, found] : hits) {
+  for (auto& [balls, found] : hits) {
     std::stable_sort(found.begin(), found.end(), [](const Instant& x, const Instant& y) { return x.time < y.time; });
+    const auto [shot, a, b] = balls;
     for (std::size_t k = 0; k < found.size(); ++k)
       if (const auto ordinal = key_ordinal(k + 1, found.size()))
-        moments.push_back({camera_key_text(key_of(CameraKeyKind::hit, pair.first, pair.second, *ordinal)),
-                           found[k].time, found[k].event});
+        moments.push_back(
+            {shot_key_text(timeline, shot, CameraKeyKind::hit, a, b, *ordinal), found[k].time, found[k].event});
   }
   for (const auto& [ball, found] : cushions)
     for (std::size_t k = 0; k < found.size(); ++k)
       if (const auto ordinal = key_ordinal(k + 1, found.size()))
-        moments.push_back(
-            {camera_key_text(key_of(CameraKeyKind::cushion, ball, -1, *ordinal)), found[k].time, found[k].event});
-  std::vector<int> dropped;
+        moments.push_back({shot_key_text(timeline, ball.first, CameraKeyKind::cushion, ball.second, -1, *ordinal),
+                           found[k].time, found[k].event});
+  std::vector<std::pair<int, int>> dropped;  // shot and ball: a key names a ball's first drop in a shot
   for (const PocketDrop& d : timeline.pocket_drops()) {
-    if (std::find(dropped.begin(), dropped.end(), d.ball) != dropped.end()) continue;
-    dropped.push_back(d.ball);
-    moments.push_back({camera_key_text(key_of(CameraKeyKind::pocket, d.ball)), d.time, -1});
+    const std::pair<int, int> which{timeline.shot_count() > 1 ? timeline.shot_at(d.time) : 0, d.ball};
+    if (std::find(dropped.begin(), dropped.end(), which) != dropped.end()) continue;
+    dropped.push_back(which);
+    moments.push_back({shot_key_text(timeline, which.first, CameraKeyKind::pocket, d.ball), d.time, -1});
   }
   return moments;
 }
@@ -134,11 +157,8 @@ CameraShot placed_shot(const CameraPlacement& placement, const CameraShot* exist
     return shot;
   }
   // The eye as the follow camera's offset: ahead, left and up in the ball's frame at time t.
-  std::optional<double> heading;
-  // The track the camera script builds for this ball (camera_script.cpp), so the offset written puts the
-  // eye where it is now: its heading at rest is the first shot's, also in a scene of several shots.
-  if (placement.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
-  const BallTrack track(timeline, placement.ball, heading);
+  const BallTrack track(timeline, placement.ball, struck_heading(scene, timeline, placement.ball),
+                        later_strikes(scene, timeline, placement.ball));
   const Vec3 ahead = track.heading(t), left(-ahead.y(), ahead.x(), 0), from = placement.eye - track.position(t);
   shot.mode = CameraMode::follow;
   shot.location = rounded(Vec3(from.dot(ahead), from.dot(left), from.z()));
@@ -175,9 +195,15 @@ NamedMoment name_moment(const Timeline& timeline, double t) {
   for (const NamedMoment& m : moments)
     if (!nearest || std::abs(m.time - t) < std::abs(nearest->time - t)) nearest = &m;
   if (nearest && std::abs(nearest->time - t) <= kKeySnap) return *nearest;
-  // `at T` counts from the start of the shot; T rounded down to the millisecond stays in the shot.
-  const double start = timeline.events().empty() ? 0.0 : timeline.events().front().time;
+  // `at T` counts from the start of the shot (in a scene of several, of the shot in play: `shot K at
+  // T`); T rounded down to the millisecond stays in the shot.
+  const bool several = timeline.shot_count() > 1;
+  const int shot = several ? timeline.shot_at(t) : -1;
+  const double start = several                     ? timeline.shots()[static_cast<std::size_t>(shot)].start
+                       : timeline.events().empty() ? 0.0
+                                                   : timeline.events().front().time;
   CameraKey key = key_of(CameraKeyKind::at);
+  key.shot = shot;
   key.seconds = std::strtod(fixed3(std::max(0.0, std::floor((t - start) * 1000 + 1e-6) / 1000)).c_str(), nullptr);
   return {camera_key_text(key), start + key.seconds, -1};
 }

@@ -81,19 +81,22 @@ std::vector<std::string_view> camera_key_first_words() {
   std::vector<std::string_view> words;
   for (const KindWord& k : kKindWords) words.push_back(k.word);
   words.insert(words.end(), std::begin(kOrdinalWords), std::end(kOrdinalWords));
+  words.push_back(kShotWord);
   return words;
 }
 
 std::string camera_key_list() {
   std::string out;
   for (const KindWord& k : kKindWords) out.append(out.empty() ? "" : ", ").append(k.word);
-  return out + ", with second, third, fourth, fifth or last before hit or cushion";
+  return out + ", with second, third, fourth, fifth or last before hit or cushion, and 'shot K' before any";
 }
 
 std::string camera_key_text(const CameraKey& key, int event) {
   if (key.kind == CameraKeyKind::event) return std::to_string(event);
-  std::string text(takes_ordinal(key.kind) ? camera_key_ordinal_word(key.ordinal) : "");
-  text.append(text.empty() ? "" : " ").append(camera_key_word(key.kind));
+  std::string text = key.shot >= 0 ? std::string(kShotWord) + " " + std::to_string(key.shot + 1) + " " : "";
+  const std::string_view ordinal = takes_ordinal(key.kind) ? camera_key_ordinal_word(key.ordinal) : "";
+  if (!ordinal.empty()) text.append(ordinal).append(" ");
+  text.append(camera_key_word(key.kind));
   const int balls[] = {key.a, key.b};
   for (int k = 0; k < ball_operands(key.kind); ++k) text += " " + std::to_string(balls[k]);
   if (takes_seconds(key.kind)) text += " " + format_number(key.seconds);
@@ -108,6 +111,11 @@ std::optional<CameraKey> parse_camera_key(std::string_view text, int* event) {
     if (n < 0 || n > CameraShot::kLastEvent) return std::nullopt;
     if (event) *event = n;
     return key;
+  }
+  if (int k = 0; words.size() > 2 && words[0] == kShotWord && read_number(words[1], k)) {
+    if (k < 1) return std::nullopt;
+    key.shot = k - 1;
+    next = 2;
   }
   if (const std::optional<int> ordinal = camera_key_ordinal(words[next])) {
     key.ordinal = *ordinal;
@@ -125,7 +133,7 @@ std::optional<CameraKey> parse_camera_key(std::string_view text, int* event) {
 }
 
 bool same_camera_key(const CameraKey& a, const CameraKey& b) {
-  if (a.kind != b.kind) return false;
+  if (a.kind != b.kind || a.shot != b.shot) return false;
   if (takes_ordinal(a.kind) && a.ordinal != b.ordinal) return false;
   if (ball_operands(a.kind) >= 1 && a.a != b.a) return false;
   if (ball_operands(a.kind) >= 2 && a.b != b.b) return false;

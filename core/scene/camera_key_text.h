@@ -31,14 +31,17 @@ int ball_operands(CameraKeyKind kind);
 /// Whether seconds follow the kind's word: at.
 bool takes_seconds(CameraKeyKind kind);
 
-/// Every word a key may start with: the kinds' words, then the ordinals.
+/// The word before a shot number that makes a key count within that shot: `shot 2 cue`.
+inline constexpr std::string_view kShotWord = "shot";
+
+/// Every word a key may start with: the kinds' words, then the ordinals, then kShotWord.
 std::vector<std::string_view> camera_key_first_words();
 /// The keys for a message: "start, cue, end, hit, cushion, pocket, at, with second, ... before hit or cushion".
 std::string camera_key_list();
 
 /// A key as it is written after `event`: "start", "second hit 0 5", "last cushion 3", "at 1.5" (its
-/// seconds as the shortest text that reads back exactly); an event number (kind event) as `event`
-/// ("7", "65535").
+/// seconds as the shortest text that reads back exactly), "shot 2 cue" (a key with a shot, its number
+/// from 1); an event number (kind event) as `event` ("7", "65535").
 std::string camera_key_text(const CameraKey& key, int event = 0);
 
 /// A key read back from camera_key_text()'s form (words separated by single spaces, numbers as
@@ -46,7 +49,7 @@ std::string camera_key_text(const CameraKey& key, int event = 0);
 /// None when the text is no key. No source locations.
 std::optional<CameraKey> parse_camera_key(std::string_view text, int* event = nullptr);
 
-/// Whether two keys are written the same (the same kind, ordinal, balls and seconds as their kind
+/// Whether two keys are written the same (the same kind, shot, ordinal, balls and seconds as their kind
 /// takes; not where they were written). Event numbers are not part of a key: compare them beside it.
 bool same_camera_key(const CameraKey& a, const CameraKey& b);
 

@@ -79,7 +79,8 @@ struct Cue {
 enum class CameraMode { hover, look, follow };
 
 /// What a camera description starts at: the seed's event number, or a key naming a moment of the
-/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, pocket I, at T.
+/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, pocket I, at T, each
+/// optionally after `shot K` to count within the K-th shot.
 enum class CameraKeyKind { event, start, cue, end, hit, cushion, pocket, at };
 
 struct CameraKey {
@@ -89,6 +90,10 @@ struct CameraKey {
   int a = -1, b = -1;      ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
   double seconds = 0;      ///< at: s after the start of the shot (as text: camera_key_text.h)
   SourceLoc a_loc, b_loc;  ///< the ball index tokens
+  /// `shot K` before the key (an extension): the 0-based shot it counts within (K - 1); -1 without
+  /// it, counting over the whole scene.
+  int shot = -1;
+  SourceLoc shot_loc;  ///< the shot number token after `shot`
 };
 
 /// One `event N pre post <mode> ...` line of the camera script.

@@ -543,6 +543,7 @@ class Parser {
                       "' is an extension that --strict rejects (the seed names an event by its number)");
     CameraKey& key = s.key;
     std::string_view word = t.text;
+    if (word == kShotWord) word = shot_prefix(key);
     if (const std::optional<int> ordinal = camera_key_ordinal(word)) {
       key.ordinal = *ordinal;
       const Token& what = take("'hit' or 'cushion' after '" + std::string(word) + "'");
@@ -554,6 +555,30 @@ class Parser {
     }
     key.kind = *camera_key_kind(word);
     key_operands(key);
+  }
+
+  /// `shot K` before a key: the shot it counts within (K from 1; checked against the scene's shots once
+  /// they are all read). Gives the key's own first word, after it.
+  std::string_view shot_prefix(CameraKey& key) {
+    long long k = 0;
+    const Token& number = take("a shot number after 'shot'");
+    key.shot_loc = number.loc;
+    if (!parse_integer(number.text, k))
+      fail_at_value(number,
+                    "expected an integer for the shot number after 'shot' (from 1, one shot per 'cue' line), "
+                    "found " +
+                        quote_token(number.text));
+    if (k < 1)
+      fail(number.loc, "expected a shot from 1 (the first 'cue' line's shot), found " + quote_token(number.text));
+    key.shot = static_cast<int>(std::min<long long>(k, INT_MAX) - 1);
+    const Token& word = take("a camera key after 'shot " + std::string(number.text) + "'");
+    if (!camera_key_ordinal(word.text) && !camera_key_kind(word.text)) {
+      std::vector<std::string_view> words = camera_key_first_words();
+      words.pop_back();  // not `shot` again
+      fail_at_value(word, "expected a camera key after 'shot " + std::string(number.text) + "' (" + camera_key_list() +
+                              "), found " + quote_token(word.text) + did_you_mean(word.text, words));
+    }
+    return word.text;
   }
 
   /// The balls or seconds after a key's word (camera_key_text.h: ball_operands, takes_seconds).

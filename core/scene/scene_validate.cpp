@@ -82,6 +82,11 @@ class Validator {
         error(spin.ball_loc,
               "expected a ball index for 'spin' " + index_range() + ", found " + std::to_string(spin.ball));
     for (const CameraShot& shot : scene_.camera)
+      if (static_cast<std::size_t>(shot.key.shot + 1) > scene_.cues.size())
+        error(shot.key.shot_loc, "expected a shot from 1 to " + std::to_string(scene_.cues.size()) +
+                                     " (the scene has " + plural(scene_.cues.size(), "shot") +
+                                     ", one per 'cue' line), found " + std::to_string(shot.key.shot + 1));
+    for (const CameraShot& shot : scene_.camera)
       if (shot.mode != CameraMode::hover && !ball_exists(shot.ball))
         error(shot.ball_loc, std::string("expected the index of the ball the camera ") +
                                  (shot.mode == CameraMode::look ? "looks at " : "follows ") + index_range() +

@@ -22,56 +22,32 @@ bool out_of_sight(const BallState& state, double radius) {
 }
 }  // namespace
 
-BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad)
+BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> initial_heading_rad,
+                     std::vector<TrackStrike> later)
     : timeline_(&timeline), ball_(ball) {
   const double duration = timeline.duration();
-  const double radius = timeline.physics().ball_radius;
   const int samples = static_cast<int>(std::ceil(duration / kSampleStep)) + 1;
   auto sample_time = [&](int i) { return std::min(i * kSampleStep, duration); };
-
-  // Where the ball leaves the picture: the first sample out of sight, refined by bisection. The
-  // samples in sight are kept: position() gives the same at those times.
-  std::vector<Vec3> in_sight;
-  in_sight.reserve(static_cast<std::size_t>(samples));
-  hidden_time_ = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < samples; ++i) {
-    const BallState state = motion_state(sample_time(i));
-    if (!out_of_sight(state, radius)) {
-      in_sight.push_back(state.position);
-      continue;
-    }
-    if (i == 0) {
-      hidden_time_ = 0;
-      break;
-    }
-    double seen = sample_time(i - 1), unseen = sample_time(i);
-    for (int k = 0; k < 60 && unseen - seen > 1e-12; ++k) {
-      const double mid = 0.5 * (seen + unseen);
-      (out_of_sight(motion_state(mid), radius) ? unseen : seen) = mid;
-    }
-    hidden_time_ = seen;
-    break;
-  }
+  const std::vector<Vec3> path = sample_path(samples);
 
   // The path as chords between samples: arc length, and the direction of each chord unwrapped so
-  // that averaging angles over the path never jumps by a full turn.
+  // that averaging angles over the path never jumps by a full turn. A ball put back on the bed (or
+  // placed) at a later shot's start jumps there: no chord.
+  std::vector<double> jumps;
+  for (const ShotSpan& span : timeline.shots())
+    if (span.start > 0) jumps.push_back(span.start);
   arc_.reserve(static_cast<std::size_t>(samples));
   arc_.push_back(0);
   bool have_angle = initial_heading_rad.has_value();
   initial_angle_ = initial_heading_rad.value_or(0.0);
   double last_angle = initial_angle_, integral = 0;
-  // Every sample after those in sight is later than hidden_time_, where position() stays.
-  const Vec3 last_seen = in_sight.size() < static_cast<std::size_t>(samples) ? position(hidden_time_) : Vec3(0, 0, 0);
-  auto sample_position = [&](int i) {
-    return static_cast<std::size_t>(i) < in_sight.size() ? in_sight[static_cast<std::size_t>(i)] : last_seen;
-  };
-  Vec3 previous = sample_position(0);
   for (int i = 1; i < samples; ++i) {
-    const Vec3 here = sample_position(i);
-    const double dx = here.x() - previous.x(), dy = here.y() - previous.y();
-    previous = here;
+    const std::size_t k = static_cast<std::size_t>(i);
+    const double dx = path[k].x() - path[k - 1].x(), dy = path[k].y() - path[k - 1].y();
     const double chord = std::hypot(dx, dy);
-    if (!(chord > kMinChord)) {
+    const bool jump = std::any_of(jumps.begin(), jumps.end(),
+                                  [&](double t) { return t > sample_time(i - 1) && t <= sample_time(i); });
+    if (!(chord > kMinChord) || jump) {
       arc_.push_back(arc_.back());
       continue;
     }
@@ -91,9 +67,62 @@ BallTrack::BallTrack(const Timeline& timeline, int ball, std::optional<double> i
   }
   knot_arc_.push_back(arc_.back());
   knot_integral_.push_back(integral);
+  add_resets(later);
 }
 
-Vec3 BallTrack::position(double t) const { return motion_state(std::min(t, hidden_time_)).position; }
+std::vector<Vec3> BallTrack::sample_path(int samples) {
+  const double duration = timeline_->duration();
+  const double radius = timeline_->physics().ball_radius;
+  auto sample_time = [&](int i) { return std::min(i * kSampleStep, duration); };
+  // Where the ball leaves the picture (the last sample in sight to the first out of it, refined by
+  // bisection), and where a later shot puts it back: out of sight it stays at its last visible place.
+  std::vector<Vec3> path;
+  path.reserve(static_cast<std::size_t>(samples));
+  bool hidden = false;
+  for (int i = 0; i < samples; ++i) {
+    const double t = sample_time(i);
+    const BallState state = motion_state(t);
+    const bool out = out_of_sight(state, radius);
+    if (out == hidden) {
+      path.push_back(out ? path.back() : state.position);
+      continue;
+    }
+    if (out && i == 0) {
+      hidden_.push_back({0, std::numeric_limits<double>::infinity()});
+    } else {
+      double seen = out ? sample_time(i - 1) : t, unseen = out ? t : sample_time(i - 1);
+      for (int k = 0; k < 60 && std::abs(unseen - seen) > 1e-12; ++k) {
+        const double mid = 0.5 * (seen + unseen);
+        (out_of_sight(motion_state(mid), radius) ? unseen : seen) = mid;
+      }
+      if (out) hidden_.push_back({seen, std::numeric_limits<double>::infinity()});
+      if (!out) hidden_.back().end = seen;
+    }
+    hidden = out;
+    path.push_back(out ? motion_state(hidden_.back().begin).position : state.position);
+  }
+  return path;
+}
+
+void BallTrack::add_resets(const std::vector<TrackStrike>& later) {
+  for (const TrackStrike& strike : later) {
+    Reset r;
+    r.from = strike.from;
+    r.arc = arc_length(strike.time);
+    // Unwrapped to the path after it (or before it, if the ball never moves again).
+    const auto next = std::lower_bound(knot_arc_.begin(), knot_arc_.end() - 1, r.arc);
+    const std::size_t k = static_cast<std::size_t>(next - knot_arc_.begin());
+    const double near = knot_angle_.empty() ? initial_angle_ : knot_angle_[std::min(k, knot_angle_.size() - 1)];
+    r.angle = near + std::remainder(strike.heading - near, 2.0 * std::numbers::pi);
+    resets_.push_back(r);
+  }
+}
+
+Vec3 BallTrack::position(double t) const {
+  for (const Hidden& h : hidden_)
+    if (t >= h.begin && t < h.end) return motion_state(h.begin).position;
+  return motion_state(t).position;
+}
 
 double BallTrack::arc_length(double t) const {
   const double duration = timeline_->duration();
@@ -119,6 +148,12 @@ double BallTrack::angle_integral(double s) const {
 double BallTrack::heading_angle(double t) const {
   const double s = arc_length(t);
   const double span = std::max(kTurnLength, s - arc_length(t - kTurnTime));
+  // After a later shot's start the path before its strike is the stick's line, as before the first.
+  const Reset* reset = nullptr;
+  for (const Reset& r : resets_)
+    if (r.from <= t) reset = &r;
+  if (reset && s - span < reset->arc)
+    return (angle_integral(s) - angle_integral(reset->arc) + reset->angle * (reset->arc - (s - span))) / span;
   return (angle_integral(s) - angle_integral(s - span)) / span;
 }
 

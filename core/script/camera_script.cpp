@@ -81,6 +81,34 @@ bool check_balls(const Scene& scene, const std::vector<CameraShot>& shots, std::
 
 }  // namespace
 
+std::optional<double> struck_heading(const Scene& scene, const Timeline& timeline, int ball) {
+  for (const Event& e : timeline.events()) {
+    if (e.type == EventType::start || e.type == EventType::end) continue;
+    if (std::find(e.balls.begin(), e.balls.end(), ball) == e.balls.end()) continue;
+    if (e.type != EventType::cue) return std::nullopt;
+    const auto k = static_cast<std::size_t>(std::clamp(e.shot, 0, scene.shot_count() - 1));
+    return scene.cues[k].heading_deg * kDegToRad;
+  }
+  if (ball == scene.cue().target) return scene.cue().heading_deg * kDegToRad;
+  return std::nullopt;
+}
+
+std::vector<TrackStrike> later_strikes(const Scene& scene, const Timeline& timeline, int ball) {
+  std::vector<TrackStrike> out;
+  bool first = true;
+  for (const Event& e : timeline.events()) {
+    if (e.type == EventType::start || e.type == EventType::end) continue;
+    if (std::find(e.balls.begin(), e.balls.end(), ball) == e.balls.end()) continue;
+    const bool struck = !first && e.type == EventType::cue && e.shot < timeline.shot_count();
+    first = false;
+    if (!struck) continue;
+    const auto k = static_cast<std::size_t>(std::clamp(e.shot, 0, scene.shot_count() - 1));
+    out.push_back(
+        {timeline.shots()[static_cast<std::size_t>(e.shot)].start, e.time, scene.cues[k].heading_deg * kDegToRad});
+  }
+  return out;
+}
+
 CameraShot CameraScript::default_shot(const Scene& scene) {
   // The nose lines' extent (the standard bed's when the scene has none).
   const TableRect noses = table_layout(scene).noses;
@@ -148,9 +176,8 @@ std::optional<CameraScript> CameraScript::build(const Scene& scene, const std::v
     if (shot.mode == CameraMode::hover) continue;
     auto& track = script.tracks_[static_cast<std::size_t>(shot.ball)];
     if (track) continue;
-    std::optional<double> heading;
-    if (shot.ball == scene.cue().target) heading = scene.cue().heading_deg * kDegToRad;
-    track.emplace(timeline, shot.ball, heading);
+    track.emplace(timeline, shot.ball, struck_heading(scene, timeline, shot.ball),
+                  later_strikes(scene, timeline, shot.ball));
   }
   return script;
 }

@@ -65,4 +65,13 @@ class CameraScript {
   std::vector<std::optional<BallTrack>> tracks_;  ///< per ball, for the balls the script watches
 };
 
+/// rad, the heading a `look` or `follow` camera's track of `ball` (ball_track.h) starts from: the
+/// stick's, when a stick first sets the ball going (the cue of the shot in play then); none when a
+/// ball sets it going first (the track then takes the direction of its first motion).
+std::optional<double> struck_heading(const Scene& scene, const Timeline& timeline, int ball);
+
+/// The later strikes of `ball` by a stick (after the event that first sets it going), each from its
+/// shot's start: from there the track heads along that shot's stick.
+std::vector<TrackStrike> later_strikes(const Scene& scene, const Timeline& timeline, int ball);
+
 }  // namespace bsim

@@ -17,14 +17,17 @@
 //   - a shot holds long enough to be read: no description spans less than kMinDescriptionSeconds
 //     (R. Thompson and C. J. Bowen, "Grammar of the Edit", 2009: a shot needs time for the viewer to
 //     take in its content);
-//   - one camera, carried: every change is a blend (no cut), the camera never moves faster than a
-//     person walks with it (kCameraCarrySpeed), keeps room around the balls and stays above the
-//     table, below the ceiling and out of the lamp.
+//   - one camera, carried: every change within a shot is a blend (no cut), the camera never moves
+//     faster than a person walks with it (kCameraCarrySpeed), keeps room around the balls and stays
+//     above the table, below the ceiling and out of the lamp.
 // Each placement is chosen from a fixed, ordered list of candidates by simulating the real camera
 // (CameraScript::pose) over the shot: the first that keeps every pocketed ball and the cue ball in
 // the picture long enough and breaks no rule wins, so the result is deterministic.
 // The beats below propose the candidates; director_judge.cpp holds the rules and the judge that
 // films and scores them.
+// A scene of several shots is filmed shot by shot, each as one (its keys counting within it: `shot K
+// cue`), over its stretch of the timeline from its start to the next shot's; between shots the camera
+// cuts to the next shooter's view, as broadcast pool cuts between shots (within a shot it only blends).
 
 #include <algorithm>
 #include <cmath>
@@ -86,16 +89,18 @@ CameraShot keyed(CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1, do
 }
 
 /// One stroke as the director films it: the cue ball, the way it is sent, and the span of time its
-/// descriptions cover. A scene holds one stroke today, over the whole timeline; a timeline of several
-/// would have one each, with its own span, and the beats below run once for each.
+/// descriptions cover. A scene has one per shot, each over its shot's stretch of the timeline, and
+/// the beats below run once for each.
 struct Stroke {
-  double begin = 0;               ///< s, its first description's key
-  double end = 0;                 ///< s, where its last description ends
-  double cue_time = 0;            ///< s, the stick strikes
-  int cue_ball = 0;               ///< file-order index
-  Vec3 cue_at{0, 0, 0};           ///< m, where the cue ball rests before the stroke
-  Vec3 aim{1, 0, 0};              ///< unit, horizontal: the line of aim
-  int first_object = -1;          ///< the cue ball's first object ball, -1 when it meets none
+  int shot = 0;           ///< from 0 (Scene::cues, Timeline::shots())
+  int key_shot = -1;      ///< what its keys count within: `shot`, or -1 (the whole scene) in a scene of one shot
+  double begin = 0;       ///< s, its first description's key
+  double end = 0;         ///< s, where its last description ends
+  double cue_time = 0;    ///< s, the stick strikes
+  int cue_ball = 0;       ///< file-order index
+  Vec3 cue_at{0, 0, 0};   ///< m, where the cue ball rests before the stroke
+  Vec3 aim{1, 0, 0};      ///< unit, horizontal: the line of aim
+  int first_object = -1;  ///< the cue ball's first object ball, -1 when it meets none
   Vec3 first_object_at{0, 0, 0};  ///< m, where that ball rests before the stroke
 };
 
@@ -142,12 +147,19 @@ ShotSamples sample_shot(const Timeline& timeline, double radius) {
   ShotSamples out;
   const double duration = timeline.duration();
   const int balls = timeline.ball_count();
-  out.drop_time.assign(static_cast<std::size_t>(balls), std::numeric_limits<double>::infinity());
-  for (const PocketDrop& d : timeline.pocket_drops())
-    out.drop_time[static_cast<std::size_t>(d.ball)] = std::min(out.drop_time[static_cast<std::size_t>(d.ball)], d.time);
-  out.peak_speed.assign(static_cast<std::size_t>(balls), 0.0);
+  const auto shots = static_cast<std::size_t>(std::max(1, timeline.shot_count()));
+  out.drop_time.assign(shots,
+                       std::vector<double>(static_cast<std::size_t>(balls), std::numeric_limits<double>::infinity()));
+  for (const PocketDrop& d : timeline.pocket_drops()) {
+    double& first = out.drop_time[static_cast<std::size_t>(timeline.shot_at(d.time))][static_cast<std::size_t>(d.ball)];
+    first = std::min(first, d.time);
+  }
+  out.peak_speed.assign(shots, std::vector<double>(static_cast<std::size_t>(balls), 0.0));
   for (int i = 0; i / kGridHz <= duration + 1e-9; ++i) {
     const double t = std::min(i / kGridHz, duration);
+    const auto shot = static_cast<std::size_t>(timeline.shot_at(t));
+    const std::vector<double>& drop_time = out.drop_time[shot];
+    std::vector<double>& peak_speed = out.peak_speed[shot];
     out.times.push_back(t);
     std::vector<Vec3> where;
     std::vector<char> shown, moving;
@@ -157,10 +169,10 @@ ShotSamples sample_shot(const Timeline& timeline, double radius) {
       where.push_back(s.position);
       shown.push_back(s.position.z() >= -radius && s.motion != Motion::pocketed);
       const double speed = Vec3(s.velocity.x(), s.velocity.y(), 0).norm();
-      const bool goes = speed > kMovingSpeed && s.motion != Motion::falling && s.motion != Motion::pocketed &&
-                        t < out.drop_time[ball];
+      const bool goes =
+          speed > kMovingSpeed && s.motion != Motion::falling && s.motion != Motion::pocketed && t < drop_time[ball];
       moving.push_back(goes);
-      if (goes) out.peak_speed[ball] = std::max(out.peak_speed[ball], speed);
+      if (goes) peak_speed[ball] = std::max(peak_speed[ball], speed);
     }
     out.where.push_back(std::move(where));
     out.shown.push_back(std::move(shown));
@@ -169,22 +181,24 @@ ShotSamples sample_shot(const Timeline& timeline, double radius) {
   return out;
 }
 
-/// The ball that matters: the last object ball pocketed, else the cue ball if it drops, else the
-/// fastest object ball, else the cue ball.
-int ball_that_matters(const Timeline& timeline, const ShotSamples& samples, int cue_ball) {
+/// The ball that matters in shot `shot`: the last object ball pocketed, else the cue ball if it drops,
+/// else the fastest object ball, else the cue ball.
+int ball_that_matters(const Timeline& timeline, const ShotSamples& samples, int shot, int cue_ball) {
+  const std::vector<double>& drop_time = samples.drop_time[static_cast<std::size_t>(shot)];
+  const std::vector<double>& peak_speed = samples.peak_speed[static_cast<std::size_t>(shot)];
   int subject = -1;
   double last_drop = -1;
   for (const PocketDrop& d : timeline.pocket_drops())
-    if (d.ball != cue_ball && d.time > last_drop) {
+    if (d.ball != cue_ball && timeline.shot_at(d.time) == shot && d.time > last_drop) {
       last_drop = d.time;
       subject = d.ball;
     }
-  if (subject < 0 && std::isfinite(samples.drop_time[static_cast<std::size_t>(cue_ball)])) subject = cue_ball;
+  if (subject < 0 && std::isfinite(drop_time[static_cast<std::size_t>(cue_ball)])) subject = cue_ball;
   if (subject < 0) {
     double fastest = 0.05;
     for (int b = 0; b < timeline.ball_count(); ++b)
-      if (b != cue_ball && samples.peak_speed[static_cast<std::size_t>(b)] > fastest) {
-        fastest = samples.peak_speed[static_cast<std::size_t>(b)];
+      if (b != cue_ball && peak_speed[static_cast<std::size_t>(b)] > fastest) {
+        fastest = peak_speed[static_cast<std::size_t>(b)];
         subject = b;
       }
   }
@@ -253,7 +267,8 @@ std::vector<CameraShot> ball_places(int subject, const Vec3& middle, double peak
         const double azimuth = a * 15.0 * kDegToRad;
         const Vec3 location = middle + distance * Vec3(std::cos(azimuth), std::sin(azimuth), 0) +
                               Vec3(0, 0, distance * std::tan(elevation * kDegToRad));
-        add_look(location, distance + 0.5 * (location - previous).norm() + 0.8 * std::abs(elevation - 50.0) * kDegToRad);
+        add_look(location,
+                 distance + 0.5 * (location - previous).norm() + 0.8 * std::abs(elevation - 50.0) * kDegToRad);
       }
   // Crane up (and back) from the shooter's view.
   for (double up : {0.25, 0.5, 0.85})
@@ -315,7 +330,8 @@ std::vector<CameraShot> wide_places(const TableLayout& layout, const Vec3& previ
         s.location = mm(centre + distance * direction);
         s.target = centre;
         const CameraPose pose{s.location, s.target, false};
-        if (!std::all_of(corners.begin(), corners.end(), [&](const Vec3& p) { return CameraView(pose).contains(p, 0.01); }))
+        if (!std::all_of(corners.begin(), corners.end(),
+                         [&](const Vec3& p) { return CameraView(pose).contains(p, 0.01); }))
           continue;
         if (clear_of_room(layout, s.location) && keeps_side(line, wanted, s.location))
           options.push_back({(s.location - previous).norm() + 0.3 * distance, s});
@@ -342,8 +358,9 @@ class Director {
         timeline_(timeline),
         layout_(table_layout(scene)),
         radius_(scene.physics.ball_radius),
-        samples_(sample_shot(timeline, radius_)),
-        judge_(scene, timeline, samples_) {}
+        samples_(sample_shot(timeline, radius_)) {
+    for (int k = 0; k < std::max(1, timeline.shot_count()); ++k) judges_.emplace_back(scene, timeline, samples_, k);
+  }
 
   DirectedCamera run();
 
@@ -358,11 +375,12 @@ class Director {
     return horizontal_unit(timeline_.motion_state(ball, t).velocity, fallback);
   }
 
-  /// Every contact of `ball` with another ball, in time order (a contact inside a group counting).
-  std::vector<Contact> contacts(int ball) const {
+  /// Every contact of `ball` with another ball in the stroke's shot, in time order (a contact inside a
+  /// group counting).
+  std::vector<Contact> contacts(int ball, const Stroke& stroke) const {
     std::vector<Contact> found;
     for (const Event& e : timeline_.events()) {
-      if (e.type != EventType::ball_ball) continue;
+      if (e.type != EventType::ball_ball || e.shot != stroke.shot) continue;
       for (const bsim::Contact& c : e.contacts)
         if (c.a == ball || c.b == ball) found.push_back({c.time, c.a == ball ? c.b : c.a});
     }
@@ -376,8 +394,21 @@ class Director {
     return r.instant->time;
   }
 
-  /// The scene's one stroke, over the whole timeline.
-  Stroke the_stroke() const;
+  /// A key that counts within the stroke's shot (in a scene of several).
+  static CameraShot key_in(const Stroke& stroke, CameraKeyKind kind, int a = -1, int b = -1, int ordinal = 1,
+                           double seconds = 0) {
+    CameraShot shot = keyed(kind, a, b, ordinal, seconds);
+    shot.key.shot = stroke.key_shot;
+    return shot;
+  }
+  /// s, when `ball` first drops in the stroke's shot (infinity if it does not).
+  double drop_time(int ball, const Stroke& stroke) const {
+    return samples_.drop_time[static_cast<std::size_t>(stroke.shot)][static_cast<std::size_t>(ball)];
+  }
+  const Judge& judge(const Stroke& stroke) const { return judges_[static_cast<std::size_t>(stroke.shot)]; }
+
+  /// Shot `shot`'s stroke, over its stretch of the timeline.
+  Stroke stroke_of(int shot) const;
   /// The keys of the stroke's beats.
   Plan plan_beats(const Stroke& stroke) const;
   /// Beat 2's key: the contact that first sets `subject` going (or the strike, for the cue ball).
@@ -397,30 +428,40 @@ class Director {
   TableLayout layout_;
   double radius_ = 0;
   ShotSamples samples_;
-  Judge judge_;
+  std::vector<Judge> judges_;  ///< per shot
 };
 
-Stroke Director::the_stroke() const {
+Stroke Director::stroke_of(int shot) const {
+  const std::vector<ShotSpan>& spans = timeline_.shots();
+  const auto k = static_cast<std::size_t>(shot);
+  const bool several = spans.size() > 1;
   Stroke stroke;
-  stroke.begin = 0.0;
-  stroke.end = timeline_.duration();
-  stroke.cue_time = timeline_.cue_time();
-  stroke.cue_ball = scene_.cue().target;
-  const Ball& cue = scene_.balls[static_cast<std::size_t>(stroke.cue_ball)];
-  stroke.cue_at = cue.position;
-  const double heading_rad = scene_.cue().heading_deg * kDegToRad;
-  stroke.aim = horizontal_unit(cue.velocity, Vec3(std::cos(heading_rad), std::sin(heading_rad), 0));
+  stroke.shot = shot;
+  stroke.key_shot = several ? shot : -1;
+  stroke.begin = several ? spans[k].start : 0.0;
+  stroke.end = several && k + 1 < spans.size() ? spans[k + 1].start : timeline_.duration();
+  stroke.cue_time = several ? spans[k].cue : timeline_.cue_time();
+  const Cue& cue = scene_.cues[std::min(k, scene_.cues.size() - 1)];
+  stroke.cue_ball = cue.target;
+  // The first shot from the scene's own balls; a later one from where the shots before left them.
+  const Ball& ball = scene_.balls[static_cast<std::size_t>(stroke.cue_ball)];
+  const auto rests = [&](int b) {
+    return shot == 0 ? scene_.balls[static_cast<std::size_t>(b)].position : at(b, stroke.cue_time);
+  };
+  stroke.cue_at = rests(stroke.cue_ball);
+  const double heading_rad = cue.heading_deg * kDegToRad;
+  stroke.aim =
+      horizontal_unit(shot == 0 ? ball.velocity : Vec3(0, 0, 0), Vec3(std::cos(heading_rad), std::sin(heading_rad), 0));
   // The cue ball's first object ball.
-  const std::vector<Contact> cue_contacts = contacts(stroke.cue_ball);
+  const std::vector<Contact> cue_contacts = contacts(stroke.cue_ball, stroke);
   stroke.first_object = cue_contacts.empty() ? -1 : cue_contacts.front().other;
-  if (stroke.first_object >= 0)
-    stroke.first_object_at = scene_.balls[static_cast<std::size_t>(stroke.first_object)].position;
+  if (stroke.first_object >= 0) stroke.first_object_at = rests(stroke.first_object);
   return stroke;
 }
 
 Plan Director::plan_beats(const Stroke& stroke) const {
   Plan plan;
-  plan.subject = ball_that_matters(timeline_, samples_, stroke.cue_ball);
+  plan.subject = ball_that_matters(timeline_, samples_, stroke.shot, stroke.cue_ball);
   const std::optional<Moment> going = set_going(plan.subject, stroke);
   if (!going || stroke.end - going->time < kMinDescriptionSeconds) return plan;
   plan.ball = going;
@@ -429,13 +470,13 @@ Plan Director::plan_beats(const Stroke& stroke) const {
 }
 
 std::optional<Moment> Director::set_going(int subject, const Stroke& stroke) const {
-  CameraShot key = keyed(CameraKeyKind::cue);
-  const std::vector<Contact> subject_contacts = contacts(subject);
+  CameraShot key = key_in(stroke, CameraKeyKind::cue);
+  const std::vector<Contact> subject_contacts = contacts(subject, stroke);
   if (subject != stroke.cue_ball && !subject_contacts.empty())
-    key = keyed(CameraKeyKind::hit, subject_contacts.front().other, subject);
+    key = key_in(stroke, CameraKeyKind::hit, subject_contacts.front().other, subject);
   std::optional<double> time = resolve(key);
   if (!time) {
-    key = keyed(CameraKeyKind::cue);
+    key = key_in(stroke, CameraKeyKind::cue);
     time = resolve(key);
   }
   if (!time) return std::nullopt;
@@ -447,18 +488,18 @@ std::optional<Moment> Director::settle(int subject, double after, const Stroke& 
   if (stroke.end - after < 2 * kMinDescriptionSeconds) return std::nullopt;
   const double earliest = after + kMinDescriptionSeconds, latest = stroke.end - kMinDescriptionSeconds;
   std::vector<CameraShot> options;
-  if (std::isfinite(samples_.drop_time[static_cast<std::size_t>(subject)]))
-    options.push_back(keyed(CameraKeyKind::pocket, subject));
+  if (std::isfinite(drop_time(subject, stroke))) options.push_back(key_in(stroke, CameraKeyKind::pocket, subject));
   double last_contact = -1;
   CameraShot last_key;
   for (const Event& e : timeline_.events())
-    if (e.type == EventType::ball_rail && !e.balls.empty() && e.balls[0] == subject && e.time > last_contact) {
+    if (e.type == EventType::ball_rail && e.shot == stroke.shot && !e.balls.empty() && e.balls[0] == subject &&
+        e.time > last_contact) {
       last_contact = e.time;
-      last_key = keyed(CameraKeyKind::cushion, subject, -1, CameraKey::kLast);
+      last_key = key_in(stroke, CameraKeyKind::cushion, subject, -1, CameraKey::kLast);
     }
-  const std::vector<Contact> subject_contacts = contacts(subject);
+  const std::vector<Contact> subject_contacts = contacts(subject, stroke);
   if (!subject_contacts.empty() && subject_contacts.back().time > last_contact)
-    last_key = keyed(CameraKeyKind::hit, subject_contacts.back().other, subject, CameraKey::kLast);
+    last_key = key_in(stroke, CameraKeyKind::hit, subject_contacts.back().other, subject, CameraKey::kLast);
   if (last_contact >= 0 || !subject_contacts.empty()) options.push_back(last_key);
   for (const CameraShot& option : options) {
     const std::optional<double> t = resolve(option);
@@ -472,9 +513,10 @@ std::optional<Moment> Director::settle(int subject, double after, const Stroke& 
       const Vec3 v = timeline_.motion_state(subject, t).velocity;
       if (Vec3(v.x(), v.y(), 0).norm() < 0.3) break;
     }
-  const double seconds = std::ceil(std::clamp(slow, earliest, latest) * 100.0) / 100.0;
-  if (seconds > latest) return std::nullopt;
-  const CameraShot key = keyed(CameraKeyKind::at, -1, -1, 1, seconds);
+  // Its seconds count from the start of the stroke's shot (of the scene, for a scene of one).
+  const double seconds = std::ceil((std::clamp(slow, earliest, latest) - stroke.begin) * 100.0) / 100.0;
+  if (stroke.begin + seconds > latest) return std::nullopt;
+  const CameraShot key = key_in(stroke, CameraKeyKind::at, -1, -1, 1, seconds);
   const std::optional<double> time = resolve(key);
   if (!time) return std::nullopt;
   return Moment{key, *time};
@@ -485,7 +527,7 @@ void Director::film(const Stroke& stroke, Draft& draft) const {
   const int subject = plan.subject;
   // The keys and their lines of action.
   const std::size_t first = draft.times.size();
-  draft.add(keyed(CameraKeyKind::start), stroke.begin, {stroke.cue_at, stroke.aim}, stroke.cue_ball);
+  draft.add(key_in(stroke, CameraKeyKind::start), stroke.begin, {stroke.cue_at, stroke.aim}, stroke.cue_ball);
   if (plan.ball) {
     const double after = std::min(plan.ball->time + 1e-6, stroke.end);
     draft.add(plan.ball->key, plan.ball->time, {at(subject, plan.ball->time), heading(subject, after, stroke.aim)},
@@ -496,11 +538,20 @@ void Director::film(const Stroke& stroke, Draft& draft) const {
     draft.add(plan.wide->key, plan.wide->time,
               {at(subject, before), heading(subject, before, draft.camera.lines.back().direction)}, subject);
   }
+  // The next shot's start ends this shot's last blend (a blend's `post` is a share of the time to the
+  // next key): its description stands in, holding this shot's camera, until that shot is filmed.
+  const bool closed = stroke.key_shot >= 0 && stroke.shot + 1 < timeline_.shot_count();
+  if (closed) {
+    CameraShot next_start = key_in(stroke, CameraKeyKind::start);
+    next_start.key.shot = stroke.key_shot + 1;
+    draft.add(next_start, stroke.end, draft.camera.lines.back(), draft.camera.subjects.back());
+  }
   // The beats in turn, each placed with the ones before it fixed.
   place_stroke(draft, first, stroke);
   std::size_t next = first + 1;
   if (plan.ball && place_ball(draft, next, stroke)) ++next;
   if (plan.wide) place_wide(draft, next, stroke);
+  if (closed) draft.erase(draft.times.size() - 1);
 }
 
 void Director::place_stroke(Draft& draft, std::size_t slot, const Stroke& stroke) const {
@@ -515,7 +566,7 @@ void Director::place_stroke(Draft& draft, std::size_t slot, const Stroke& stroke
     trial[slot].mode = option.mode;
     trial[slot].location = option.location;
     trial[slot].target = option.target;
-    const Verdict v = judge_.evaluate(trial, lines, until);
+    const Verdict v = judge(stroke).evaluate(trial, lines, until);
     CameraPose pose{option.location, option.target, false};
     const bool frames = stroke.first_object < 0 || CameraView(pose).contains(stroke.first_object_at, kPlanMargin);
     if (v.ok && frames && CameraView(pose).contains(stroke.cue_at, kPlanMargin)) {
@@ -545,13 +596,13 @@ bool Director::place_ball(Draft& draft, std::size_t slot, const Stroke& stroke) 
   const double t0 = draft.times[slot];
   const double t1 = draft.next_time(slot, stroke.end);
   const Vec3 from = at(subject, t0);
-  const Vec3 to = at(subject, std::min(t1, samples_.drop_time[ball]));
+  const Vec3 to = at(subject, std::min(t1, drop_time(subject, stroke)));
   const Vec3 middle = 0.5 * (from + to);
   const std::vector<CameraShot> places =
-      ball_places(subject, middle, samples_.peak_speed[ball], shots[slot - 1].location, draft.camera.lines[slot],
-                  stroke.aim, layout_);
+      ball_places(subject, middle, samples_.peak_speed[static_cast<std::size_t>(stroke.shot)][ball],
+                  shots[slot - 1].location, draft.camera.lines[slot], stroke.aim, layout_);
   const Timings timings = ball_timings(t0, draft.times[slot - 1], stroke.cue_time);
-  const std::optional<CameraShot> chosen = judge_.choose(shots, draft.camera.lines, slot, places, timings, t1);
+  const std::optional<CameraShot> chosen = judge(stroke).choose(shots, draft.camera.lines, slot, places, timings, t1);
   if (!chosen) {
     // Nothing fits: the camera before it holds until the wide shot (or to the end).
     draft.erase(slot);
@@ -560,7 +611,7 @@ bool Director::place_ball(Draft& draft, std::size_t slot, const Stroke& stroke) 
   }
   shots[slot] = *chosen;
   hold_after(shots, slot);
-  const bool drops = std::isfinite(samples_.drop_time[ball]);
+  const bool drops = std::isfinite(drop_time(subject, stroke));
   const std::string what = drops ? "" : (subject == stroke.cue_ball ? "" : ", the fastest ball,");
   draft.camera.comments[slot] = (chosen->mode == CameraMode::follow ? "walk behind " : "watch ") +
                                 ball_name(scene_, subject) + what + (drops ? " into its pocket" : " on its run");
@@ -572,11 +623,11 @@ void Director::place_wide(Draft& draft, std::size_t slot, const Stroke& stroke) 
   const double t0 = draft.times[slot];
   const double since = t0 - draft.times[slot - 1];
   // From where the camera is as the beat begins.
-  const std::optional<CameraPose> so_far = judge_.pose(shots, t0);
+  const std::optional<CameraPose> so_far = judge(stroke).pose(shots, t0);
   const Vec3 previous = so_far ? so_far->location : shots[slot - 1].location;
   const std::vector<CameraShot> places = wide_places(layout_, previous, draft.camera.lines[slot]);
   const std::optional<CameraShot> chosen =
-      judge_.choose(shots, draft.camera.lines, slot, places, wide_timings(since), stroke.end);
+      judge(stroke).choose(shots, draft.camera.lines, slot, places, wide_timings(since), stroke.end);
   if (!chosen) {
     draft.erase(slot);
     hold_after(shots, slot - 1);
@@ -589,7 +640,7 @@ void Director::place_wide(Draft& draft, std::size_t slot, const Stroke& stroke) 
 
 DirectedCamera Director::run() {
   Draft draft;
-  film(the_stroke(), draft);
+  for (int shot = 0; shot < std::max(1, timeline_.shot_count()); ++shot) film(stroke_of(shot), draft);
   return draft.camera;
 }
 

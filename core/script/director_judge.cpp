@@ -49,15 +49,18 @@ void hold_after(std::vector<CameraShot>& shots, std::size_t placed) {
   }
 }
 
-Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples)
+Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot)
     : scene_(scene),
       timeline_(timeline),
       samples_(samples),
       layout_(table_layout(scene)),
       radius_(scene.physics.ball_radius) {
+  const auto k = static_cast<std::size_t>(shot);
+  from_ = k < timeline.shots().size() ? timeline.shots()[k].start : 0.0;
+  const int struck = scene.cues[std::min(k, scene.cues.size() - 1)].target;
   for (int b = 0; b < timeline.ball_count(); ++b) {
-    const bool pocketed = std::isfinite(samples.drop_time[static_cast<std::size_t>(b)]);
-    if (pocketed || b == scene.cue().target) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
+    const bool pocketed = std::isfinite(samples.drop_time[k][static_cast<std::size_t>(b)]);
+    if (pocketed || b == struck) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
   }
 }
 
@@ -87,7 +90,7 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
   const std::optional<CameraScript> script = film(shots);
   if (!script) return v;
   for (const CameraWindow& w : script->windows()) {
-    if (w.begin > limit) continue;
+    if (w.begin > limit || w.end < from_) continue;
     const LineOfAction& line = lines[static_cast<std::size_t>(w.shot)];
     const double a = line.side(script->pose(w.begin).location), b = line.side(script->pose(w.end).location);
     if ((a > kOnLine && b < -kOnLine) || (a < -kOnLine && b > kOnLine)) return v;
@@ -96,10 +99,12 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
   std::vector<int> seen(watched_.size(), 0), moving(watched_.size(), 0);
   double fastest = 0;
   Vec3 previous(0, 0, 0);
-  for (std::size_t i = 0; i < times.size() && times[i] <= limit; ++i) {
+  const std::size_t first =
+      static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), from_) - times.begin());
+  for (std::size_t i = first; i < times.size() && times[i] <= limit; ++i) {
     const CameraPose pose = script->pose(times[i]);
     if (!clear(pose.location, i)) return v;
-    if (i > 0) fastest = std::max(fastest, (pose.location - previous).norm() / (times[i] - times[i - 1]));
+    if (i > first) fastest = std::max(fastest, (pose.location - previous).norm() / (times[i] - times[i - 1]));
     previous = pose.location;
     for (std::size_t k = 0; k < watched_.size(); ++k) {
       const auto ball = static_cast<std::size_t>(watched_[k].ball);

@@ -30,8 +30,10 @@ struct ShotSamples {
   /// Per sample, per ball: whether it is on view (not pocketed nor sunk below the bed), and whether it
   /// travels (moving on the table, not yet dropping into a pocket).
   std::vector<std::vector<char>> shown, moving;
-  std::vector<double> drop_time;   ///< per ball: s when it first drops into a pocket, infinity if never
-  std::vector<double> peak_speed;  ///< per ball: m/s, the fastest it travels, horizontally
+  /// Per shot (Timeline::shots(), its stretch up to the next shot's start), per ball: s when it first
+  /// drops into a pocket in that shot (infinity if it does not), and m/s, the fastest it travels then,
+  /// horizontally. A ball that drops travels no more in that shot, though a later one may put it back.
+  std::vector<std::vector<double>> drop_time, peak_speed;
 };
 
 /// Where the director never puts its camera, whatever the balls do: low over the table, in the lamp,
@@ -71,11 +73,12 @@ struct Timings {
 
 class Judge {
  public:
-  /// Watches the pocketed balls and the cue ball. `scene`, `timeline` and `samples` must outlive it.
-  Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples);
+  /// Judges the stretch of shot `shot` (from its start): watches the balls pocketed in it and its
+  /// struck ball. `scene`, `timeline` and `samples` must outlive it.
+  Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot);
 
-  /// Films `shots` (the real CameraScript) up to `limit` and judges it; `lines` are the descriptions'
-  /// lines of action.
+  /// Films `shots` (the real CameraScript) from the shot's start up to `limit` and judges it; `lines`
+  /// are the descriptions' lines of action.
   Verdict evaluate(const std::vector<CameraShot>& shots, const std::vector<LineOfAction>& lines, double limit) const;
 
   /// The camera of the script `shots` at t; nullopt when they do not make a script.
@@ -112,6 +115,7 @@ class Judge {
   const ShotSamples& samples_;
   TableLayout layout_;
   double radius_ = 0;
+  double from_ = 0;  ///< s, the shot's start: what comes before it is judged already
   std::vector<Watched> watched_;
 };
 

@@ -107,6 +107,42 @@ TEST_SUITE("camera edit") {
           "hit 0 1");
   }
 
+  TEST_CASE("in a scene of several shots every moment is named within its shot, and resolves back to it") {
+    const std::string balls = test::require_file(test::source_path("tests/scene/three_shots.scn"));
+    const auto shot = shot_of(balls);
+    const Timeline& timeline = shot->timeline;
+    REQUIRE(timeline.shot_count() == 3);
+    std::vector<double> instants;
+    for (const Event& e : timeline.events()) {
+      instants.push_back(e.time);
+      for (const Contact& c : e.contacts) instants.push_back(c.time);
+    }
+    for (const PocketDrop& d : timeline.pocket_drops()) instants.push_back(d.time);
+    for (const ShotSpan& span : timeline.shots()) instants.push_back(span.start);
+    for (double t : instants) {
+      const NamedMoment m = name_moment(timeline, t);
+      CAPTURE(t);
+      CAPTURE(m.key);
+      CHECK(m.time == t);
+      CHECK(m.key.rfind("shot " + std::to_string(timeline.shot_at(t) + 1) + " ", 0) == 0);
+      CHECK(m.key.find(" at ") == std::string::npos);
+      const std::string text = balls + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+      CHECK(description_times(text) == std::vector<double>{t});
+    }
+    // The oracles: the timeline's own shot spans.
+    CHECK(name_moment(timeline, timeline.shots()[1].cue).key == "shot 2 cue");
+    CHECK(name_moment(timeline, timeline.shots()[2].start).key == "shot 3 start");
+    CHECK(name_moment(timeline, timeline.duration()).key == "shot 3 end");
+    // Between events, `shot K at T` from the start of the shot in play.
+    const double t = timeline.shots()[1].start + kKeySnap + 0.3123456;
+    REQUIRE(t < timeline.shots()[1].cue - kKeySnap);
+    const NamedMoment m = name_moment(timeline, t);
+    CHECK(m.key == "shot 2 at 0.562");
+    CHECK(t - m.time < 1.001e-3);
+    const std::string text = balls + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+    CHECK(description_times(text) == std::vector<double>{m.time});
+  }
+
   TEST_CASE("far from every event the key is `at T`, to the millisecond, within the shot") {
     const auto shot = shot_of(std::string(test::fixtures::kTwoBalls) + test::fixtures::kHoverCamera);
     const std::optional<double> quiet = quiet_time(shot->timeline, kKeySnap + 0.05);

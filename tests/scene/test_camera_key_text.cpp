@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "camera_key_text.h"
+#include "files.h"
 #include "fixtures.h"
 #include "scene_parse.h"
+#include "support.h"
 
 using namespace bsim;
 namespace fx = bsim::test::fixtures;
@@ -84,14 +86,48 @@ TEST_SUITE("camera key text") {
     CHECK(camera_key_ordinal("third") == 3);
     CHECK(camera_key_ordinal("first") == std::nullopt);
     CHECK(camera_key_kind("event") == std::nullopt);
-    CHECK(camera_key_first_words().size() == 12);
+    CHECK(camera_key_first_words().size() == 13);  // 7 kinds, 5 ordinals, `shot`
   }
 
   TEST_CASE("text that is no key is refused") {
-    for (const char* text : {"", "hit 0", "second pocket 3", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1",
-                             "start 3", "second  hit 0 1"}) {
+    for (const char* text :
+         {"", "hit 0", "second pocket 3", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1", "start 3",
+          "second  hit 0 1", "shot 0 cue", "shot cue", "shot 2", "shot 2 shot 1 cue", "shot x cue", "cue shot 2"}) {
       CAPTURE(text);
       CHECK_FALSE(parse_camera_key(text));
     }
+  }
+
+  TEST_CASE("a key with `shot K` is written with it and reads back the same, in the parser too") {
+    const std::string scene = test::require_file(test::source_path("tests/scene/three_shots.scn"));
+    for (int shot : {0, 1, 2}) {
+      for (CameraKey key : every_key()) {
+        key.shot = shot;
+        const std::string text = camera_key_text(key);
+        CAPTURE(text);
+        CHECK(text.starts_with("shot " + std::to_string(shot + 1) + " "));
+        const std::optional<CameraKey> back = parse_camera_key(text);
+        REQUIRE(back);
+        CHECK(back->shot == shot);
+        CHECK(same_camera_key(*back, key));
+        CHECK(camera_key_text(*back) == text);
+        // Not the same key as the one counting over the scene.
+        CameraKey whole = key;
+        whole.shot = -1;
+        CHECK_FALSE(same_camera_key(whole, key));
+        const ParseResult parsed =
+            parse_scene(scene + "camera\n  event " + text + " 0.3 0 hover 0 -2 1.5 0 0 0\nendcamera\n", "key");
+        REQUIRE(parsed.scene);
+        REQUIRE(parsed.scene->camera.size() == 1);
+        CHECK(same_camera_key(parsed.scene->camera[0].key, key));
+      }
+    }
+    CameraKey second_hit;
+    second_hit.kind = CameraKeyKind::hit;
+    second_hit.ordinal = 2;
+    second_hit.a = 0;
+    second_hit.b = 3;
+    second_hit.shot = 1;
+    CHECK(camera_key_text(second_hit) == "shot 2 second hit 0 3");
   }
 }

@@ -2,6 +2,7 @@
 // cushion, pocket, at, with ordinals) instead of a global event number.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "camera_key.h"
 #include "files.h"
 #include "fixtures.h"
+#include "play.h"
 #include "scene_parse.h"
 #include "script_as_written.h"
 #include "shot.h"
@@ -64,6 +66,40 @@ std::string read_scene(const std::string& name) {
 std::string break_balls() {
   const std::string text = read_scene("break.scn");
   return text.substr(0, text.find("\ncamera\n") + 1);
+}
+
+/// tests/scene/three_shots.scn (three aimed shots of the cue ball, 0), without a camera.
+std::string three_shots() { return test::require_file(test::source_path("tests/scene/three_shots.scn")); }
+
+/// The line the first description of a camera appended to `text` is on.
+int first_description_line(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 2;
+}
+
+/// The scene's shots played (each `pot` aimed from where the balls stopped), and the key resolved.
+struct PlayedKey {
+  Scene scene;
+  Timeline timeline;
+  KeyResolution r;
+};
+
+PlayedKey played_key(const std::string& balls, const std::string& key) {
+  const std::string text = balls + fx::camera({"event " + key + " 0 0 hover 0 -3 2 0 0 0"});
+  ParseResult parsed = parse_scene(text, "key");
+  REQUIRE_MESSAGE(parsed.scene, text);
+  PlayedKey out{*parsed.scene, {}, {}};
+  PlayResult played = play(out.scene);
+  REQUIRE(!played.failure);
+  out.timeline = std::move(played.timeline);
+  out.r = resolve_camera_key(out.scene.camera.at(0), out.scene, out.timeline);
+  return out;
+}
+
+/// The instant `key` names once every shot of `balls` is played, or nullopt.
+std::optional<double> played_instant(const std::string& balls, const std::string& key) {
+  const PlayedKey p = played_key(balls, key);
+  if (!p.r.instant) return std::nullopt;
+  return p.r.instant->time;
 }
 
 }  // namespace
@@ -351,5 +387,167 @@ TEST_SUITE("camera_keys") {
         test::run_command(test::bin("billiards-preview") + " '" + scene + "' --timeline -o '" + png + "'");
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     CHECK(std::filesystem::file_size(png) > 1000);
+  }
+
+  TEST_CASE("shot K keys count within that shot; keys without it over the whole scene") {
+    // Oracles: the played timeline's own ShotSpans, events (Event::shot) and pocket drops.
+    const std::string balls = three_shots();
+    ParseResult parsed = parse_scene(balls, "three_shots");
+    REQUIRE(parsed.scene);
+    PlayResult played = play(*parsed.scene);
+    REQUIRE(!played.failure);
+    const Timeline& timeline = played.timeline;
+    REQUIRE(timeline.shot_count() == 3);
+    const std::vector<ShotSpan>& shots = timeline.shots();
+    CHECK(played_instant(balls, "shot 1 start") == 0.0);
+    CHECK(played_instant(balls, "shot 2 start") == shots[1].start);
+    CHECK(played_instant(balls, "shot 3 start") == shots[2].start);
+    CHECK(played_instant(balls, "shot 1 cue") == shots[0].cue);
+    CHECK(played_instant(balls, "shot 2 cue") == shots[1].cue);
+    CHECK(played_instant(balls, "shot 3 cue") == shots[2].cue);
+    CHECK(played_instant(balls, "cue") == shots[0].cue);  // over the scene: the first strike
+    CHECK(played_instant(balls, "shot 1 end") == shots[1].start);
+    CHECK(played_instant(balls, "shot 2 end") == shots[2].start);
+    CHECK(played_instant(balls, "shot 3 end") == timeline.duration());
+    CHECK(played_instant(balls, "end") == timeline.duration());
+    CHECK(played_instant(balls, "shot 2 at 1") == shots[1].start + 1);
+    CHECK(played_instant(balls, "shot 3 at 0.5") == shots[2].start + 0.5);
+    CHECK(played_instant(balls, "at 1") == 1.0);
+    CHECK_FALSE(played_instant(balls, "shot 1 at 100"));  // beyond the shot's end, the next one's start
+    // Each shot pots its ball: `shot K pocket B` is that drop, and no other shot's.
+    for (const auto& [shot, ball] : {std::pair{1, 1}, std::pair{2, 2}, std::pair{3, 3}}) {
+      CAPTURE(shot);
+      std::optional<double> drop;
+      for (const PocketDrop& d : timeline.pocket_drops())
+        if (d.ball == ball) drop = d.time;
+      REQUIRE(drop);
+      CHECK(timeline.shot_at(*drop) == shot - 1);
+      const std::string key = "pocket " + std::to_string(ball);
+      CHECK(played_instant(balls, "shot " + std::to_string(shot) + " " + key) == *drop);
+      CHECK(played_instant(balls, key) == *drop);
+      CHECK_FALSE(played_instant(balls, "shot " + std::to_string(shot % 3 + 1) + " " + key));
+    }
+    // Contacts: the first, second and last of the shot's own, by Event::shot.
+    for (int shot = 0; shot < 3; ++shot) {
+      CAPTURE(shot);
+      std::vector<double> rails, hits;
+      for (const Event& e : timeline.events()) {
+        if (e.shot != shot) continue;
+        if (e.type == EventType::ball_rail && e.balls.at(0) == 0) rails.push_back(e.time);
+        if (e.type == EventType::ball_ball && e.balls.size() == 2 && e.balls[0] == 0 && e.balls[1] == shot + 1)
+          hits.push_back(e.time);
+      }
+      const std::string prefix = "shot " + std::to_string(shot + 1) + " ";
+      REQUIRE(!hits.empty());
+      CHECK(played_instant(balls, prefix + "hit 0 " + std::to_string(shot + 1)) == hits.front());
+      CHECK(played_instant(balls, prefix + "hit " + std::to_string(shot + 1) + " 0") == hits.front());
+      if (rails.empty()) continue;
+      CHECK(played_instant(balls, prefix + "cushion 0") == rails.front());
+      CHECK(played_instant(balls, prefix + "last cushion 0") == rails.back());
+      if (rails.size() >= 2) CHECK(played_instant(balls, prefix + "second cushion 0") == rails[1]);
+    }
+    // Without `shot`, cushion 0 counts over the scene: the first shot's first.
+    std::vector<double> all_rails;
+    for (const Event& e : timeline.events())
+      if (e.type == EventType::ball_rail && e.balls.at(0) == 0) all_rails.push_back(e.time);
+    REQUIRE(!all_rails.empty());
+    CHECK(played_instant(balls, "cushion 0") == all_rails.front());
+    CHECK(played_instant(balls, "last cushion 0") == all_rails.back());
+  }
+
+  TEST_CASE("shot K keys: located errors, nothing loaded") {
+    const std::string balls = three_shots();
+    const int line = first_description_line(balls);
+    const auto error = [&](const std::string& key, const ParseOptions& options = {}) {
+      const ParseResult r =
+          parse_scene(balls + fx::camera({"event " + key + " 0 0 hover 0 -3 2 0 0 0"}), "bad", options);
+      CHECK_FALSE(r.scene);
+      REQUIRE(!r.diagnostics.empty());
+      CHECK(r.diagnostics[0].severity == Severity::error);
+      return r.diagnostics[0];
+    };
+    Diagnostic d = error("shot 0 cue");
+    CHECK(format_diagnostic(d, "bad.scn") == "bad.scn:" + std::to_string(line) +
+                                                 ":12: error: expected a shot from 1 (the first 'cue' line's shot), "
+                                                 "found '0'");
+    d = error("shot two cue");
+    CHECK(d.loc.line == line);
+    CHECK(d.loc.column == 12);
+    CHECK(d.message ==
+          "expected an integer for the shot number after 'shot' (from 1, one shot per 'cue' line), found 'two'");
+    d = error("shot 1.5 cue");
+    CHECK(d.loc.column == 12);
+    d = error("shot 4 cue");
+    CHECK(format_diagnostic(d, "bad.scn") ==
+          "bad.scn:" + std::to_string(line) +
+              ":12: error: expected a shot from 1 to 3 (the scene has 3 shots, one per 'cue' line), found 4");
+    d = error("shot 2 shot 1 cue");
+    CHECK(d.loc.column == 14);
+    CHECK(d.message.rfind("expected a camera key after 'shot 2' (start, cue, ", 0) == 0);
+    d = error("shot 2 cuhsion 0");
+    CHECK(d.message.find("found 'cuhsion'; did you mean 'cushion'?") != std::string::npos);
+    // A scene of one shot has shot 1 only.
+    const ParseResult one = parse_scene(two_balls({"event shot 2 cue 0 0 hover 0 -3 2 0 0 0"}), "one");
+    CHECK_FALSE(one.scene);
+    REQUIRE(one.diagnostics.size() == 1);
+    CHECK(one.diagnostics[0].message ==
+          "expected a shot from 1 to 1 (the scene has 1 shot, one per 'cue' line), found 2");
+    CHECK(one.diagnostics[0].loc.line == 5);
+    CHECK(one.diagnostics[0].loc.column == 12);
+    // --strict: `shot` is an extension, at the word.
+    ParseOptions strict;
+    strict.strict = true;
+    const ParseResult s = parse_scene(two_balls({"event shot 1 cue 0 0 hover 0 -3 2 0 0 0"}), "strict", strict);
+    CHECK_FALSE(s.scene);
+    bool found = false;
+    for (const Diagnostic& e : s.diagnostics)
+      if (e.message ==
+          "the camera key 'shot' is an extension that --strict rejects (the seed names an event by its number)") {
+        found = true;
+        CHECK(e.loc.line == 5);
+        CHECK(e.loc.column == 7);
+      }
+    CHECK(found);
+    // A key the shot never reaches says which shot.
+    const ShotResult never = load_shot(balls + fx::camera({"event shot 2 pocket 1 0 0 hover 0 -3 2 0 0 0"}), "never");
+    CHECK_FALSE(never.scripted());
+    REQUIRE(never.diagnostics.size() == 1);
+    CHECK(never.diagnostics[0].message == "shot 2 pocket 1 never happens: ball 1 drops into no pocket in shot 2");
+    CHECK(never.diagnostics[0].loc.line == line);
+    CHECK(never.diagnostics[0].loc.column == 7);
+  }
+
+  TEST_CASE("a hand-written script over several shots: keys with and without shot, filmed in order") {
+    const std::string text =
+        three_shots() +
+        fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event shot 1 hit 0 1 0.3 0.3 look 0 -2 1 1",
+                    "event shot 2 start 0 0 hover -1 -2 1.5 0 0 0", "event shot 2 cue 0.2 0.2 follow 0 -0.6 0 0.3",
+                    "event shot 3 at 0 0.3 0.3 hover 1 -2 1.5 0 0 0", "event end 0 0 look 0 -2 2 3"});
+    const ShotResult r = load_shot(text, "by_hand");
+    REQUIRE(r.scripted());
+    for (const Diagnostic& d : r.diagnostics) CHECK(d.severity != Severity::error);
+    const Shot& shot = *r.shot;
+    const std::vector<CameraSegment>& segments = shot.camera->segments();
+    REQUIRE(segments.size() == 6);
+    CHECK(segments[2].begin == shot.timeline.shots()[1].start);
+    CHECK(segments[3].begin == shot.timeline.shots()[1].cue);
+    CHECK(segments[4].begin == shot.timeline.shots()[2].start);
+    CHECK(segments[5].begin == shot.timeline.duration());
+  }
+
+  TEST_CASE("billiards-export: a shot beyond the scene's, an error at the number, nothing written") {
+    test::TempDir dir;
+    const std::string balls = three_shots();
+    const int line = first_description_line(balls);
+    const std::string scene = dir.file("three.scn", balls + fx::camera({"event shot 4 cue 0 0 hover 0 -3 2 0 0 0"}));
+    const auto out = dir.path / "out";
+    const test::CommandResult r =
+        test::run_command(test::bin("billiards-export") + " '" + scene + "' --events-only -o '" + out.string() + "'");
+    CHECK(r.exit_code != 0);
+    CHECK_MESSAGE(r.err.find("three.scn:" + std::to_string(line) +
+                             ":12: error: expected a shot from 1 to 3 (the scene has 3 shots, one per 'cue' line), "
+                             "found 4") != std::string::npos,
+                  r.err);
+    CHECK_FALSE(std::filesystem::exists(out));
   }
 }

@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "camera_script.h"
 #include "files.h"
+#include "play.h"
+#include "scene_parse.h"
 #include "shot.h"
 #include "shots.h"
 #include "support.h"
@@ -208,5 +211,41 @@ TEST_SUITE("camera_modes") {
         CHECK(distance(track.position(t), expected) < 1e-12);
       }
     }
+  }
+
+  TEST_CASE("several shots: a ball back on the bed is watched again, and faces each later shot's stick") {
+    // Shot 1 sends the cue ball straight into the corner pocket at 46.5 degrees (a scratch); shot 2
+    // strikes it from the head spot at 0 degrees into ball 1 (spec.md, "Several shots").
+    const std::string text =
+        "ball 0 1.0 0.35 0.028575 0 0 0 1 0 0 0\nball 1 0.3 0.0 0.028575 0 0 0 1 0 0 0\n"
+        "cue 0 46.5\nstroke 1.5 0 0 0\ncue 0 0\nstroke 2 0 0 0\n";
+    ParseResult parsed = parse_scene(text, "scratch");
+    REQUIRE(parsed.scene);
+    Scene scene = *parsed.scene;
+    PlayResult played = play(scene);
+    REQUIRE(!played.failure);
+    const Timeline& timeline = played.timeline;
+    REQUIRE(timeline.shot_count() == 2);
+    REQUIRE(timeline.pocket_drops().size() == 1);
+    REQUIRE(timeline.pocket_drops()[0].ball == 0);
+    const ShotSpan& second = timeline.shots()[1];
+    const BallTrack track(timeline, 0, struck_heading(scene, timeline, 0), later_strikes(scene, timeline, 0));
+    // Down in the pocket: its last visible place; back on the head spot: where the timeline has it.
+    CHECK(track.hidden_time() > timeline.pocket_drops()[0].time);
+    const double down = 0.5 * (track.hidden_time() + second.start);
+    REQUIRE(down < second.start);
+    CHECK(distance(track.position(down), timeline.motion_state(0, track.hidden_time()).position) < 1e-12);
+    for (double t : {second.start + 0.5, second.cue, second.cue + 0.2}) {
+      CAPTURE(t);
+      CHECK(distance(track.position(t), timeline.motion_state(0, t).position) < 1e-12);
+    }
+    CHECK(distance(track.position(second.start + 0.5), Vec3(-0.635, 0, kR)) < 1e-9);
+    // Before the first strike it faces the first stick (46.5 degrees); resting for the second, the
+    // second's (0 degrees), not the way it last rolled; and along its run after it.
+    const auto angle_of = [](const Vec3& h) { return std::atan2(h.y(), h.x()) * 180 / std::acos(-1.0); };
+    CHECK(angle_of(track.heading(1.0)) == doctest::Approx(46.5).epsilon(1e-9));
+    CHECK(std::abs(angle_of(track.heading(second.start + 1.0))) < 1e-9);
+    CHECK(std::abs(angle_of(track.heading(second.cue))) < 1e-9);
+    CHECK(std::abs(angle_of(track.heading(second.cue + 0.1))) < 0.5);
   }
 }

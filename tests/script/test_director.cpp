@@ -16,6 +16,7 @@
 #include "camera_key_text.h"
 #include "director.h"
 #include "files.h"
+#include "play.h"
 #include "random_scenes.h"
 #include "scene_parse.h"
 #include "shot.h"
@@ -58,11 +59,13 @@ std::vector<Named> all_scenes() {
   return out;
 }
 
-/// The shot filmed by the director, built as load_shot builds it.
+/// The shot filmed by the director, built as load_shot builds it (every shot played, `pot` aimed).
 std::unique_ptr<Shot> directed(const Scene& scene, DirectedCamera* script = nullptr) {
   auto shot = std::make_unique<Shot>();
   shot->scene = scene;
-  shot->timeline = simulate(shot->scene);
+  PlayResult played = play(shot->scene);
+  REQUIRE(!played.failure);
+  shot->timeline = std::move(played.timeline);
   const DirectedCamera camera = direct_camera(shot->scene, shot->timeline);
   shot->scene.camera = camera.shots;
   if (script) *script = camera;
@@ -91,21 +94,30 @@ bool in_frame(const Shot& shot, double t, const Vec3& point) {
   return x >= kMargin * w && x <= (1 - kMargin) * w && y >= kMargin * h && y <= (1 - kMargin) * h;
 }
 
-/// No description shorter than about a second; every change a blend, none a cut. Never across the
-/// line of action from one description to the next: the camera where the blend leaves the old
-/// description and where it arrives at the new one are on one side of the new description's line (or
-/// on the line).
+/// Whether description `k` of the script is the cut to a later shot: keyed at that shot's start, with
+/// no blend.
+bool cut_between_shots(const DirectedCamera& script, int k) {
+  const CameraShot& s = script.shots[static_cast<std::size_t>(k)];
+  return s.key.kind == CameraKeyKind::start && s.key.shot > 0 && s.pre == 0 && s.post == 0;
+}
+
+/// No description shorter than about a second; within a shot every change a blend, none a cut (a
+/// cut only to a later shot's start). Never across the line of action from one description to the
+/// next: the camera where the blend leaves the old description and where it arrives at the new one are
+/// on one side of the new description's line (or on the line).
 void check_descriptions(const DirectedCamera& script, const Timeline& timeline, const CameraScript& camera) {
   REQUIRE(!camera.segments().empty());
   for (const CameraSegment& s : camera.segments()) {
     const double begin = s.shot == 0 ? 0.0 : s.begin;
     CHECK(s.end - begin >= kMinDescriptionSeconds - 1e-9);
   }
-  for (const CameraWindow& w : camera.windows()) CHECK(w.end - w.begin >= 0.3);
+  for (const CameraWindow& w : camera.windows())
+    if (!cut_between_shots(script, w.shot)) CHECK(w.end - w.begin >= 0.3);
 
   REQUIRE(script.lines.size() == script.shots.size());
   REQUIRE(script.subjects.size() == script.shots.size());
   for (const CameraWindow& w : camera.windows()) {
+    if (cut_between_shots(script, w.shot)) continue;
     const LineOfAction& line = script.lines[static_cast<std::size_t>(w.shot)];
     // The line runs through the description's subject at its key, level.
     const int subject = script.subjects[static_cast<std::size_t>(w.shot)];
@@ -134,10 +146,17 @@ void check_path(const Shot& shot) {
   times.erase(std::unique(times.begin(), times.end()), times.end());
   double fastest = 0, nearest = std::numeric_limits<double>::infinity(), lowest_over_table = 10, lowest = 10;
   Vec3 previous = camera.pose(0).location;
+  // The cuts between shots, at the later shots' starts, are not walked.
+  const auto cut_in = [&](double from, double to) {
+    for (const ShotSpan& span : timeline.shots())
+      if (span.start > 0 && span.start > from && span.start <= to) return true;
+    return false;
+  };
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double t = times[i];
     const Vec3 p = camera.pose(t).location;
-    if (i > 0 && t > times[i - 1] + 1e-6) fastest = std::max(fastest, (p - previous).norm() / (t - times[i - 1]));
+    if (i > 0 && t > times[i - 1] + 1e-6 && !cut_in(times[i - 1], t))
+      fastest = std::max(fastest, (p - previous).norm() / (t - times[i - 1]));
     previous = p;
     for (int b = 0; b < timeline.ball_count(); ++b) {
       const Vec3 centre = timeline.motion_state(b, t).position;
@@ -154,19 +173,20 @@ void check_path(const Shot& shot) {
   CHECK(lowest > layout.rail_top);  // nowhere below the rails' top, over the table or beside it
 }
 
-/// The balls that matter in the picture while they move.
-void check_watched(const Shot& shot) {
+/// The balls that matter in the picture while they move between `begin` and `end` (one shot's
+/// stretch): those pocketed then and the struck ball.
+void check_watched_in(const Shot& shot, int struck, double begin, double end) {
   const Timeline& timeline = shot.timeline;
-  const double duration = timeline.duration();
   std::vector<double> drop(static_cast<std::size_t>(timeline.ball_count()), std::numeric_limits<double>::infinity());
   for (const PocketDrop& d : timeline.pocket_drops())
-    drop[static_cast<std::size_t>(d.ball)] = std::min(drop[static_cast<std::size_t>(d.ball)], d.time);
+    if (d.time >= begin && d.time <= end)
+      drop[static_cast<std::size_t>(d.ball)] = std::min(drop[static_cast<std::size_t>(d.ball)], d.time);
   for (int b = 0; b < timeline.ball_count(); ++b) {
     const double dropped = drop[static_cast<std::size_t>(b)];
     const bool pocketed = std::isfinite(dropped);
-    if (!pocketed && b != shot.scene.cue().target) continue;
+    if (!pocketed && b != struck) continue;
     int travelling = 0, seen = 0;
-    for (int k = 0; k / kPictureHz <= duration; ++k) {
+    for (int k = static_cast<int>(std::ceil(begin * kPictureHz)); k / kPictureHz <= end; ++k) {
       const double t = k / kPictureHz;
       if (!moving(timeline, b, t, dropped)) continue;
       ++travelling;
@@ -177,6 +197,19 @@ void check_watched(const Shot& shot) {
     CAPTURE(b);
     CAPTURE(share);
     CHECK(share >= (pocketed ? 0.8 : 0.6));
+  }
+}
+
+/// The balls that matter in the picture while they move, shot by shot: those pocketed in the shot and
+/// its struck ball.
+void check_watched(const Shot& shot) {
+  const Timeline& timeline = shot.timeline;
+  for (int k = 0; k < timeline.shot_count(); ++k) {
+    CAPTURE(k);
+    const double begin = timeline.shots()[static_cast<std::size_t>(k)].start;
+    const double end =
+        k + 1 < timeline.shot_count() ? timeline.shots()[static_cast<std::size_t>(k) + 1].start : timeline.duration();
+    check_watched_in(shot, shot.scene.cues[static_cast<std::size_t>(k)].target, begin, end);
   }
 }
 
@@ -199,9 +232,9 @@ std::string with_camera(const std::string& text, const std::string& camera) {
 }
 
 bool same_shot(const CameraShot& a, const CameraShot& b) {
-  return a.event == b.event && a.key.kind == b.key.kind && a.key.ordinal == b.key.ordinal && a.key.a == b.key.a &&
-         a.key.b == b.key.b && a.key.seconds == b.key.seconds && a.pre == b.pre && a.post == b.post &&
-         a.mode == b.mode && a.location == b.location && a.target == b.target && a.ball == b.ball;
+  return a.event == b.event && a.key.kind == b.key.kind && a.key.shot == b.key.shot && a.key.ordinal == b.key.ordinal &&
+         a.key.a == b.key.a && a.key.b == b.key.b && a.key.seconds == b.key.seconds && a.pre == b.pre &&
+         a.post == b.post && a.mode == b.mode && a.location == b.location && a.target == b.target && a.ball == b.ball;
 }
 
 }  // namespace
@@ -277,8 +310,9 @@ TEST_SUITE("director") {
       const std::string text = test::require_file(file);
       ParseResult parsed = parse_scene(text, "scene");
       REQUIRE(parsed.scene);
-      CHECK(apply_aim(*parsed.scene).empty());  // a scene aimed by `pot` is played at the heading found
-      const Timeline timeline = simulate(*parsed.scene);
+      PlayResult played = play(*parsed.scene);  // a scene aimed by `pot` is played at the headings found
+      REQUIRE(!played.failure);
+      const Timeline timeline = std::move(played.timeline);
       const DirectedCamera script = direct_camera(*parsed.scene, timeline);
       const std::string camera = camera_script_text(script, "scene");
       CHECK(camera.starts_with("camera\n"));
@@ -298,6 +332,52 @@ TEST_SUITE("director") {
       for (std::size_t k = 0; k < script.shots.size(); ++k)
         CHECK(same_shot(automatic.shot->scene.camera[k], script.shots[k]));
     }
+  }
+
+  TEST_CASE("a scene of several shots: every shot filmed as one, its keys counting within it") {
+    const std::string text = test::require_file(test::source_path("tests/scene/three_shots.scn"));
+    ParseResult parsed = parse_scene(text, "three_shots");
+    REQUIRE(parsed.scene);
+    check_shot("three_shots.scn", *parsed.scene);
+    // Loaded with --camera auto: no error, no warning.
+    const ShotResult automatic = load_shot(text, "three_shots", {}, CameraChoice::automatic);
+    REQUIRE(automatic.scripted());
+    for (const Diagnostic& d : automatic.diagnostics) CHECK_MESSAGE(false, format_diagnostic(d, "three_shots.scn"));
+    const Shot& shot = *automatic.shot;
+    REQUIRE(shot.timeline.shot_count() == 3);
+    const DirectedCamera& script = *shot.directed;
+    // Each shot's descriptions are keyed within it (`shot K ...`), in order, the first at its start.
+    int shot_before = 0;
+    for (const CameraShot& d : script.shots) {
+      CAPTURE(camera_key_text(d.key));
+      CHECK(d.key.shot >= shot_before);
+      CHECK(camera_key_text(d.key).starts_with("shot " + std::to_string(d.key.shot + 1) + " "));
+      if (d.key.shot > shot_before) CHECK(d.key.kind == CameraKeyKind::start);
+      shot_before = d.key.shot;
+    }
+    CHECK(shot_before == 2);
+    // Every strike is filmed from behind the struck ball, which is in the picture as the stick meets it
+    // (and from the stroke's start: the approach).
+    for (int k = 0; k < 3; ++k) {
+      CAPTURE(k);
+      const ShotSpan& span = shot.timeline.shots()[static_cast<std::size_t>(k)];
+      const int struck = shot.scene.cues[static_cast<std::size_t>(k)].target;
+      const Vec3 ball = shot.timeline.motion_state(struck, span.cue).position;
+      const int at_cue = shot.camera->shot_at(span.cue);
+      REQUIRE(at_cue >= 0);
+      const CameraShot& filming = script.shots[static_cast<std::size_t>(at_cue)];
+      CHECK(filming.key.shot == k);
+      CHECK(camera_key_text(filming.key) == "shot " + std::to_string(k + 1) + " start");
+      const double heading = shot.scene.cues[static_cast<std::size_t>(k)].heading_deg * kDegToRad;
+      CHECK((filming.location - ball).dot(Vec3(std::cos(heading), std::sin(heading), 0)) < -0.5);
+      for (double t : {span.start, span.cue, span.cue + 0.1}) CHECK(in_frame(shot, t, ball));
+    }
+    // The text parses back to the same descriptions.
+    const ParseResult again = parse_scene(with_camera(text, camera_script_text(script, "three_shots")), "three_shots");
+    REQUIRE(again.scene);
+    CHECK(again.diagnostics.empty());
+    REQUIRE(again.scene->camera.size() == script.shots.size());
+    for (std::size_t k = 0; k < script.shots.size(); ++k) CHECK(same_shot(again.scene->camera[k], script.shots[k]));
   }
 
   TEST_CASE("--camera auto replaces a scene's camera script, even one that does not fit the shot") {
