@@ -300,8 +300,9 @@ TEST_SUITE("scene_parse gallery") {
       const ParseResult strict = parse_scene(text, entry.path().stem().string(), {.strict = true});
       INFO("with --strict:\n" << all_messages(strict));
       CHECK(strict.scene.has_value() == !has_errors(strict.diagnostics));
-      for (const Diagnostic& d : strict.diagnostics)
-        CHECK(d.message.find("an extension that --strict rejects") != std::string::npos);
+      for (const Diagnostic& d : strict.diagnostics)  // a long scene's many may end in "too many errors"
+        CHECK((d.message.find("an extension that --strict rejects") != std::string::npos ||
+               d.message.find("too many errors") != std::string::npos));
     }
     CHECK(count >= 1);
   }
