@@ -19,6 +19,7 @@
 #include "aim.h"
 #include "scene_parse.h"
 #include "simulate.h"
+#include "spread_balls.h"
 
 namespace {
 
@@ -28,16 +29,7 @@ std::string sixteen_balls() {
   std::string text = "cue 0 pot 1 2\n";
   text += "ball 0 0.3 -0.2 0.028575 2 0 0 1 0 0 0\n";
   text += "ball 5 0.7 0.1 0.028575 0 0 0 1 0 0 0\n";
-  const double spots[14][2] = {{-1.0, 0.4},  {-1.0, 0.0}, {-1.0, -0.4},  {-0.7, 0.2},  {-0.7, -0.2},
-                               {-0.4, 0.45}, {-0.4, 0.0}, {-0.4, -0.45}, {-0.1, 0.25}, {-0.1, -0.3},
-                               {0.2, 0.45},  {0.5, -0.5}, {1.0, -0.2},   {1.1, -0.5}};
-  const int numbers[14] = {1, 2, 3, 4, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
-  for (int k = 0; k < 14; ++k) {
-    char line[96];
-    std::snprintf(line, sizeof line, "ball %d %.3f %.3f 0.028575 0 0 0 1 0 0 0\n", numbers[k], spots[k][0],
-                  spots[k][1]);
-    text += line;
-  }
+  text += bsim::bench::spread_ball_lines();
   return text;
 }
 

@@ -25,6 +25,7 @@
 #include "play.h"
 #include "shot.h"
 #include "simulate.h"
+#include "spread_balls.h"
 
 namespace {
 
@@ -32,16 +33,7 @@ using Clock = std::chrono::steady_clock;
 
 std::string twenty_shots(int shots) {
   std::string text = "ball 0 0.3 -0.2 0.028575 0 0 0 1 0 0 0\nball 5 0.7 0.1 0.028575 0 0 0 1 0 0 0\n";
-  const double spots[14][2] = {{-1.0, 0.4},  {-1.0, 0.0}, {-1.0, -0.4},  {-0.7, 0.2},  {-0.7, -0.2},
-                               {-0.4, 0.45}, {-0.4, 0.0}, {-0.4, -0.45}, {-0.1, 0.25}, {-0.1, -0.3},
-                               {0.2, 0.45},  {0.5, -0.5}, {1.0, -0.2},   {1.1, -0.5}};
-  const int numbers[14] = {1, 2, 3, 4, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
-  for (int k = 0; k < 14; ++k) {
-    char line[96];
-    std::snprintf(line, sizeof line, "ball %d %.3f %.3f 0.028575 0 0 0 1 0 0 0\n", numbers[k], spots[k][0],
-                  spots[k][1]);
-    text += line;
-  }
+  text += bsim::bench::spread_ball_lines();
   const char* strokes[4] = {"1.6 0 0 0", "1.8 0 -0.35 0", "1.5 0 0.3 0", "1.7 0.3 0 2"};
   for (int k = 0; k < shots; ++k) {
     text += "cue 0 pot 1 2\nstroke " + std::string(strokes[k % 4]) + "\n";
@@ -122,9 +114,9 @@ int main(int argc, char** argv) {
   for (int b = 0; b < timeline.ball_count(); ++b) segments += timeline.segments(b).size();
   std::size_t contacts = 0;
   for (const bsim::Event& e : timeline.events()) contacts += e.contacts.size();
-  const double bytes = static_cast<double>(segments * sizeof(bsim::MotionSegment) +
-                                           timeline.events().size() * sizeof(bsim::Event) +
-                                           contacts * sizeof(bsim::Contact));
+  const double bytes =
+      static_cast<double>(segments * sizeof(bsim::MotionSegment) + timeline.events().size() * sizeof(bsim::Event) +
+                          contacts * sizeof(bsim::Contact));
   std::printf("%d shots, %d balls, %.1f s of play, median of %d runs\n", timeline.shot_count(), timeline.ball_count(),
               timeline.duration(), runs);
   std::printf("  %-44s %8.1f ms\n", "play (aim + simulate, one timeline)", 1e3 * median(play_s));
