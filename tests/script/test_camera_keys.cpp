@@ -415,7 +415,8 @@ TEST_SUITE("camera_keys") {
     CHECK(played_instant(balls, "at 1") == 1.0);
     CHECK_FALSE(played_instant(balls, "shot 1 at 100"));  // beyond the shot's end, the next one's start
     // Each shot pots its ball: `shot K pocket B` is that drop, and no other shot's.
-    for (const auto& [shot, ball] : {std::pair{1, 1}, std::pair{2, 2}, std::pair{3, 3}}) {
+    for (int shot = 1; shot <= 3; ++shot) {
+      const int ball = shot;  // shot K pots the ball painted K, index K
       CAPTURE(shot);
       std::optional<double> drop;
       for (const PocketDrop& d : timeline.pocket_drops())
