@@ -30,13 +30,6 @@ double heading_range(double deg) {
   return h < 0 ? h + 360.0 : h;
 }
 
-/// "ball index 3 (the 7)": how a person finds a ball in the file and on the table.
-std::string ball_name(const Scene& scene, int i) {
-  const int number = scene.ball(i).number;
-  return "ball index " + std::to_string(i) +
-         (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
-}
-
 std::string metres(double m) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f m", m);
@@ -318,6 +311,12 @@ class Solver {
 };
 
 }  // namespace
+
+std::string ball_name(const Scene& scene, int i) {
+  const int number = scene.ball(i).number;
+  return "ball index " + std::to_string(i) +
+         (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
+}
 
 void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
   if (written.cue().stroke) {

@@ -24,6 +24,9 @@ namespace bsim {
 /// replaces this body; the solver calls nothing else to strike.
 void strike_heading(const Scene& written, double heading_deg, Scene& struck);
 
+/// "ball index 3 (the 7)": how a person finds a ball in the file and on the table (messages).
+std::string ball_name(const Scene& scene, int i);
+
 /// What the solver found, or why nothing pots.
 struct AimResult {
   std::optional<double> heading_deg;  ///< degrees in [0, 360), counter-clockwise from +x

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "aim.h"
+#include "number_format.h"
 #include "simulate.h"
 #include "strike.h"
 
@@ -15,25 +16,20 @@ namespace {
 /// m, the step along the long axis between places tried for a ball put back.
 constexpr double kRespotStep = 0.001;
 
-std::string ball_name(const Scene& scene, int i) {
-  const int number = scene.ball(i).number;
-  return "ball index " + std::to_string(i) +
-         (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
-}
-
 std::string xy(const Vec3& p) {
   char text[48];
   std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x(), p.y());
   return text;
 }
 
-/// Whether a ball centred at p touches any ball on the bed but `self`.
-bool touches(const std::vector<Ball>& balls, const Vec3& p, int self, double radius) {
+/// The first ball on the bed but `self` that a ball centred at p would overlap, or -1.
+int touching(const std::vector<Ball>& balls, const Vec3& p, int self, double radius) {
   for (std::size_t j = 0; j < balls.size(); ++j) {
     if (static_cast<int>(j) == self || balls[j].pocket >= 0) continue;
-    if (std::hypot(balls[j].position.x() - p.x(), balls[j].position.y() - p.y()) < 2 * radius) return true;
+    if (std::hypot(balls[j].position.x() - p.x(), balls[j].position.y() - p.y()) < 2 * radius - 1e-9)
+      return static_cast<int>(j);
   }
-  return false;
+  return -1;
 }
 
 /// "after shot 2 the balls stood: 0 (the cue ball) at (-0.412, 0.118), ...; down: the 1 (pocket 4)".
@@ -130,16 +126,13 @@ std::optional<PlayFailure> place_balls(const Scene& scene, int k, Scene& shot, s
   }
   for (const BallPlacement& p : cue.places) {
     const Vec3& at = shot.ball(p.ball).position;
-    for (std::size_t j = 0; j < shot.balls.size(); ++j) {
-      const Ball& other = shot.balls[j];
-      if (static_cast<int>(j) == p.ball || other.pocket >= 0) continue;
-      if (std::hypot(other.position.x() - at.x(), other.position.y() - at.y()) < 2 * radius - 1e-9)
-        return PlayFailure{k, p.loc,
-                           "shot " + std::to_string(k + 1) + " places " + ball_name(scene, p.ball) + " at " + xy(at) +
-                               " on " + ball_name(scene, static_cast<int>(j)) + ", which stands at " +
-                               xy(other.position) + "; place it at least " + std::to_string(2 * radius).substr(0, 6) +
-                               " m (a ball's diameter) away, or place that ball too"};
-    }
+    const int j = touching(shot.balls, at, p.ball, radius);
+    if (j < 0) continue;
+    return PlayFailure{k, p.loc,
+                       "shot " + std::to_string(k + 1) + " places " + ball_name(scene, p.ball) + " at " + xy(at) +
+                           " on " + ball_name(scene, j) + ", which stands at " + xy(shot.ball(j).position) +
+                           "; place it at least " + format_number(2 * radius) +
+                           " m (a ball's diameter) away, or place that ball too"};
   }
   return std::nullopt;
 }
@@ -157,7 +150,7 @@ Vec3 respot_place(const Scene& scene, const std::vector<Ball>& balls, int ball) 
     for (int step = 0;; ++step) {
       const Vec3 p(kHeadSpotX + direction * step * kRespotStep, kHeadSpotY, radius);
       if (p.x() - radius < lowest || p.x() + radius > highest) break;
-      if (!touches(balls, p, ball, radius)) return p;
+      if (touching(balls, p, ball, radius) < 0) return p;
     }
   }
   return Vec3(kHeadSpotX, kHeadSpotY, radius);  // a table packed full: the spot itself
