@@ -437,8 +437,11 @@ FrameContent frame_content(const Shot& shot, int frame, int fps) {
 
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
   const FrameContent content = frame_content(shot, frame, fps);
-  out << content.header << content.camera;
+  // The lamp lights the balls and the stick from a light group of their own, as it does the table
+  // (the include's LampLight says why).
+  out << content.header << content.camera << "light_group {\n";
   for (const FramePart& part : content.parts) out << part.text;
+  out << "  LampLight()\n  global_lights on\n}\n";
 }
 
 }  // namespace bsim
