@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
 
 #include "pocket_fall.h"
 #include "scene.h"
@@ -58,27 +60,52 @@ bool over_frame(const Hull& hull, const RegionScene& scene) {
   return box.x0 >= scene.frame_x0 && box.x1 <= scene.frame_x1 && box.y0 >= scene.frame_y0 && box.y1 <= scene.frame_y1;
 }
 
-/// Whether the hull, seen from above, may reach a pocket's opening.
-bool near_pocket(const Hull& hull, const RegionScene& scene) {
+/// Whether the hull, seen from above, may reach pocket `p`'s opening.
+bool reaches(const Hull& hull, const RegionScene::Opening& p) {
   const PlanBox box = plan_box(hull);
-  return std::any_of(scene.pockets.begin(), scene.pockets.end(), [&](const RegionScene::Opening& p) {
-    const double dx = std::max({box.x0 - p.x, p.x - box.x1, 0.0}), dy = std::max({box.y0 - p.y, p.y - box.y1, 0.0});
-    return dx * dx + dy * dy <= p.radius * p.radius;
-  });
+  const double dx = std::max({box.x0 - p.x, p.x - box.x1, 0.0}), dy = std::max({box.y0 - p.y, p.y - box.y1, 0.0});
+  return dx * dx + dy * dy <= p.radius * p.radius;
 }
 
-/// Where a part's shadow can fall; false when it cannot be bounded. Below the cloth the lamp's light
-/// goes on only through a pocket's opening (into its cup) or beyond the table's frame (to the floor).
-bool part_shadow(const FramePart& part, const RegionScene& scene, Hull& hull) {
-  if (part.casts.empty()) {
-    hull.clear();
+bool near_pocket(const Hull& hull, const RegionScene& scene) {
+  return std::any_of(scene.pockets.begin(), scene.pockets.end(),
+                     [&](const RegionScene::Opening& p) { return reaches(hull, p); });
+}
+
+/// The capsule cut along its length into pieces of at most kPieceLength, each the hull of two
+/// spheres between its ends: together they are the capsule, and each piece's picture and shadow are
+/// far smaller than the whole one's box when the capsule is long (the stick lying across the picture).
+std::vector<Hull> capsule_pieces(const BoundCapsule& c) {
+  const double length = (c.b.centre - c.a.centre).norm();
+  const int n = std::clamp(static_cast<int>(std::ceil(length / kPieceLength)), 1, kMostPieces);
+  const auto at = [&](int k) {
+    const double u = static_cast<double>(k) / n;
+    return BoundSphere{c.a.centre + u * (c.b.centre - c.a.centre), c.a.radius + u * (c.b.radius - c.a.radius)};
+  };
+  std::vector<Hull> pieces;
+  for (int k = 0; k < n; ++k) pieces.push_back({at(k), at(k + 1)});
+  return pieces;
+}
+
+/// Where the shadow of one piece can fall, as hulls added to `hulls`; false when it cannot be bounded.
+/// The lamp's light goes below the cloth only through a pocket's opening (into its cup) or beyond the
+/// table's frame; when nothing it lights lies beyond the frame below the cloth (the room outside its
+/// cone), the shadow down to the cloth and the lit inside of every cup it reaches hold it all.
+bool piece_shadow(const Hull& piece, const RegionScene& scene, std::vector<Hull>& hulls) {
+  Hull hull;
+  if (!shadow_hull(piece, scene, scene.bed, hull)) return false;
+  if (!scene.lamp_lights_room) {
+    for (std::size_t p = 0; p < scene.pockets.size(); ++p)
+      if (reaches(hull, scene.pockets[p])) hulls.push_back(scene.cups[p]);
+    hulls.push_back(std::move(hull));
     return true;
   }
-  if (!shadow_hull(part.casts, scene, scene.bed, hull)) return false;
-  if (over_frame(hull, scene) && !near_pocket(hull, scene)) return true;
-  if (!shadow_hull(part.casts, scene, scene.cup_floor, hull)) return false;
-  if (over_frame(hull, scene)) return true;
-  return shadow_hull(part.casts, scene, scene.floor, hull);
+  // Else down to the cups' floor when that stays over the frame, else to the room's floor.
+  const bool on_cloth = over_frame(hull, scene) && !near_pocket(hull, scene);
+  if (!on_cloth && !shadow_hull(piece, scene, scene.cup_floor, hull)) return false;
+  if (!on_cloth && !over_frame(hull, scene) && !shadow_hull(piece, scene, scene.floor, hull)) return false;
+  hulls.push_back(std::move(hull));
+  return true;
 }
 
 /// The camera's projection onto a width x height picture, in pixels from its top-left corner.
@@ -87,7 +114,7 @@ class PixelProjection {
   PixelProjection(const CameraPose& pose, int width, int height)
       : view_(pose, kCameraFovDeg, static_cast<double>(width) / height), width_(width), height_(height) {}
 
-  /// The hull's bounding rectangle in the picture, grown by the margin, snapped to the block grid
+  /// The hull's bounding rectangle in the picture, grown by the margin, snapped to the grid
   /// and clipped to the picture (empty when the hull is not in it). A hull reaching behind the camera's
   /// plane goes off the picture's edge on each side towards which it crosses that plane.
   PixelRect bound(const Hull& hull) const {
@@ -129,12 +156,12 @@ class PixelProjection {
 
   static int snap_down(double v) {
     const double grown = std::clamp(std::floor(v) - kRegionMarginPixels, 0.0, 1e9);
-    return static_cast<int>(grown) / kRenderBlock * kRenderBlock;
+    return static_cast<int>(grown) / kRegionGrid * kRegionGrid;
   }
   static int snap_up(double v, int limit) {
     const double grown = std::clamp(std::ceil(v) + kRegionMarginPixels, 0.0, static_cast<double>(limit));
-    const int blocks = (static_cast<int>(grown) + kRenderBlock - 1) / kRenderBlock;
-    return std::min(limit, blocks * kRenderBlock);
+    const int blocks = (static_cast<int>(grown) + kRegionGrid - 1) / kRegionGrid;
+    return std::min(limit, blocks * kRegionGrid);
   }
 
   CameraView view_;
@@ -149,13 +176,57 @@ bool holds(const PixelRect& outer, const PixelRect& inner) {
   return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && outer.x1 >= inner.x1 && outer.y1 >= inner.y1;
 }
 
-/// The hulls a changed part adds in one of the two frames: what is seen of it and its shadow; false
-/// when one cannot be bounded.
+/// The grid's cells that the rectangles (on the grid, or ending at the picture's edge) cover, as
+/// rectangles that do not overlap: each row's runs of covered cells, a run of the same columns as one
+/// in the row above joined to it. Overlapping rectangles would trace their common pixels twice.
+std::vector<PixelRect> disjoint_cover(const std::vector<PixelRect>& rects) {
+  int right = 0, bottom = 0;
+  for (const PixelRect& r : rects) right = std::max(right, r.x1), bottom = std::max(bottom, r.y1);
+  const int columns = (right + kRegionGrid - 1) / kRegionGrid, rows = (bottom + kRegionGrid - 1) / kRegionGrid;
+  std::vector<char> covered(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
+  for (const PixelRect& r : rects)
+    for (int y = r.y0 / kRegionGrid; y * kRegionGrid < r.y1; ++y)
+      for (int x = r.x0 / kRegionGrid; x * kRegionGrid < r.x1; ++x)
+        covered[static_cast<std::size_t>(y) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(x)] = 1;
+  std::vector<PixelRect> cover;
+  std::vector<std::size_t> above(static_cast<std::size_t>(columns), SIZE_MAX);  // the run starting there, last row
+  for (int y = 0; y < rows; ++y) {
+    std::vector<std::size_t> here(static_cast<std::size_t>(columns), SIZE_MAX);
+    const int y0 = y * kRegionGrid, y1 = std::min(bottom, y0 + kRegionGrid);
+    for (int x = 0; x < columns;) {
+      const auto cell = [&](int cx) {
+        return covered[static_cast<std::size_t>(y) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(cx)];
+      };
+      if (!cell(x)) {
+        ++x;
+        continue;
+      }
+      int end = x;
+      while (end < columns && cell(end)) ++end;
+      const int x0 = x * kRegionGrid, x1 = std::min(right, end * kRegionGrid);
+      const std::size_t joined = above[static_cast<std::size_t>(x)];
+      if (joined != SIZE_MAX && cover[joined].x1 == x1 && cover[joined].y1 == y0) {
+        cover[joined].y1 = y1;
+        here[static_cast<std::size_t>(x)] = joined;
+      } else {
+        here[static_cast<std::size_t>(x)] = cover.size();
+        cover.push_back({x0, y0, x1, y1});
+      }
+      x = end;
+    }
+    above = std::move(here);
+  }
+  return cover;
+}
+
+/// The hulls a changed part adds in one of the two frames: what is seen of it and its shadow, piece
+/// by piece; false when its shadow cannot be bounded.
 bool changed_hulls(const FramePart& part, const RegionScene& scene, std::vector<Hull>& hulls) {
-  hulls.push_back(part.seen);
-  Hull shadow;
-  if (!part_shadow(part, scene, shadow)) return false;
-  hulls.push_back(shadow);
+  for (const BoundCapsule& c : part.seen)
+    for (Hull& piece : capsule_pieces(c)) hulls.push_back(std::move(piece));
+  for (const BoundCapsule& c : part.casts)
+    for (const Hull& piece : capsule_pieces(c))
+      if (!piece_shadow(piece, scene, hulls)) return false;
   return true;
 }
 
@@ -187,17 +258,38 @@ RegionScene region_scene(const Scene& scene) {
   r.cup_floor = -kPocketDepth - 0.02;  // the cup's floor and its leather, with room to spare
   r.floor = layout.floor - 0.01;
   // Each pocket's opening through the cloth and the wood: its drop circle, its throat and its jaws,
-  // with the slate's rounded lip, as the include's PocketBound.
+  // with the slate's rounded lip, as the include's PocketBound. Its cup is the opening's hole carried
+  // down to the cup's floor (the include's PocketLiner), so all the lamp lights below the cloth
+  // through it lies in the upright box round that disc.
   for (const PocketMouth& p : layout.pockets) {
     double radius = std::max(p.drop_radius, (p.throat_centre - p.centre).norm() + p.throat_radius);
     if (p.jawed()) radius = std::max({radius, (p.nose[0] - p.centre).norm(), (p.nose[1] - p.centre).norm()});
-    r.pockets.push_back({p.centre.x(), p.centre.y(), radius + 0.02});
+    const RegionScene::Opening opening{p.centre.x(), p.centre.y(), radius + 0.02};
+    r.pockets.push_back(opening);
+    std::vector<BoundSphere> cup;
+    for (int corner = 0; corner < 8; ++corner)
+      cup.push_back({Vec3(opening.x + (corner & 1 ? 1 : -1) * opening.radius,
+                          opening.y + (corner & 2 ? 1 : -1) * opening.radius, corner & 4 ? r.bed : r.cup_floor),
+                     0.0});
+    r.cups.push_back(std::move(cup));
   }
+  // Beyond the frame and below the cloth the lamp lights nothing when the walls (and what hangs on
+  // them, within kWallDepth of them) lie outside its cone, seen from the nearest point of its light:
+  // the floor is lit by the room's fills alone (room.inc), the frame's outer faces look away from
+  // the lamp and the table's body is under its top.
+  const double reach = std::tan(kRoom.lamp.falloff_deg * std::numbers::pi / 180) * (r.light_z - r.floor);
+  const double to_wall = std::min({r.light_x0 - (layout.wood_outer.x0 - kRoom.margin),
+                                   (layout.wood_outer.x1 + kRoom.margin) - r.light_x1,
+                                   r.light_y0 - (layout.wood_outer.y0 - kRoom.margin),
+                                   (layout.wood_outer.y1 + kRoom.margin) - r.light_y1}) -
+                         kWallDepth;
+  r.lamp_lights_room = to_wall <= reach;
   return r;
 }
 
 std::vector<PixelRect> merge_regions(std::vector<PixelRect> rects) {
   std::erase_if(rects, [](const PixelRect& r) { return r.area() <= 0; });
+  rects = disjoint_cover(rects);
   for (bool merged = true; merged;) {
     merged = false;
     for (std::size_t i = 0; i < rects.size() && !merged; ++i) {
@@ -229,7 +321,8 @@ std::optional<std::vector<PixelRect>> changed_region(const FrameContent& referen
   if (!changed) return std::vector<PixelRect>{};
   // Mirrors: every ball that stays as it was may show the change in its clear coat.
   for (std::size_t i = 0; i < frame.parts.size(); ++i)
-    if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text) hulls.push_back(frame.parts[i].seen);
+    if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
+      for (const BoundCapsule& c : frame.parts[i].seen) hulls.push_back({c.a, c.b});
   if (frame.camera_pose.location.z() >= scene.shade_min.z()) hulls.push_back(shade_hull(scene));
 
   const PixelProjection projection(frame.camera_pose, width, height);

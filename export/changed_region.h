@@ -11,16 +11,22 @@
 //   lamp's light lies in one horizontal rectangle above everything that moves; from a light point L
 //   the shadow of a sphere S, down to the height z0, lies in the hull of S and S scaled from L by
 //   (L.z - z0) / (L.z - top of S), and over the rectangle in the hull of those for its four corners
-//   (the shadow point is affine in L). z0 is the cloth when that hull keeps over the table's wooden
-//   frame and away from the pockets' openings (below the cloth the lamp reaches only through them,
-//   into their cups), else the cups' floor when it keeps over the frame, else the room's floor. The
-//   other lights cast no shadow;
+//   (the shadow point is affine in L). z0 is the cloth. Below the cloth the lamp reaches only into
+//   the pockets' cups, through their openings, so a shadow reaching an opening adds all that the
+//   lamp lights in that cup; beyond the table's frame below the cloth it lights nothing while the
+//   room's walls are outside its cone (else such a shadow is followed down to the room's floor).
+//   The other lights cast no shadow;
 // - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
 //   its mirror image can show lies on its sphere); the lamp shade's lacquer mirrors the table only to
 //   a camera above its rim, so then its box too. Nothing else in the models reflects.
-// Each hull is projected and grown by kRegionMarginPixels, then snapped out to POV-Ray's render-block
-// grid (kRenderBlock): a region on that grid renders exactly the pixels of a whole-frame render, since
-// antialiasing shares its samples within a block only (measured: render_anchors, "Partial renders").
+// Each capsule of a bound is cut into pieces of at most kPieceLength, so that a long one (the stick
+// lying across the picture) is held by a chain of small rectangles, not one box round it all. Each
+// hull is projected and grown by kRegionMarginPixels, then snapped out to a grid of kRegionGrid pixels.
+// POV-Ray traces any rectangle exactly as the whole frame: each pixel's antialiasing samples are
+// traced at their own places, whatever block they fall in, and with the lamp's light in a light group
+// (room.inc) no state passes from one pixel to the next. (An earlier measurement blamed the render
+// blocks for a few differing pixels off their grid; the shadow cache was the cause.) The grid only
+// keeps the rectangles few and their edges tidy.
 #include <optional>
 #include <vector>
 
@@ -30,16 +36,23 @@ namespace bsim {
 
 struct Scene;
 
-/// Pixels of POV-Ray's render block (+BS; POV-Ray's default, which the exporter does not change).
-inline constexpr int kRenderBlock = 32;
+/// Pixels of the grid the rectangles are laid on.
+inline constexpr int kRegionGrid = 8;
 /// Pixels every projected bound is grown by before it is snapped to the grid: antialiasing samples a
 /// pixel's corners, and the files' numbers are rounded.
 inline constexpr int kRegionMarginPixels = 2;
 /// Pixels a separate partial render is reckoned to cost for its start-up (POV-Ray's parse and set-up,
-/// about 0.03 s of CPU, as 4 blocks of a final frame): two regions closer than that are rendered as one.
-inline constexpr long kRegionStartPixels = 4L * kRenderBlock * kRenderBlock;
+/// about 0.05 s of CPU, as 4096 pixels of the table in a final frame): two regions closer than that
+/// are rendered as one.
+inline constexpr long kRegionStartPixels = 4096;
 /// A frame whose region would cost more than this share of the whole picture is rendered whole.
 inline constexpr double kWholeShare = 0.85;
+/// m, the longest piece of a bound's capsule projected on its own (the stick is cut into about 30).
+inline constexpr double kPieceLength = 0.05;
+/// The most pieces a capsule is cut into.
+inline constexpr int kMostPieces = 64;
+/// m out from the walls that what hangs on them (the cue rack, the pictures, the sconces) may reach.
+inline constexpr double kWallDepth = 0.3;
 
 /// Columns x0 to x1 - 1 and rows y0 to y1 - 1 of the picture (from its top-left corner).
 struct PixelRect {
@@ -62,6 +75,11 @@ struct RegionScene {
     double x = 0, y = 0, radius = 0;
   };
   std::vector<Opening> pockets;
+  /// For each pocket, a hull round all that the lamp lights inside its cup.
+  std::vector<std::vector<BoundSphere>> cups;
+  /// Whether the lamp lights anything beyond the table's frame below the cloth (the walls within its
+  /// cone): then a shadow that leaves the frame is followed down to the room's floor.
+  bool lamp_lights_room = true;
 };
 
 RegionScene region_scene(const Scene& scene);

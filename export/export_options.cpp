@@ -114,7 +114,8 @@ OptionTable export_option_table(ExportOptions& o) {
          o.quality = *preset == 0 ? Quality::draft : Quality::final;
          return true;
        }},
-      {"--jobs", "N", "POV-Ray processes run in parallel, 1 to 1024 (default: one per core)",
+      {"--jobs", "N", "POV-Ray processes tracing at once, 1 to 1024 (default: one per core); while one\n"
+       "starts up, a partial frame's rectangle may start too",
        [&o](S n, S v, std::string& m) {
          const auto jobs = parse_int_option(v, 1, kMaxJobs);
          if (!jobs) return bad(m, n, v, "a number of processes from 1 to " + std::to_string(kMaxJobs));

@@ -338,8 +338,8 @@ namespace {
 constexpr double kBoundSlack = 0.002;
 
 /// The stick at `cue`, from `front` to `back` m along its axis from the tip (its butt kCueLength
-/// further), as two spheres whose hull holds it.
-std::vector<BoundSphere> stick_bound(const CuePose& cue, double front, double back) {
+/// further), as a capsule that holds it.
+BoundCapsule stick_bound(const CuePose& cue, double front, double back) {
   const Vec3 axis = cue.axis.normalized();
   const double r = kCueButtRadius + kBoundSlack;
   return {{cue.tip + front * axis, r}, {cue.tip + (back + kCueLength) * axis, r}};
@@ -351,19 +351,25 @@ FramePart ball_part(const Shot& shot, const FrameBlur& blur, int i, double t, in
   part.mirrors = true;
   const double r = shot.scene.physics.ball_radius + kBoundSlack;
   const BallState state = shot.timeline.state(i, t);
-  part.casts.push_back({state.position, r});
+  const BoundSphere now{state.position, r};
+  part.casts.push_back({now, now});
   const double shutter = kShutter / fps;
   const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
   std::ostringstream out;
   if (segments > 0 && write_streak(shot, i, t, shutter, segments, eye, out)) {
-    for (int k = 0; k <= segments; ++k)
-      part.seen.push_back({shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position, r});
+    // Each piece of the streak is the capsule between two instants (write_streak).
+    BoundSphere from{shot.timeline.state(i, shutter_instant(shot, t, shutter, 0, segments)).position, r};
+    for (int k = 1; k <= segments; ++k) {
+      const BoundSphere to{shot.timeline.state(i, shutter_instant(shot, t, shutter, k, segments)).position, r};
+      part.seen.push_back({from, to});
+      from = to;
+    }
   } else {
     // A pocketed ball lies in its pocket's cup.
     const Eigen::Matrix3d m = state.orientation.normalized().toRotationMatrix();
     out << "object { Ball(" << shot.scene.ball(i).number << ") "
         << pov_matrix(m.col(0), m.col(1), m.col(2), state.position) << " }  // ball " << i << "\n";
-    part.seen.push_back({state.position, r});
+    part.seen.push_back({now, now});
   }
   part.text = out.str();
   return part;
@@ -376,8 +382,8 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
   const CuePose now = shot.cue->pose(t);
   if (!blur.stick.travel.empty()) {
     write_stick_sweep(now, blur.stick, out);
-    part.seen = stick_bound(now, blur.stick.front, blur.stick.back);
-    part.casts = stick_bound(now, 0, 0);
+    part.seen = {stick_bound(now, blur.stick.front, blur.stick.back)};
+    part.casts = {stick_bound(now, 0, 0)};
     part.text = out.str();
     return part;
   }
@@ -385,7 +391,7 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
   if (stick_copies == 1) {
     if (now.visible) {
       out << "object { CueStick " << stick_place(now) << " }\n";
-      part.seen = part.casts = stick_bound(now, 0, 0);
+      part.seen = part.casts = {stick_bound(now, 0, 0)};
     }
     part.text = out.str();
     return part;
@@ -394,7 +400,7 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
   // swept stick (shadow rays through a couple of dozen see-through copies cost more than the frame).
   if (now.visible) {
     out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
-    part.casts = stick_bound(now, 0, 0);
+    part.casts = {stick_bound(now, 0, 0)};
   }
   const double shutter = kShutter / fps;
   const std::string transmit = pov_number(copy_transmit(stick_copies));
@@ -403,7 +409,7 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
     if (!cue.visible) continue;
     out << "object { CueStickT(" << transmit << ") " << stick_place(cue) << " no_shadow }  // blurred " << k + 1 << "/"
         << stick_copies << "\n";
-    for (const BoundSphere& s : stick_bound(cue, 0, 0)) part.seen.push_back(s);
+    part.seen.push_back(stick_bound(cue, 0, 0));
   }
   part.text = out.str();
   return part;

@@ -66,13 +66,19 @@ struct BoundSphere {
   double radius = 0;
 };
 
+/// Two spheres whose convex hull (a capsule, one sphere when they are the same) holds a piece of a
+/// bound.
+struct BoundCapsule {
+  BoundSphere a, b;
+};
+
 /// One thing a frame draws, a ball or the stick: its lines in the frame's file (empty when it is not
-/// drawn) and spheres whose convex hull holds all that is seen of it (`seen`: a ball's streak, every
-/// copy of the stick) and all that casts its shadow (`casts`); `mirrors` when its surface reflects
-/// what is round it (a ball's clear coat).
+/// drawn) and capsules whose union holds all that is seen of it (`seen`: each piece of a ball's
+/// streak, the stick or each of its copies) and all that casts its shadow (`casts`); `mirrors` when
+/// its surface reflects what is round it (a ball's clear coat).
 struct FramePart {
   std::string text;
-  std::vector<BoundSphere> seen, casts;
+  std::vector<BoundCapsule> seen, casts;
   bool mirrors = false;
 };
 

@@ -1,7 +1,9 @@
 #include "render_jobs.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -31,6 +33,10 @@ void remove_quietly(const std::string& path) {
   std::error_code ignored;
   std::filesystem::remove(path, ignored);
 }
+
+/// How long a POV-Ray run idles as it starts (its threads hand messages round in 50 ms waits, about
+/// 0.65 s in all even for an empty scene): meanwhile a partial frame's rectangle may start (ProcessPool).
+constexpr std::chrono::milliseconds kPovraySettle{700};
 
 /// What POV-Ray 3.7 prints when it cannot start its render thread in time, as happens under load.
 constexpr const char* kWorkerTimeout = "Timed out waiting for worker thread startup";
@@ -156,7 +162,7 @@ class FrameRendering {
         settings_(settings),
         cache_(cache),
         error_(error),
-        pool_(settings.processes),
+        pool_(settings.processes, kPovraySettle),
         progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
                   progress_style(settings.quiet)) {
     // The time left is reckoned from the pixels still to trace (and each POV-Ray run's start), so a
@@ -186,6 +192,7 @@ class FrameRendering {
       if (pool_.empty()) break;
       ProcessPool<Attempt>::Ended ended;
       const auto waited = pool_.wait(std::chrono::seconds(1), ended);
+      if (!stop_stalled()) break;
       if (waited == ProcessPool<Attempt>::Wait::still_running) {
         progress_.tick();
         continue;
@@ -195,6 +202,7 @@ class FrameRendering {
         outcome_ = RunOutcome::interrupted;
         break;
       }
+      watched_.erase(ended.pid);
       if (!attempt_ended(ended)) break;
     }
     if (outcome_ == RunOutcome::done && !partial_.empty() && !InterruptGuard::interrupted()) {
@@ -234,9 +242,50 @@ class FrameRendering {
     cleanup(frame, part);
   }
 
+  /// Stops every POV-Ray run whose log has not grown for the stall limit (kStallSeconds), and tries
+  /// its frame again or fails it. False when the run stops here (Ctrl-C).
+  bool stop_stalled() {
+    const auto now = std::chrono::steady_clock::now();
+    std::vector<pid_t> stalled;
+    pool_.for_each([&](pid_t pid, const Attempt& attempt) {
+      std::error_code ec;
+      const std::uintmax_t size = std::filesystem::file_size(dir_ + log_name(attempt.job.frame, attempt.part), ec);
+      const auto [watch, fresh] = watched_.try_emplace(pid, Watch{size, now});
+      if (!fresh && size != watch->second.log_size)
+        watch->second = {size, now};
+      else if (now - watch->second.since > stall_limit_)
+        stalled.push_back(pid);
+    });
+    for (const pid_t pid : stalled) {
+      watched_.erase(pid);
+      const Attempt attempt = pool_.stop(pid);
+      if (InterruptGuard::interrupted()) {
+        cleanup(attempt.job.frame, attempt.part);
+        stop_all();
+        outcome_ = RunOutcome::interrupted;
+        return false;
+      }
+      retry_or_fail(attempt, "printed nothing for " + std::to_string(stall_limit_.count()) + " s: it hangs");
+    }
+    return true;
+  }
+
+  /// The stall limit: kStallSeconds, or BSIM_POVRAY_STALL_SECONDS when that is a whole number of seconds.
+  static std::chrono::seconds stall_limit() {
+    const char* text = std::getenv("BSIM_POVRAY_STALL_SECONDS");
+    if (text != nullptr) {
+      char* end = nullptr;
+      const long seconds = std::strtol(text, &end, 10);
+      if (end != text && *end == '\0' && seconds > 0) return std::chrono::seconds(seconds);
+    }
+    return std::chrono::seconds(kStallSeconds);
+  }
+
   /// Starts waiting frames while the pool has room and nothing has failed.
   void start_waiting() {
-    while (outcome_ == RunOutcome::done && !waiting_.empty() && pool_.has_room() && !InterruptGuard::interrupted()) {
+    // A rectangle of a partial frame is a short job: it may start while other runs still start up.
+    while (outcome_ == RunOutcome::done && !waiting_.empty() && pool_.has_room(waiting_.front().part >= 0) &&
+           !InterruptGuard::interrupted()) {
       const Attempt attempt = waiting_.front();
       waiting_.pop_front();
       const int frame = attempt.job.frame;
@@ -381,6 +430,13 @@ class FrameRendering {
   std::map<int, HdrImage> kept_;         ///< pictures (before developing) that partial frames still need
   RunOutcome outcome_ = RunOutcome::done;
   int failed_frame_ = -1;
+  /// Each running POV-Ray's log size and since when it has had it.
+  struct Watch {
+    std::uintmax_t log_size = 0;
+    std::chrono::steady_clock::time_point since;
+  };
+  std::map<pid_t, Watch> watched_;
+  const std::chrono::seconds stall_limit_ = stall_limit();
 };
 
 }  // namespace

@@ -37,8 +37,14 @@ struct RenderSettings {
 enum class RunOutcome { done, failed, interrupted };
 
 /// Attempts a frame gets when POV-Ray fails for a reason that is not in the scene: it times out
-/// starting its worker thread under load, dies of a signal, or exits 0 without a picture.
+/// starting its worker thread under load, hangs, dies of a signal, or exits 0 without a picture.
 constexpr int kRenderAttempts = 3;
+
+/// Seconds a POV-Ray run may print nothing before it is taken to hang: POV-Ray 3.7 can spin for good
+/// when its render thread fails to start under load, while a running render prints a line for every
+/// block of 32 x 32 pixels it finishes (a few hundredths of a second each at final quality). The
+/// environment variable BSIM_POVRAY_STALL_SECONDS sets another limit.
+constexpr int kStallSeconds = 60;
 
 /// A parse error POV-Ray reported: the file and line it names (empty and 0 when it names none) and
 /// its message from "Parse Error:" on, with the lines POV-Ray wrapped joined again.
@@ -62,8 +68,8 @@ std::vector<std::string> povray_arguments(const RenderSettings& settings, const 
 
 /// Renders `jobs` (frames of `total`; the others are up to date) in `frames_dir`. A job with a
 /// reference is traced in its rectangles only (each a POV-Ray run of its own) and laid over its
-/// reference's picture; a reference must come earlier in `jobs`. A frame that fails
-/// for a reason not in the scene is tried again, up to kRenderAttempts in all, with a warning on
+/// reference's picture; a reference must come earlier in `jobs`. A frame that fails (or hangs,
+/// kStallSeconds) for a reason not in the scene is tried again, up to kRenderAttempts in all, with a warning on
 /// standard error; a parse error is never retried and is printed as `FILE:LINE: error: povray: ...`.
 /// On failure `error` names the frame and quotes POV-Ray; interrupted means Ctrl-C came and every
 /// child was stopped. Either way no partial picture is left behind.

@@ -17,11 +17,24 @@ namespace bsim {
 template <class Job>
 class ProcessPool {
  public:
-  /// A pool of at most `limit` children at once (at least one).
-  explicit ProcessPool(int limit) : limit_(std::max(limit, 1)) {}
+  using Clock = std::chrono::steady_clock;
 
-  /// Whether another child may start now.
-  bool has_room() const { return static_cast<int>(running_.size()) < limit_; }
+  /// A pool of at most `limit` children at work at once (at least one). A child in its first `settle`
+  /// is not counted as at work by a short job: a program that idles as it starts (POV-Ray waits about
+  /// 0.65 s on its own threads before it traces) lets a short job start meanwhile, up to twice `limit`
+  /// children in all.
+  explicit ProcessPool(int limit, Clock::duration settle = Clock::duration::zero())
+      : limit_(std::max(limit, 1)), settle_(settle) {}
+
+  /// Whether another child may start now; a `short_job` also while others are still settling.
+  bool has_room(bool short_job = false) const {
+    const int all = static_cast<int>(running_.size());
+    if (!short_job || settle_ == Clock::duration::zero() || all < limit_) return all < limit_;
+    const auto now = Clock::now();
+    const auto at_work = std::count_if(running_.begin(), running_.end(),
+                                       [&](const auto& child) { return now - child.second.started >= settle_; });
+    return at_work < limit_ && all < 2 * limit_;
+  }
   bool empty() const { return running_.empty(); }
 
   /// Starts argv (start_process) for `job`. False with `error` set when it cannot be started.
@@ -29,7 +42,7 @@ class ProcessPool {
              std::string& error) {
     const pid_t pid = start_process(argv, cwd, log, error);
     if (pid < 0) return false;
-    running_.emplace(pid, job);
+    running_.emplace(pid, Child{job, Clock::now()});
     return true;
   }
 
@@ -39,6 +52,7 @@ class ProcessPool {
     Job job;
     bool success = false;
     int signal = 0;
+    pid_t pid = 0;
   };
   enum class Wait { ended, still_running, interrupted };
 
@@ -53,25 +67,45 @@ class ProcessPool {
       if (pid < 0) return Wait::interrupted;
       const auto it = running_.find(pid);
       if (it == running_.end()) continue;  // a child the pool did not start
-      ended = {it->second, success, signal};
+      ended = {it->second.job, success, signal, pid};
       running_.erase(it);
       return Wait::ended;
     }
   }
 
+  /// Calls `visit(pid, job)` for every running child.
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    for (const auto& [pid, child] : running_) visit(pid, child.job);
+  }
+
+  /// Stops the running child `pid` (stop_process) and hands back its job.
+  Job stop(pid_t pid) {
+    stop_process(pid);
+    const auto it = running_.find(pid);
+    Job job = it->second.job;
+    running_.erase(it);
+    return job;
+  }
+
   /// Stops every running child (stop_process), then calls `stopped(job)` for its job.
   template <class Stopped>
   void stop_all(Stopped&& stopped) {
-    for (const auto& [pid, job] : running_) {
+    for (const auto& [pid, child] : running_) {
       stop_process(pid);
-      stopped(job);
+      stopped(child.job);
     }
     running_.clear();
   }
 
  private:
+  struct Child {
+    Job job;
+    Clock::time_point started;
+  };
   int limit_;
-  std::map<pid_t, Job> running_;
+  Clock::duration settle_;
+  std::map<pid_t, Child> running_;
 };
 
 }  // namespace bsim

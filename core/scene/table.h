@@ -145,6 +145,10 @@ struct LampSpec {
   double min_half_length = 0;  ///< m, the shade's half length on a short table
   double wall = 0;             ///< m, the shade's sheet, seen from below
   double cord_radius = 0;      ///< m, the cord from the shade's top to the ceiling
+  /// Degrees from straight down: the light's cone, full within hotspot_deg and fading to nothing at
+  /// falloff_deg (the shade cuts it off), as a spotlight's radius and falloff.
+  double hotspot_deg = 0;
+  double falloff_deg = 0;
 };
 
 /// The room the table stands in: the floor is the table's bed_height below the bed.
@@ -168,6 +172,8 @@ inline constexpr RoomSpec kRoom{
             .min_half_length = 0.3,
             .wall = 0.02,
             .cord_radius = 0.006,
+            .hotspot_deg = 24,
+            .falloff_deg = 60,
         },
 };
 

@@ -158,15 +158,4 @@ TEST_SUITE("partial frames") {
     test::require_program("povray");
     rectangles_equal_whole("scenes/runout.scn", 10, 640, 360, {63, 88});
   }
-
-  TEST_CASE("regions: rectangles on the block grid merge when one round both costs less") {
-    // Two blocks side by side: one rectangle of two blocks costs less than two starts.
-    const std::vector<PixelRect> two = merge_regions({{0, 0, 32, 32}, {32, 0, 64, 32}});
-    REQUIRE(two.size() == 1);
-    CHECK(two[0] == PixelRect{0, 0, 64, 32});
-    // Far apart (the box round both would trace 40 blocks more): kept apart.
-    CHECK(merge_regions({{0, 0, 32, 32}, {320, 320, 352, 352}}).size() == 2);
-    // One inside another goes; empty ones go.
-    CHECK(merge_regions({{0, 0, 128, 128}, {32, 32, 64, 64}, {64, 64, 64, 96}}).size() == 1);
-  }
 }

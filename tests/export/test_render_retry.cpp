@@ -1,5 +1,5 @@
 // A renderer that fails for a reason outside the scene (it times out starting its worker thread
-// under load, dies of a signal, writes no picture) gets the frame again, up to three attempts in
+// under load, hangs, dies of a signal, writes no picture) gets the frame again, up to three attempts in
 // all; a parse error is never retried and is reported at its file and line. Stand-ins for POV-Ray
 // first on PATH fail on cue and hand the other attempts to the real one.
 #include <doctest/doctest.h>
@@ -194,6 +194,30 @@ TEST_SUITE("render retry") {
       const int expected = pov < std::string("frame_00005.pov") ? 2 : 1;
       CHECK(n == expected);
     }
+  }
+
+  TEST_CASE("a POV-Ray that hangs printing nothing is stopped and the frame rendered again") {
+    for (const char* tool : {"povray", "ffmpeg"}) test::require_program(tool);
+    test::TempDir dir;
+    // The first attempt at frame 0 prints its banner, then spins for good, deaf to SIGTERM, as POV-Ray
+    // 3.7 does when its render thread fails to start; every other attempt is the real POV-Ray's.
+    const std::string path = stand_in(dir,
+                                      "if [ \"$in\" = frame_00000.pov ] && [ ! -e \"$marks/hung\" ]; then\n"
+                                      "  : > \"$marks/hung\"\n"
+                                      "  echo 'Persistence of Vision(tm) Ray Tracer Version 3.7' >&2\n"
+                                      "  trap '' TERM\n"
+                                      "  while :; do :; done\n"
+                                      "fi\n"
+                                      "exec " +
+                                          quoted(real_povray()) + " \"$@\"");
+    const test::CommandResult r = run_export(dir, "BSIM_POVRAY_STALL_SECONDS=4 " + path, "--jobs 2");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    CHECK(r.err.find("billiards-export: warning: frame 0 (frames/frame_00000.pov): povray failed (printed nothing "
+                     "for 4 s: it hangs); retrying (attempt 2 of 3)") != std::string::npos);
+    const fs::path out = dir.path / "out";
+    CHECK(pictures(out / "frames") == povs(out / "frames"));
+    CHECK(test::leftovers(out).empty());
+    CHECK(attempts(dir).at("frame_00000.pov") == 2);
   }
 
   TEST_CASE("a frame that fails three times ends the run after exactly three attempts") {

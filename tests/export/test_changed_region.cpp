@@ -1,0 +1,145 @@
+// Where a frame can differ from another of the same camera (export/changed_region.h), from geometry
+// alone: every point of what changed lands in a rectangle, the rectangles do not overlap, and a long
+// thin part is held by a chain of rectangles, not by the box round it.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "builtin_scene.h"
+#include "camera_view.h"
+#include "changed_region.h"
+#include "scene_parse.h"
+
+using namespace bsim;
+
+namespace {
+
+constexpr int kWidth = 640, kHeight = 360;
+
+/// The built-in break's table and room.
+RegionScene standard_room() {
+  const ParseResult parsed = parse_scene(builtin_scene_text(), "break");
+  REQUIRE(parsed.scene);
+  return region_scene(*parsed.scene);
+}
+
+/// Two frames of one camera in which one part, seen as `seen` and casting `casts`, changed.
+std::pair<FrameContent, FrameContent> one_change(const CameraPose& pose, const std::vector<BoundCapsule>& seen,
+                                                 const std::vector<BoundCapsule>& casts) {
+  FrameContent a;
+  a.camera = "camera";
+  a.camera_pose = pose;
+  a.parts.push_back({"before", seen, casts, false});
+  FrameContent b = a;
+  b.parts[0].text = "after";
+  return {a, b};
+}
+
+/// The pixel `p` lands on, or none when it is not in the picture.
+std::optional<std::pair<int, int>> pixel_of(const CameraPose& pose, const Vec3& p) {
+  const CameraView view(pose, kCameraFovDeg, static_cast<double>(kWidth) / kHeight);
+  const std::optional<PicturePoint> at = view.project(p);
+  if (!at || std::abs(at->x) >= 1 || std::abs(at->y) >= 1) return std::nullopt;
+  return std::pair{static_cast<int>(0.5 * kWidth * (1 + at->x)), static_cast<int>(0.5 * kHeight * (1 - at->y))};
+}
+
+bool in_some(const std::vector<PixelRect>& rects, std::pair<int, int> pixel) {
+  return std::any_of(rects.begin(), rects.end(), [&](const PixelRect& r) {
+    return pixel.first >= r.x0 && pixel.first < r.x1 && pixel.second >= r.y0 && pixel.second < r.y1;
+  });
+}
+
+bool overlap(const PixelRect& a, const PixelRect& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+long total_area(const std::vector<PixelRect>& rects) {
+  long area = 0;
+  for (const PixelRect& r : rects) area += r.area();
+  return area;
+}
+
+}  // namespace
+
+TEST_SUITE("changed region") {
+  TEST_CASE("a stick lying across the picture is held by a chain of rectangles, far less than its box") {
+    const RegionScene room = standard_room();
+    const CameraPose pose{Vec3(0, -2.2, 0.95), Vec3(0, 0, 0), false};  // below the shade's rim
+    // The stick from over the cloth's middle up to the far right, as a player holds it: 1.47 m.
+    const BoundCapsule stick{{Vec3(-0.6, -0.3, 0.05), 0.017}, {Vec3(0.75, 0.25, 0.45), 0.017}};
+    const auto [before, after] = one_change(pose, {stick}, {});
+    const auto rects = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(rects);
+    REQUIRE(!rects->empty());
+    for (int k = 0; k <= 200; ++k) {
+      const double u = k / 200.0;
+      const auto pixel = pixel_of(pose, stick.a.centre + u * (stick.b.centre - stick.a.centre));
+      REQUIRE(pixel);
+      CAPTURE(u);
+      CHECK(in_some(*rects, *pixel));
+    }
+    // The box round the stick's two ends in the picture.
+    const auto a = *pixel_of(pose, stick.a.centre), b = *pixel_of(pose, stick.b.centre);
+    const long box = static_cast<long>(std::abs(a.first - b.first)) * std::abs(a.second - b.second);
+    CHECK(rects->size() >= 3);
+    CHECK(total_area(*rects) < box * 6 / 10);
+    for (std::size_t i = 0; i < rects->size(); ++i)
+      for (std::size_t j = i + 1; j < rects->size(); ++j) CHECK_FALSE(overlap((*rects)[i], (*rects)[j]));
+  }
+
+  TEST_CASE("a ball's shadow near a pocket takes in all the lamp lights inside that pocket's cup") {
+    const RegionScene room = standard_room();
+    REQUIRE(room.pockets.size() == 6);
+    const RegionScene::Opening pocket = room.pockets[0];
+    // A ball on the cloth by that pocket, seen from across the table, below the shade's rim.
+    const Vec3 ball(pocket.x * 0.93, pocket.y * 0.86, 0.028575);
+    const BoundSphere s{ball, 0.03};
+    const CameraPose pose{Vec3(-pocket.x, -pocket.y * 3, 0.95), Vec3(pocket.x, pocket.y, 0), false};
+    const auto [before, after] = one_change(pose, {{s, s}}, {{s, s}});
+    const auto rects = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(rects);
+    // The cup's floor right under the opening's edge, where light falling through it lands.
+    for (double angle = 0; angle < 6.28; angle += 0.5) {
+      const Vec3 floor(pocket.x + 0.9 * pocket.radius * std::cos(angle), pocket.y + 0.9 * pocket.radius * std::sin(angle),
+                       room.cup_floor);
+      const auto pixel = pixel_of(pose, floor);
+      if (!pixel) continue;
+      CAPTURE(angle);
+      CHECK(in_some(*rects, *pixel));
+    }
+    // A ball in the middle of the cloth reaches no cup: the rectangles stay round it and its shadow.
+    const BoundSphere middle{Vec3(0.1, 0.05, 0.028575), 0.03};
+    const auto [b2, a2] = one_change(pose, {{middle, middle}}, {{middle, middle}});
+    const auto small = changed_region(b2, a2, room, kWidth, kHeight);
+    REQUIRE(small);
+    CHECK(total_area(*small) < kWidth * kHeight / 50);
+  }
+
+  TEST_CASE("the standard room lies outside the lamp's cone: a shadow leaving the table falls on nothing lit") {
+    CHECK_FALSE(standard_room().lamp_lights_room);
+  }
+
+  TEST_CASE("regions: rectangles on the grid merge when one round both costs less") {
+    // Two blocks side by side: one rectangle of two blocks costs less than two starts.
+    const std::vector<PixelRect> two = merge_regions({{0, 0, 32, 32}, {32, 0, 64, 32}});
+    REQUIRE(two.size() == 1);
+    CHECK(two[0] == PixelRect{0, 0, 64, 32});
+    // Far apart (the box round both would trace 40 blocks more): kept apart.
+    CHECK(merge_regions({{0, 0, 32, 32}, {320, 320, 352, 352}}).size() == 2);
+    // One inside another goes; empty ones go.
+    CHECK(merge_regions({{0, 0, 128, 128}, {32, 32, 64, 64}, {64, 64, 64, 96}}).size() == 1);
+  }
+
+  TEST_CASE("regions: overlapping rectangles become ones that do not overlap, covering the same pixels") {
+    const std::vector<PixelRect> in = {{0, 0, 64, 64}, {40, 40, 200, 104}, {400, 0, 408, 8}};
+    const std::vector<PixelRect> out = merge_regions(in);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      for (std::size_t j = i + 1; j < out.size(); ++j) CHECK_FALSE(overlap(out[i], out[j]));
+    for (const PixelRect& r : in)
+      for (int y = r.y0; y < r.y1; y += 4)
+        for (int x = r.x0; x < r.x1; x += 4) CHECK(in_some(out, {x, y}));
+    // Traced less than the box round the first two, and not joined to the far one.
+    CHECK(total_area(out) < 200 * 104);
+    CHECK(std::any_of(out.begin(), out.end(), [](const PixelRect& r) { return r == PixelRect{400, 0, 408, 8}; }));
+  }
+}
