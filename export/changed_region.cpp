@@ -241,6 +241,54 @@ Hull shade_hull(const RegionScene& scene) {
   return hull;
 }
 
+PixelRect overlap_of(const PixelRect& a, const PixelRect& b) {
+  return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+/// Where the shade's lacquer can show what changed (every hull in `hulls`, the balls that mirror it
+/// included), added to `rects`. Each outer face is a plane mirror: a point X in front of it is seen
+/// in it along the line from the eye to X mirrored in its plane, so within that image's picture and
+/// within the shade's. A face the eye is behind shows nothing, and one whose normal points up (every
+/// outer face) turns a ray from below up again: only an eye above the rim sees the table in it.
+void add_shade_mirror(const Vec3& eye, const std::vector<Hull>& hulls, const RegionScene& scene,
+                      const PixelProjection& projection, std::vector<PixelRect>& rects) {
+  if (eye.z() < scene.shade_min.z()) return;
+  const PixelRect shade = projection.bound(shade_hull(scene));
+  if (shade.area() <= 0) return;
+  for (const RegionScene::Mirror& face : scene.shade_faces) {
+    if ((eye - face.point).dot(face.normal) <= 0) continue;
+    for (const Hull& hull : hulls) {
+      Hull image;
+      for (const BoundSphere& s : hull) {
+        const double ahead = (s.centre - face.point).dot(face.normal);
+        if (ahead + s.radius > 0) image.push_back({s.centre - 2 * ahead * face.normal, s.radius});
+      }
+      if (image.empty()) continue;
+      const PixelRect seen = overlap_of(projection.bound(image), shade);
+      if (seen.x1 > seen.x0 && seen.y1 > seen.y0) rects.push_back(seen);
+    }
+  }
+}
+
+/// The outer faces of the lamp's shade as the include's ShadeSolid builds them: four sides drawn in
+/// by the taper from the rim to the eaves, and the hipped roof's four faces from the eaves up to the
+/// ridge at the shade's top.
+std::vector<RegionScene::Mirror> shade_faces(const TableLayout& layout) {
+  const LampSpec& lamp = kRoom.lamp;
+  const double mx = 0.5 * (layout.lamp.x0 + layout.lamp.x1), my = 0.5 * (layout.lamp.y0 + layout.lamp.y1);
+  const double hu = 0.5 * (layout.lamp.x1 - layout.lamp.x0), hv = 0.5 * (layout.lamp.y1 - layout.lamp.y0);
+  const double rim = layout.lamp_bottom, pitch = lamp.roof_pitch_deg * std::numbers::pi / 180;
+  const double eaves = layout.lamp_top - (hv - lamp.taper) * std::tan(pitch);
+  std::vector<RegionScene::Mirror> faces;
+  for (const double side : {1.0, -1.0}) {
+    faces.push_back({Vec3(0, side * (eaves - rim), lamp.taper).normalized(), Vec3(mx, my + side * hv, rim)});
+    faces.push_back({Vec3(side * (eaves - rim), 0, lamp.taper).normalized(), Vec3(mx + side * hu, my, rim)});
+    faces.push_back({Vec3(0, side * std::sin(pitch), std::cos(pitch)), Vec3(mx, my + side * (hv - lamp.taper), eaves)});
+    faces.push_back({Vec3(side * std::sin(pitch), 0, std::cos(pitch)), Vec3(mx + side * (hu - lamp.taper), my, eaves)});
+  }
+  return faces;
+}
+
 }  // namespace
 
 RegionScene region_scene(const Scene& scene) {
@@ -252,6 +300,7 @@ RegionScene region_scene(const Scene& scene) {
   r.light_z = layout.lamp_bottom + 0.01;
   r.shade_min = Vec3(layout.lamp.x0 - 0.01, layout.lamp.y0 - 0.01, layout.lamp_bottom - 0.01);
   r.shade_max = Vec3(layout.lamp.x1 + 0.01, layout.lamp.y1 + 0.01, layout.lamp_top + 0.01);
+  r.shade_faces = shade_faces(layout);
   r.frame_x0 = layout.wood_outer.x0, r.frame_y0 = layout.wood_outer.y0;
   r.frame_x1 = layout.wood_outer.x1, r.frame_y1 = layout.wood_outer.y1;
   r.bed = -0.001;                      // the cloth's top is z = 0
@@ -323,13 +372,13 @@ std::optional<std::vector<PixelRect>> changed_region(const FrameContent& referen
   for (std::size_t i = 0; i < frame.parts.size(); ++i)
     if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
       for (const BoundCapsule& c : frame.parts[i].seen) hulls.push_back({c.a, c.b});
-  if (frame.camera_pose.location.z() >= scene.shade_min.z()) hulls.push_back(shade_hull(scene));
 
   const PixelProjection projection(frame.camera_pose, width, height);
   std::vector<PixelRect> rects;
   for (const Hull& hull : hulls) {
     rects.push_back(projection.bound(hull));
   }
+  add_shade_mirror(frame.camera_pose.location, hulls, scene, projection, rects);
   rects = merge_regions(std::move(rects));
   long cost = 0;
   for (const PixelRect& r : rects) cost += r.area() + kRegionStartPixels;

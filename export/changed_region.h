@@ -17,8 +17,9 @@
 //   room's walls are outside its cone (else such a shadow is followed down to the room's floor).
 //   The other lights cast no shadow;
 // - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
-//   its mirror image can show lies on its sphere); the lamp shade's lacquer mirrors the table only to
-//   a camera above its rim, so then its box too. Nothing else in the models reflects.
+//   its mirror image can show lies on its sphere); the lamp shade's lacquered outer faces are plane
+//   mirrors, seen only from above its rim: what changed (and every ball) mirrored in each face the
+//   camera sees, within the shade's picture. Nothing else in the models reflects.
 // Each capsule of a bound is cut into pieces of at most kPieceLength, so that a long one (the stick
 // lying across the picture) is held by a chain of small rectangles, not one box round it all. Each
 // hull is projected and grown by kRegionMarginPixels, then snapped out to a grid of kRegionGrid pixels.
@@ -66,6 +67,11 @@ struct RegionScene {
   double light_x0 = 0, light_y0 = 0, light_x1 = 0, light_y1 = 0;  ///< every light sample of the lamp lies in
   double light_z = 0;                                             ///< this rectangle at this height (m)
   Vec3 shade_min{0, 0, 0}, shade_max{0, 0, 0};                    ///< the box round the lamp's lacquered shade
+  /// A plane mirror: its outward unit normal and a point of it.
+  struct Mirror {
+    Vec3 normal{0, 0, 1}, point{0, 0, 0};
+  };
+  std::vector<Mirror> shade_faces;  ///< the shade's lacquered outer faces
   double frame_x0 = 0, frame_y0 = 0, frame_x1 = 0, frame_y1 = 0;  ///< the table's wooden frame, seen from above
   double bed = 0;                                                 ///< just below the cloth's top
   double cup_floor = 0;                                           ///< below the lowest point of the pockets' cups

@@ -46,6 +46,8 @@ void write_table_description(const TableLayout& layout, std::ostream& out) {
       << ";  // half the shade seen from above, over Middle\n";
   out << "#declare LampWall = " << pov_number(lamp.wall) << ";\n";
   out << "#declare LampCordR = " << pov_number(lamp.cord_radius) << ";\n";
+  out << "#declare ShadeTaper = " << pov_number(lamp.taper) << ";  // m the shade's sides are drawn in, rim to eaves\n";
+  out << "#declare RoofPitch = " << pov_number(lamp.roof_pitch_deg) << ";  // deg: the hipped roof over the eaves\n";
   out << "#declare LampHotspot = " << pov_number(lamp.hotspot_deg) << ";  // deg from straight down: the light's\n";
   out << "#declare LampFalloff = " << pov_number(lamp.falloff_deg) << ";  // full cone and where it fades out\n";
   out << "#declare PocketLinerT = " << pov_number(spec.jaws.liner) << ";  // the pockets' leather liner\n";

@@ -145,6 +145,8 @@ struct LampSpec {
   double min_half_length = 0;  ///< m, the shade's half length on a short table
   double wall = 0;             ///< m, the shade's sheet, seen from below
   double cord_radius = 0;      ///< m, the cord from the shade's top to the ceiling
+  double taper = 0;            ///< m the shade's sides are drawn in on each side, rim to eaves
+  double roof_pitch_deg = 0;   ///< from the eaves a hipped roof rises to a ridge along the lamp
   /// Degrees from straight down: the light's cone, full within hotspot_deg and fading to nothing at
   /// falloff_deg (the shade cuts it off), as a spotlight's radius and falloff.
   double hotspot_deg = 0;
@@ -172,6 +174,8 @@ inline constexpr RoomSpec kRoom{
             .min_half_length = 0.3,
             .wall = 0.02,
             .cord_radius = 0.006,
+            .taper = 0.07,
+            .roof_pitch_deg = 28,
             .hotspot_deg = 24,
             .falloff_deg = 60,
         },

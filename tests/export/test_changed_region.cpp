@@ -115,6 +115,35 @@ TEST_SUITE("changed region") {
     CHECK(total_area(*small) < kWidth * kHeight / 50);
   }
 
+  TEST_CASE("a ball seen in the lamp shade's lacquer, from above its rim, is in the region") {
+    const RegionScene room = standard_room();
+    REQUIRE(room.shade_faces.size() == 8);
+    const RegionScene::Mirror& side = room.shade_faces[0];  // the side facing +y
+    REQUIRE(side.normal.y() > 0.5);
+    // An eye above the rim and close to that side, looking down at it: a point Q on the face mirrors
+    // what lies along the view reflected there, which goes down to the cloth.
+    const Vec3 eye = side.point + Vec3(0.0, 0.1, 0.8);
+    const Vec3 q = side.point + 0.05 * Vec3(0, -side.normal.z(), side.normal.y()) + Vec3(0.1, 0, 0);  // up the face
+    const Vec3 d = (q - eye).normalized();
+    const Vec3 r = d - 2 * d.dot(side.normal) * side.normal;
+    REQUIRE(r.z() < 0);
+    const Vec3 ball = q + ((0.028575 - q.z()) / r.z()) * r;  // where that reflected ray meets a ball's centre height
+    const CameraPose pose{eye, q, false};
+    const BoundSphere s{ball, 0.03};
+    const auto [before, after] = one_change(pose, {{s, s}}, {});
+    const auto rects = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(rects);
+    const auto pixel = pixel_of(pose, q);
+    REQUIRE(pixel);
+    CHECK(in_some(*rects, *pixel));
+    // Seen from below the rim the shade shows nothing of the table: only the ball itself is traced.
+    const CameraPose low{Vec3(0, 2.0, 0.5), ball, false};
+    const auto [b2, a2] = one_change(low, {{s, s}}, {});
+    const auto ball_only = changed_region(b2, a2, room, kWidth, kHeight);
+    REQUIRE(ball_only);
+    CHECK(ball_only->size() == 1);
+  }
+
   TEST_CASE("the standard room lies outside the lamp's cone: a shadow leaving the table falls on nothing lit") {
     CHECK_FALSE(standard_room().lamp_lights_room);
   }
