@@ -92,6 +92,11 @@ std::vector<Hull> capsule_pieces(const BoundCapsule& c) {
 /// table's frame; when nothing it lights lies beyond the frame below the cloth (the room outside its
 /// cone), the shadow down to the cloth and the lit inside of every cup it reaches hold it all.
 bool piece_shadow(const Hull& piece, const RegionScene& scene, std::vector<Hull>& hulls) {
+  // Wholly above the lamp's light it casts nothing: the lamp lights only what lies below it (its cone
+  // points down), so every shadow ray runs below the light's plane.
+  if (std::all_of(piece.begin(), piece.end(),
+                  [&](const BoundSphere& s) { return s.centre.z() - s.radius > scene.light_z + kNearest; }))
+    return true;
   Hull hull;
   if (!shadow_hull(piece, scene, scene.bed, hull)) return false;
   if (!scene.lamp_lights_room) {

@@ -15,7 +15,7 @@
 //   the pockets' cups, through their openings, so a shadow reaching an opening adds all that the
 //   lamp lights in that cup; beyond the table's frame below the cloth it lights nothing while the
 //   room's walls are outside its cone (else such a shadow is followed down to the room's floor).
-//   The other lights cast no shadow;
+//   A piece wholly above the lamp's light casts nothing. The other lights cast no shadow;
 // - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
 //   its mirror image can show lies on its sphere); the lamp shade's lacquered outer faces are plane
 //   mirrors, seen only from above its rim: what changed (and every ball) mirrored in each face the
