@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "pocket_fall.h"
@@ -21,15 +22,41 @@ constexpr double kNearest = 0.01;
 /// Spheres whose convex hull must be kept in the region.
 using Hull = std::vector<BoundSphere>;
 
-/// The hull of the shadow `casts` throws from the lamp down to `z0` (see changed_region.h); false
-/// when a sphere reaches up to the light.
+/// How far beyond `casts`, as a factor on the way from a light point, a point the lamp lights can lie
+/// (infinity: no bound). The lamp's colour and cone are taken on the ray to its centre, so a point P
+/// it lights lies within the falloff angle of straight down from there, and so within
+/// tan(falloff) (Lz - P.z) of the light's rectangle seen from above. A point P = L + t (X - L) beyond
+/// a point X of the casts from a light point L lies at least t d - diag from that rectangle (d: the
+/// casts' least distance from it seen from above, diag: its diagonal) and t (Lz - bottom) below the
+/// light at most: lit only while t (d - tan(falloff) (Lz - bottom)) <= diag.
+double cone_scale(const std::vector<BoundSphere>& casts, const RegionScene& scene) {
+  double d = 1e300, bottom = 1e300;
+  for (const BoundSphere& s : casts) {
+    const double dx = std::max({scene.light_x0 - s.centre.x(), s.centre.x() - scene.light_x1, 0.0});
+    const double dy = std::max({scene.light_y0 - s.centre.y(), s.centre.y() - scene.light_y1, 0.0});
+    d = std::min(d, std::hypot(dx, dy) - s.radius);
+    bottom = std::min(bottom, s.centre.z() - s.radius);
+  }
+  const double k = d - std::tan(scene.cone_deg * std::numbers::pi / 180) * (scene.light_z - bottom);
+  if (k <= 1e-9) return std::numeric_limits<double>::infinity();
+  return std::hypot(scene.light_x1 - scene.light_x0, scene.light_y1 - scene.light_y0) / k;
+}
+
+/// The hull of the shadow `casts` throws from the lamp down to `z0`, or less far where the lamp's
+/// cone ends (see changed_region.h); false when a sphere reaches up to the light outside that bound.
 bool shadow_hull(const std::vector<BoundSphere>& casts, const RegionScene& scene, double z0, Hull& hull) {
   double scale = 1;
+  bool to_light = false;
   for (const BoundSphere& s : casts) {
     const double top = s.centre.z() + s.radius;
-    if (top > scene.light_z - kNearest) return false;
-    scale = std::max(scale, (scene.light_z - z0) / (scene.light_z - top));
+    if (top > scene.light_z - kNearest)
+      to_light = true;
+    else
+      scale = std::max(scale, (scene.light_z - z0) / (scene.light_z - top));
   }
+  const double cone = cone_scale(casts, scene);
+  if (to_light && !std::isfinite(cone)) return false;
+  scale = std::max(1.0, to_light ? cone : std::min(scale, cone));
   hull = casts;
   for (double lx : {scene.light_x0, scene.light_x1}) {
     for (double ly : {scene.light_y0, scene.light_y1}) {
@@ -303,6 +330,7 @@ RegionScene region_scene(const Scene& scene) {
   // rim, inside the shade seen from above.
   r.light_x0 = layout.lamp.x0, r.light_y0 = layout.lamp.y0, r.light_x1 = layout.lamp.x1, r.light_y1 = layout.lamp.y1;
   r.light_z = layout.lamp_bottom + 0.01;
+  r.cone_deg = kRoom.lamp.falloff_deg;
   r.shade_min = Vec3(layout.lamp.x0 - 0.01, layout.lamp.y0 - 0.01, layout.lamp_bottom - 0.01);
   r.shade_max = Vec3(layout.lamp.x1 + 0.01, layout.lamp.y1 + 0.01, layout.lamp_top + 0.01);
   r.shade_faces = shade_faces(layout);

@@ -15,7 +15,10 @@
 //   the pockets' cups, through their openings, so a shadow reaching an opening adds all that the
 //   lamp lights in that cup; beyond the table's frame below the cloth it lights nothing while the
 //   room's walls are outside its cone (else such a shadow is followed down to the room's floor).
-//   A piece wholly above the lamp's light casts nothing. The other lights cast no shadow;
+//   A piece wholly above the lamp's light casts nothing, and one far from the light seen from above
+//   casts no further than the lamp's cone reaches (its cone is taken from the light's centre): so
+//   the stick's butt swinging down through the light's plane beside the lamp is bounded too. The
+//   other lights cast no shadow;
 // - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
 //   its mirror image can show lies on its sphere); the lamp shade's lacquered outer faces are plane
 //   mirrors, seen only from above its rim: what changed (and every ball) mirrored in each face the
@@ -66,6 +69,7 @@ struct PixelRect {
 struct RegionScene {
   double light_x0 = 0, light_y0 = 0, light_x1 = 0, light_y1 = 0;  ///< every light sample of the lamp lies in
   double light_z = 0;                                             ///< this rectangle at this height (m)
+  double cone_deg = 90;  ///< the lamp lights nothing further than this from straight down from its centre
   Vec3 shade_min{0, 0, 0}, shade_max{0, 0, 0};                    ///< the box round the lamp's lacquered shade
   /// A plane mirror: its outward unit normal and a point of it.
   struct Mirror {

@@ -144,6 +144,22 @@ TEST_SUITE("changed region") {
     CHECK(ball_only->size() == 1);
   }
 
+  TEST_CASE("the stick swinging down through the lamp's light beside the lamp still has a bounded shadow") {
+    const RegionScene room = standard_room();
+    // A player's stick behind the head rail, its butt up at the height of the lamp's light, well
+    // beside the lamp seen from above: the lamp's cone cannot reach far beyond it.
+    const BoundCapsule stick{{Vec3(-1.45, 0.0, 0.08), 0.017}, {Vec3(-2.25, 0.0, room.light_z + 0.05), 0.017}};
+    const CameraPose pose{Vec3(0.5, -2.5, 0.95), Vec3(-0.8, 0, 0.2), false};
+    const auto [before, after] = one_change(pose, {stick}, {stick});
+    const auto rects = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(rects);
+    CHECK(total_area(*rects) < kWidth * kHeight / 2);
+    // Straight over the lamp's light the same height is not bounded: the frame is traced whole.
+    const BoundCapsule over{{Vec3(0.0, 0.0, 0.5), 0.017}, {Vec3(0.1, 0.0, room.light_z + 0.05), 0.017}};
+    const auto [b2, a2] = one_change(pose, {over}, {over});
+    CHECK_FALSE(changed_region(b2, a2, room, kWidth, kHeight));
+  }
+
   TEST_CASE("the standard room lies outside the lamp's cone: a shadow leaving the table falls on nothing lit") {
     CHECK_FALSE(standard_room().lamp_lights_room);
   }
