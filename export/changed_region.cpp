@@ -67,6 +67,15 @@ bool shadow_hull(const std::vector<BoundSphere>& casts, const RegionScene& scene
   return true;
 }
 
+/// An upright box as a hull: its eight corners (two spheres round them would hold more).
+Hull box_hull(const Vec3& min, const Vec3& max) {
+  Hull hull;
+  for (int corner = 0; corner < 8; ++corner)
+    hull.push_back({Vec3(corner & 1 ? max.x() : min.x(), corner & 2 ? max.y() : min.y(), corner & 4 ? max.z() : min.z()),
+                    0.0});
+  return hull;
+}
+
 /// The hull's extent seen from above.
 struct PlanBox {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -87,16 +96,16 @@ bool over_frame(const Hull& hull, const RegionScene& scene) {
   return box.x0 >= scene.frame_x0 && box.x1 <= scene.frame_x1 && box.y0 >= scene.frame_y0 && box.y1 <= scene.frame_y1;
 }
 
-/// Whether the hull, seen from above, may reach pocket `p`'s opening.
-bool reaches(const Hull& hull, const RegionScene::Opening& p) {
-  const PlanBox box = plan_box(hull);
+/// Whether a hull of extent `box` seen from above may reach pocket `p`'s opening.
+bool reaches(const PlanBox& box, const RegionScene::Opening& p) {
   const double dx = std::max({box.x0 - p.x, p.x - box.x1, 0.0}), dy = std::max({box.y0 - p.y, p.y - box.y1, 0.0});
   return dx * dx + dy * dy <= p.radius * p.radius;
 }
 
 bool near_pocket(const Hull& hull, const RegionScene& scene) {
+  const PlanBox box = plan_box(hull);
   return std::any_of(scene.pockets.begin(), scene.pockets.end(),
-                     [&](const RegionScene::Opening& p) { return reaches(hull, p); });
+                     [&](const RegionScene::Opening& p) { return reaches(box, p); });
 }
 
 /// The capsule cut along its length into pieces of at most kPieceLength, each the hull of two
@@ -127,8 +136,9 @@ bool piece_shadow(const Hull& piece, const RegionScene& scene, std::vector<Hull>
   Hull hull;
   if (!shadow_hull(piece, scene, scene.bed, hull)) return false;
   if (!scene.lamp_lights_room) {
+    const PlanBox box = plan_box(hull);
     for (std::size_t p = 0; p < scene.pockets.size(); ++p)
-      if (reaches(hull, scene.pockets[p])) hulls.push_back(scene.cups[p]);
+      if (reaches(box, scene.pockets[p])) hulls.push_back(scene.cups[p]);
     hulls.push_back(std::move(hull));
     return true;
   }
@@ -216,25 +226,24 @@ std::vector<PixelRect> disjoint_cover(const std::vector<PixelRect>& rects) {
   for (const PixelRect& r : rects) right = std::max(right, r.x1), bottom = std::max(bottom, r.y1);
   const int columns = (right + kRegionGrid - 1) / kRegionGrid, rows = (bottom + kRegionGrid - 1) / kRegionGrid;
   std::vector<char> covered(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
+  const auto cell = [&](int x, int y) -> char& {
+    return covered[static_cast<std::size_t>(y) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(x)];
+  };
   for (const PixelRect& r : rects)
     for (int y = r.y0 / kRegionGrid; y * kRegionGrid < r.y1; ++y)
-      for (int x = r.x0 / kRegionGrid; x * kRegionGrid < r.x1; ++x)
-        covered[static_cast<std::size_t>(y) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(x)] = 1;
+      for (int x = r.x0 / kRegionGrid; x * kRegionGrid < r.x1; ++x) cell(x, y) = 1;
   std::vector<PixelRect> cover;
   std::vector<std::size_t> above(static_cast<std::size_t>(columns), SIZE_MAX);  // the run starting there, last row
   for (int y = 0; y < rows; ++y) {
     std::vector<std::size_t> here(static_cast<std::size_t>(columns), SIZE_MAX);
     const int y0 = y * kRegionGrid, y1 = std::min(bottom, y0 + kRegionGrid);
     for (int x = 0; x < columns;) {
-      const auto cell = [&](int cx) {
-        return covered[static_cast<std::size_t>(y) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(cx)];
-      };
-      if (!cell(x)) {
+      if (!cell(x, y)) {
         ++x;
         continue;
       }
       int end = x;
-      while (end < columns && cell(end)) ++end;
+      while (end < columns && cell(end, y)) ++end;
       const int x0 = x * kRegionGrid, x1 = std::min(right, end * kRegionGrid);
       const std::size_t joined = above[static_cast<std::size_t>(x)];
       if (joined != SIZE_MAX && cover[joined].x1 == x1 && cover[joined].y1 == y0) {
@@ -262,16 +271,6 @@ bool changed_hulls(const FramePart& part, const RegionScene& scene, std::vector<
   return true;
 }
 
-/// The lamp shade's box as a hull (two spheres round its corners would be larger: its eight corners).
-Hull shade_hull(const RegionScene& scene) {
-  Hull hull;
-  for (int corner = 0; corner < 8; ++corner)
-    hull.push_back({Vec3(corner & 1 ? scene.shade_max.x() : scene.shade_min.x(),
-                         corner & 2 ? scene.shade_max.y() : scene.shade_min.y(),
-                         corner & 4 ? scene.shade_max.z() : scene.shade_min.z()),
-                    0.0});
-  return hull;
-}
 
 PixelRect overlap_of(const PixelRect& a, const PixelRect& b) {
   return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
@@ -285,7 +284,7 @@ PixelRect overlap_of(const PixelRect& a, const PixelRect& b) {
 void add_shade_mirror(const Vec3& eye, const std::vector<Hull>& hulls, const RegionScene& scene,
                       const PixelProjection& projection, std::vector<PixelRect>& rects) {
   if (eye.z() < scene.shade_min.z()) return;
-  const PixelRect shade = projection.bound(shade_hull(scene));
+  const PixelRect shade = projection.bound(box_hull(scene.shade_min, scene.shade_max));
   if (shade.area() <= 0) return;
   for (const RegionScene::Mirror& face : scene.shade_faces) {
     if ((eye - face.point).dot(face.normal) <= 0) continue;
@@ -348,12 +347,8 @@ RegionScene region_scene(const Scene& scene) {
     if (p.jawed()) radius = std::max({radius, (p.nose[0] - p.centre).norm(), (p.nose[1] - p.centre).norm()});
     const RegionScene::Opening opening{p.centre.x(), p.centre.y(), radius + 0.02};
     r.pockets.push_back(opening);
-    std::vector<BoundSphere> cup;
-    for (int corner = 0; corner < 8; ++corner)
-      cup.push_back({Vec3(opening.x + (corner & 1 ? 1 : -1) * opening.radius,
-                          opening.y + (corner & 2 ? 1 : -1) * opening.radius, corner & 4 ? r.bed : r.cup_floor),
-                     0.0});
-    r.cups.push_back(std::move(cup));
+    r.cups.push_back(box_hull(Vec3(opening.x - opening.radius, opening.y - opening.radius, r.cup_floor),
+                              Vec3(opening.x + opening.radius, opening.y + opening.radius, r.bed)));
   }
   // Beyond the frame and below the cloth the lamp lights nothing when the walls (and what hangs on
   // them, within kWallDepth of them) lie outside its cone, seen from the nearest point of its light:

@@ -94,7 +94,7 @@ struct RegionScene {
 
 RegionScene region_scene(const Scene& scene);
 
-/// The rectangles (on the render-block grid, sorted, none inside another) that hold every pixel in
+/// The rectangles (on the grid, sorted, none overlapping another) that hold every pixel in
 /// which `frame` can differ from `reference`, a frame of the same camera, at width x height; none
 /// when the two are the same. Nothing (render it whole) when the cameras differ, a bound reaches
 /// behind the camera or above the lamp's light, or the rectangles would cost nearly the whole picture.

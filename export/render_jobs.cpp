@@ -242,6 +242,16 @@ class FrameRendering {
     cleanup(frame, part);
   }
 
+  /// After Ctrl-C: drops `attempt`'s files, stops every other run and marks the run interrupted
+  /// (true); else false.
+  bool stopped_by_user(const Attempt& attempt) {
+    if (!InterruptGuard::interrupted()) return false;
+    cleanup(attempt.job.frame, attempt.part);
+    stop_all();
+    outcome_ = RunOutcome::interrupted;
+    return true;
+  }
+
   /// Stops every POV-Ray run whose log has not grown for the stall limit (kStallSeconds), and tries
   /// its frame again or fails it. False when the run stops here (Ctrl-C).
   bool stop_stalled() {
@@ -259,12 +269,7 @@ class FrameRendering {
     for (const pid_t pid : stalled) {
       watched_.erase(pid);
       const Attempt attempt = pool_.stop(pid);
-      if (InterruptGuard::interrupted()) {
-        cleanup(attempt.job.frame, attempt.part);
-        stop_all();
-        outcome_ = RunOutcome::interrupted;
-        return false;
-      }
+      if (stopped_by_user(attempt)) return false;
       retry_or_fail(attempt, "printed nothing for " + std::to_string(stall_limit_.count()) + " s: it hangs");
     }
     return true;
@@ -318,13 +323,8 @@ class FrameRendering {
       rendered(attempt, std::move(image));
       return true;
     }
-    if (InterruptGuard::interrupted()) {
-      // Ctrl-C reaches POV-Ray too, which dies of it: the user stopping the run, not a failure.
-      cleanup(frame, attempt.part);
-      stop_all();
-      outcome_ = RunOutcome::interrupted;
-      return false;
-    }
+    // Ctrl-C reaches POV-Ray too, which dies of it: the user stopping the run, not a failure.
+    if (stopped_by_user(attempt)) return false;
     const std::string log_text = read_text_file(dir_ + log_name(frame, attempt.part));
     if (const std::optional<PovParseError> parse = find_parse_error(log_text)) {
       parse_failed(attempt, *parse);
