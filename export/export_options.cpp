@@ -1,5 +1,11 @@
 #include "export_options.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
 #include "command_line.h"
 #include "mastering.h"
 
@@ -90,6 +96,53 @@ void add_farm_rows(OptionTable& table, ExportOptions& o) {
   table.push_back({"--frames", "A-B", "", [&o](S n, S v, std::string& m) { return apply_frames(o, n, v, m); }, false});
 }
 
+/// One rule for every option: one that does nothing beside the others given is a mistake, said so
+/// (exit 2) rather than accepted in silence. Empty when each option given has an effect.
+std::string inert_option_message(const ExportOptions& o) {
+  const auto given = [&o](std::string_view name) {
+    return std::find(o.given.begin(), o.given.end(), name) != o.given.end() || (name == "--size" && o.size_given);
+  };
+  struct Inert {
+    bool mode;
+    const char* mode_name;
+    const char* why;
+    std::vector<std::string_view> options;
+  };
+  const Inert rules[] = {
+      {o.events_only,
+       "--events-only",
+       "it writes no frames, sound or movie",
+       {"--no-render", "--size", "--quality", "--jobs", "--whole-frames", "--audio-lead", "--music", "--loudness"}},
+      {o.no_render, "--no-render", "it runs no POV-Ray", {"--jobs", "--whole-frames"}},
+  };
+  for (const Inert& rule : rules) {
+    if (!rule.mode) continue;
+    for (std::string_view option : rule.options)
+      if (given(option))
+        return std::string(option) + " does nothing with " + rule.mode_name + " (" + rule.why +
+               "); leave one of them out";
+  }
+  return "";
+}
+
+/// --music names a file that can be read: a missing one is a mistake on the command line.
+bool apply_music(ExportOptions& o, const std::string& name, const std::string& v, std::string& m) {
+  if (v.empty()) return bad(m, name, v, "a file");
+  std::error_code ec;
+  const auto status = std::filesystem::status(v, ec);
+  if (!std::filesystem::exists(status) || std::filesystem::is_directory(status)) {
+    m = "--music: cannot read '" + v + "': " +
+        (std::filesystem::is_directory(status) ? std::string("it is a directory") : std::string("no such file"));
+    return false;
+  }
+  if (!std::ifstream(v, std::ios::binary)) {
+    m = "--music: cannot read '" + v + "': " + std::strerror(errno);
+    return false;
+  }
+  o.music_path = v;
+  return true;
+}
+
 }  // namespace
 
 OptionTable export_option_table(ExportOptions& o) {
@@ -114,7 +167,8 @@ OptionTable export_option_table(ExportOptions& o) {
          o.quality = *preset == 0 ? Quality::draft : Quality::final;
          return true;
        }},
-      {"--jobs", "N", "POV-Ray processes tracing at once, 1 to 1024 (default: one per core); while one\n"
+      {"--jobs", "N",
+       "POV-Ray processes tracing at once, 1 to 1024 (default: one per core); while one\n"
        "starts up, a partial frame's rectangle may start too",
        [&o](S n, S v, std::string& m) {
          const auto jobs = parse_int_option(v, 1, kMaxJobs);
@@ -134,11 +188,7 @@ OptionTable export_option_table(ExportOptions& o) {
          return true;
        }},
       {"--music", "FILE", "a music file mixed under the sound track (default: none)",
-       [&o](S n, S v, std::string& m) {
-         if (v.empty()) return bad(m, n, v, "a file");
-         o.music_path = v;
-         return true;
-       }},
+       [&o](S n, S v, std::string& m) { return apply_music(o, n, v, m); }},
       {"--loudness", "LUFS|off",
        "bring this shot's sound track to this integrated loudness, -40 to -10,\nor off: the mix's own "
        "level (default: one calibrated level for every shot,\nthe built-in break at -16 LUFS)",
@@ -164,7 +214,10 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
   options = ExportOptions{};
   options.audio_lead = kDefaultAudioLead;
   const OptionTable table = export_option_table(options);
-  const auto apply = [&](ArgReader& reader, std::string& error) { return apply_table_option(reader, table, error); };
+  const auto apply = [&](ArgReader& reader, std::string& error) {
+    options.given.push_back(reader.word());
+    return apply_table_option(reader, table, error);
+  };
   switch (read_arguments(args, options.scene_path, options, usage_text(kUsageHead, table, kUsageTail),
                          "billiards-export " BSIM_VERSION "\n", apply, message)) {
     case ArgumentsOutcome::exit_success: return CommandLineOutcome::exit_success;
@@ -183,6 +236,8 @@ CommandLineOutcome parse_export_options(const std::vector<std::string>& args, Ex
     message =
         "--farm status, assemble and render need the farm's output directory, as in `billiards-export DIR "
         "--farm status`";
+  else
+    message = inert_option_message(options);
   if (!message.empty()) return CommandLineOutcome::exit_usage;
   return CommandLineOutcome::run;
 }

@@ -42,6 +42,7 @@ struct ExportOptions : SharedOptions {
   int chunk = 0;                            ///< --chunk: frames a farm task renders; 0: chosen from size and quality
   std::vector<std::string> sbatch_options;  ///< --sbatch-option, in order
   int first_frame = 0, last_frame = -1;     ///< --frames A-B (--farm render)
+  std::vector<std::string> given;           ///< set by the parser: the program's own options given, as typed
 };
 
 /// The program's option table (command_line.h): every option in --help's order, with what it does

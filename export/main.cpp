@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <optional>
 
 #include "child_process.h"
 #include "export_options.h"
 #include "farm_slurm.h"
+#include "frame_cache.h"
 #include "frames.h"
 #include "movie_export.h"
 #include "output_stage.h"
@@ -33,10 +35,49 @@ bool write_staged(const bsim::OutputStage& stage, const std::string& name, Write
   return true;
 }
 
-/// Every name a run may write into its output directory: a run removes those it did not write this
-/// time, so the directory never holds one run's data beside another's movie.
-const std::vector<std::string> kRunOutputs = {"events.json",    "trajectory.csv", "camera.csv",          "frames",
-                                              "soundtrack.wav", "movie.mp4",      bsim::kRunSummaryName, "farm"};
+/// Every name a run may write into its output directory. A run replaces those it writes and keeps the
+/// others an earlier run left (its closing line names them): an `--events-only` run after a render
+/// keeps the movie.
+const std::vector<std::string> kRunOutputs = {"events.json", "trajectory.csv", "camera.csv",          "frames",
+                                              "movie.mp4",   "soundtrack.wav", bsim::kRunSummaryName, "farm"};
+
+/// Whether the file `name` in `dir` holds other bytes than the staged one (false when either is missing).
+bool changed_since(const std::string& dir, const bsim::OutputStage& stage, const std::string& name) {
+  std::error_code ec;
+  const std::filesystem::path older = std::filesystem::path(dir) / name, newer = stage.staging() + "/" + name;
+  if (!std::filesystem::is_regular_file(older, ec) || !std::filesystem::is_regular_file(newer, ec)) return false;
+  std::ifstream a(older, std::ios::binary), b(newer, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(a), {}) != std::string(std::istreambuf_iterator<char>(b), {});
+}
+
+/// The closing line's tail for what an earlier run left: "; kept from an earlier run: movie.mp4, frames/",
+/// saying so when they show the shot as it was before (this run's events differ).
+std::string kept_note(const std::vector<std::string>& kept, bool outdated) {
+  if (kept.empty()) return "";
+  std::string note = "; kept from an earlier run: ";
+  for (std::size_t i = 0; i < kept.size(); ++i) note += (i ? ", " : "") + kept[i];
+  if (outdated) note += " (made before the shot changed; render again to bring them up to date)";
+  return note;
+}
+
+/// Ctrl-C: what the user keeps. The output directory is as it was; the frames finished (rendered or
+/// taken from the store) wait in the frame store for the next run.
+void report_interrupted(const bsim::OutputStage& stage, const std::string& dir) {
+  int finished = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(stage.path("frames"), ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
+    finished += it->path().extension() == ".png";
+  std::cerr << "billiards-export: interrupted; "
+            << (std::filesystem::exists(dir, ec) ? dir + " is left as it was" : "nothing was written to " + dir);
+  const std::string store = bsim::default_frame_cache_dir();
+  if (finished > 0 && !store.empty())
+    std::cerr << "; the " << finished << " frame" << (finished == 1 ? "" : "s")
+              << " finished are kept in the frame store (" << store << ") and the next run reuses them";
+  else if (finished > 0)
+    std::cerr << "; the frame store is off (BSIM_CACHE_DIR=off), so the next run renders every frame again";
+  std::cerr << "\n";
+}
 
 /// Everything a run writes, into the stage: the data files, then (unless --events-only) the frames'
 /// .pov files and the sound track, then (unless --no-render) the rendered frames and the movie, and
@@ -114,12 +155,16 @@ int run(const bsim::ExportOptions& options) {
   bsim::RunOutcome outcome = produce(shot, staged, programs, stage, summary, error);
   if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, error))
     outcome = bsim::RunOutcome::failed;
+  const bool outdated = changed_since(dir, stage, "events.json");
   if (outcome == bsim::RunOutcome::done && !stage.commit(error, kRunOutputs)) outcome = bsim::RunOutcome::failed;
+  if (outcome == bsim::RunOutcome::interrupted) {
+    report_interrupted(stage, dir);
+    stage.discard();  // the output directory stays exactly as it was
+    guard.finish();   // dies of the signal, as the user asked
+  }
   if (outcome != bsim::RunOutcome::done) {
-    stage.discard();                                               // the output directory stays exactly as it was
-    if (outcome == bsim::RunOutcome::interrupted) guard.finish();  // dies of the signal, as the user asked
-    std::cerr << "billiards-export: error: " << (outcome == bsim::RunOutcome::interrupted ? "interrupted" : error)
-              << "\n";
+    stage.discard();  // the output directory stays exactly as it was
+    std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
   if (on_farm) {
@@ -130,10 +175,11 @@ int run(const bsim::ExportOptions& options) {
   if (options.quiet) return 0;  // --quiet: success is the exit status alone
   if (!options.events_only && !options.no_render)
     std::cerr << "wrote " << dir << "/movie.mp4 (" << summary.frames_rendered << " frames rendered, "
-              << summary.frames_reused << " reused)\n";
+              << summary.frames_reused << " reused)";
   else
     std::cerr << "wrote " << dir << "/ (" << shot.timeline.events().size() << " events, " << shot.timeline.duration()
-              << " s)\n";
+              << " s)";
+  std::cerr << kept_note(stage.kept(), outdated) << "\n";
   return 0;
 }
 

@@ -63,6 +63,7 @@ std::string OutputStage::path(const std::string& relative) const {
 }
 
 bool OutputStage::commit(std::string& error, const std::vector<std::string>& owned) {
+  kept_.clear();
   if (!open_) {
     error = "nothing staged to commit";
     return false;
@@ -114,11 +115,8 @@ bool OutputStage::commit(std::string& error, const std::vector<std::string>& own
   }
   for (const std::string& name : owned) {
     if (std::find(entries.begin(), entries.end(), fs::path(name)) != entries.end()) continue;
-    fs::remove_all(destination / name, ec);
-    if (ec) {
-      error = "cannot remove the older '" + name + "' from '" + destination_ + "': " + reason(ec);
-      return false;
-    }
+    const auto status = fs::symlink_status(destination / name, ec);
+    if (fs::exists(status)) kept_.push_back(name + (fs::is_directory(status) ? "/" : ""));
   }
   discard();
   return true;

@@ -14,10 +14,13 @@ class OutputStage {
   std::string path(const std::string& relative) const;
   /// Moves what is staged into the destination: a destination that does not exist yet is the staging
   /// directory renamed; otherwise each top-level file replaces an older copy (one rename each,
-  /// events.json last) and each top-level folder replaces the older folder whole. Then each name in
-  /// `owned` (what a run may write) that this run did not stage is removed, so the destination holds
-  /// one run's outputs, never a mix of two; anything else in it is left alone.
+  /// events.json last) and each top-level folder replaces the older folder whole. Nothing this run
+  /// did not stage is removed: each name in `owned` (what a run may write) that an earlier run left
+  /// and this one did not make stays, and is listed by kept() (in `owned`'s order, folders with a
+  /// trailing '/'); anything else in the destination is left alone too.
   bool commit(std::string& error, const std::vector<std::string>& owned = {});
+  /// After commit: the outputs of an earlier run that this run did not replace ("movie.mp4", "frames/").
+  const std::vector<std::string>& kept() const { return kept_; }
   /// Removes the staging directory; the destination is untouched. Also done by the destructor.
   void discard();
   ~OutputStage();
@@ -29,6 +32,7 @@ class OutputStage {
   std::string destination_;
   std::string staging_;
   bool open_ = false;
+  std::vector<std::string> kept_;
 };
 
 }  // namespace bsim

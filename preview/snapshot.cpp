@@ -42,6 +42,16 @@ std::optional<double> resolve_time(const TimeSpec& at, const Timeline& timeline,
   return timeline.events()[static_cast<std::size_t>(at.event)].time;
 }
 
+/// Makes the folder `file` goes into, if it has one and it is missing.
+static bool make_parent_directory(const std::string& file, std::string& error) {
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  std::error_code ec;
+  if (parent.empty() || std::filesystem::is_directory(parent, ec)) return true;
+  std::filesystem::create_directories(parent, ec);
+  if (ec) error = "cannot create the directory " + parent.string() + ": " + ec.message();
+  return !ec;
+}
+
 float picture_text_px(int height) { return std::clamp(static_cast<float>(height) / 720.f * 17.f, 11.f, 34.f); }
 
 int run_snapshot(const PreviewOptions& options, const Shot& shot) {
@@ -58,15 +68,13 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
                 << shot.timeline.duration() << " s\n";
     times.push_back(*t);
   }
-  if (options.picture_dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(*options.picture_dir, ec);
-    if (ec) {
-      std::cerr << "billiards-preview: error: cannot create the directory " << *options.picture_dir << ": "
-                << ec.message() << "\n";
+  // The folder each picture goes into is made if missing, for a directory (-o shots/), a pattern
+  // (-o takes/shot_%t.png) and a file name (-o takes/shot.png) alike.
+  for (const std::string& picture : options.pictures)
+    if (!make_parent_directory(picture, error)) {
+      std::cerr << "billiards-preview: error: " << error << "\n";
       return 1;
     }
-  }
   HeadlessCanvas canvas;
   SceneRenderer renderer;
   if (!canvas.open(options.width, options.height, picture_text_px(options.height), error) || !renderer.init(error)) {
@@ -75,8 +83,6 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
   }
   renderer.set_multisampling(kSnapshotSamples);
   renderer.set_scene(shot.scene);
-  // A directory or a pattern names the pictures: say which files they are.
-  const bool named_here = options.pictures.front() != *options.output;
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double t = times[i];
     const FrameState frame = scripted_frame(shot, t);
@@ -90,7 +96,7 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
       std::cerr << "billiards-preview: error: " << error << "\n";
       return 1;
     }
-    if (named_here && !options.quiet) std::cerr << "wrote " << options.pictures[i] << "\n";
+    if (!options.quiet) std::cerr << "wrote " << options.pictures[i] << "\n";
   }
   return 0;
 }
@@ -115,10 +121,11 @@ int run_timeline_picture(const PreviewOptions& options, const TimelineData& data
   ImDrawList* list = canvas.begin_2d();
   draw_timeline(*list, data, canvas.fonts(), {0, 0, float(width), float(height)});
   canvas.end_2d();
-  if (!canvas.write_png(*options.output, error)) {
+  if (!make_parent_directory(*options.output, error) || !canvas.write_png(*options.output, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;
   }
+  if (!options.quiet) std::cerr << "wrote " << *options.output << "\n";
   return 0;
 }
 

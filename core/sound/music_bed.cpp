@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace bsim {
@@ -83,7 +84,10 @@ bool load_music_bed(const std::string& path, std::size_t sample_count, AudioBuff
   SF_INFO info{};
   SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
   if (!file) {
-    error = path + ": cannot read the music: " + sf_strerror(nullptr);
+    // libsndfile words a missing file "System error : ..."; the reason alone reads better.
+    std::string reason = sf_strerror(nullptr);
+    if (reason.starts_with("System error : ")) reason.erase(0, 15);
+    error = "cannot read the music file '" + path + "': " + reason;
     return false;
   }
   const auto channels = static_cast<std::size_t>(std::max(info.channels, 1));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <regex>
+#include <tuple>
 
 #include "export_options.h"
 #include "fixtures.h"
@@ -61,23 +62,66 @@ TEST_SUITE("export command line") {
   }
 
   TEST_CASE("every option") {
+    test::TempDir tmp;
+    const std::string song = tmp.file("song.wav", "any bytes: read when the sound track is mixed");
     ExportOptions o;
     std::string message;
-    REQUIRE(parse({"shot.scn", "-o", "dir", "--events-only", "--no-render", "--fps", "24", "--size", "96x54",
-                   "--quality", "draft", "--jobs", "3", "--audio-lead", "0.02", "--music", "song.wav", "--strict"},
+    REQUIRE(parse({"shot.scn", "-o", "dir", "--fps", "24", "--size", "96x54", "--quality", "draft", "--jobs", "3",
+                   "--audio-lead", "0.02", "--music", song, "--strict"},
                   o, message) == CommandLineOutcome::run);
     CHECK(*o.scene_path == "shot.scn");
     CHECK(*o.out_dir == "dir");
-    CHECK(o.events_only);
-    CHECK(o.no_render);
     CHECK(o.fps == 24);
     CHECK(o.width == 96);
     CHECK(o.height == 54);
     CHECK(o.quality == Quality::draft);
     CHECK(o.jobs == 3);
     CHECK(o.audio_lead == 0.02);
-    CHECK(o.music_path == "song.wav");
+    CHECK(o.music_path == song);
     CHECK(o.strict);
+    REQUIRE(parse({"--events-only", "--fps", "24", "--camera", "auto"}, o, message) == CommandLineOutcome::run);
+    CHECK(o.events_only);
+    REQUIRE(parse({"--no-render", "--quality", "draft", "--size", "96x54", "--music", song}, o, message) ==
+            CommandLineOutcome::run);
+    CHECK(o.no_render);
+  }
+
+  TEST_CASE("an option that does nothing beside the others is a mistake, as --chunk without --farm is") {
+    test::TempDir tmp;
+    const std::string song = tmp.file("song.wav", "bytes");
+    for (const auto& [args, option, mode] : std::vector<std::tuple<std::vector<std::string>, std::string, std::string>>{
+             {{"--events-only", "--no-render"}, "--no-render", "--events-only"},
+             {{"--events-only", "--music", song}, "--music", "--events-only"},
+             {{"--events-only", "--size", "64x36"}, "--size", "--events-only"},
+             {{"--quality", "draft", "--events-only"}, "--quality", "--events-only"},
+             {{"--events-only", "--loudness", "off"}, "--loudness", "--events-only"},
+             {{"--events-only", "--audio-lead", "0"}, "--audio-lead", "--events-only"},
+             {{"--no-render", "--jobs", "2"}, "--jobs", "--no-render"},
+             {{"--whole-frames", "--no-render"}, "--whole-frames", "--no-render"},
+         }) {
+      CAPTURE(option);
+      CHECK(rejection(args).starts_with(option + " does nothing with " + mode + " ("));
+    }
+  }
+
+  TEST_CASE("--music names a file that exists: exit 2 naming it, not the sound library's words") {
+    test::TempDir tmp;
+    const std::string missing = (tmp.path / "missing.wav").string();
+    CHECK(rejection({"--music", missing}) == "--music: cannot read '" + missing + "': no such file");
+    CHECK(rejection({"--music", tmp.path.string()}) ==
+          "--music: cannot read '" + tmp.path.string() + "': it is a directory");
+    const test::CommandResult r =
+        run_export("--no-render --music " + quoted(missing) + " -o " + quoted((tmp.path / "o").string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err == "billiards-export: --music: cannot read '" + missing + "': no such file\n");
+    // A file that is there but is no sound: the run fails (exit 1) naming it, in plain words.
+    const std::string text = tmp.file("notes.wav", "not a sound");
+    const test::CommandResult unreadable = run_export("--no-render --fps 1 --size 16x10 --music " + quoted(text) +
+                                                      " -o " + quoted((tmp.path / "o").string()));
+    CHECK(unreadable.exit_code == 1);
+    CHECK(unreadable.err.find("cannot read the music file '" + text + "': ") != std::string::npos);
+    CHECK(unreadable.err.find("System error") == std::string::npos);
+    CHECK_FALSE(fs::exists(tmp.path / "o"));
   }
 
   TEST_CASE("--name=value, --output, and -- before a scene that starts with '-'") {

@@ -93,13 +93,16 @@ TEST_SUITE("output_stage") {
     CHECK(fs::path(stage.staging()).parent_path() == dest);  // one file system for the renames
     write(stage.path("events.json"), "new");
     write(stage.path("frames/frame_00000.pov"), "pov");
-    REQUIRE(stage.commit(error, {"events.json", "frames", "movie.mp4"}));
+    REQUIRE(stage.commit(error, {"events.json", "frames", "soundtrack.wav", "movie.mp4"}));
     CHECK(read(dest / "events.json") == "new");
     CHECK(read(dest / "frames" / "frame_00000.pov") == "pov");
-    // The older frames folder went whole, and so did the older movie this run did not make; the
-    // file the run does not own stayed.
+    // The older frames folder went whole; the older movie this run did not make stays, named as
+    // kept, and so does the file no run makes.
     CHECK(read(dest / "notes.txt") == "mine");
-    CHECK(listing(dest) == std::vector<std::string>{"events.json", "frames", "frames/frame_00000.pov", "notes.txt"});
+    CHECK(read(dest / "movie.mp4") == "an older run's");
+    CHECK(stage.kept() == std::vector<std::string>{"movie.mp4"});
+    CHECK(listing(dest) ==
+          std::vector<std::string>{"events.json", "frames", "frames/frame_00000.pov", "movie.mp4", "notes.txt"});
   }
 
   TEST_CASE("an output path that is a regular file is an error and stays untouched") {

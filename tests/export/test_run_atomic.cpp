@@ -151,6 +151,7 @@ TEST_SUITE("a run is all or nothing") {
         w.interrupt_when("PATH=" + quoted((w.dir.path / "bin").string()) + ":\"$PATH\"",
                          "[ -n \"$(find " + quoted(w.out.string()) + " -name '*.tmp.hdr' 2>/dev/null)\" ]");
     CHECK(r.out.find("status 130") != std::string::npos);  // 128 + SIGINT
+    CHECK(r.err.find("billiards-export: interrupted; " + w.out.string() + " is left as it was") != std::string::npos);
     CHECK(snapshot(w.out) == before);
     CHECK(staging_left(w.dir.path).empty());
   }
@@ -171,6 +172,10 @@ TEST_SUITE("a run is all or nothing") {
                                                          "[ -e " + quoted(encoding.string()) + " ]");
     REQUIRE(fs::exists(encoding));
     CHECK(r.out.find("status 130") != std::string::npos);
+    // Ctrl-C says what the next run keeps: every frame, in the store.
+    CHECK(std::regex_search(r.err, std::regex("billiards-export: interrupted; .* is left as it was; the [0-9]+ frames "
+                                              "finished are kept in the frame store \\(" +
+                                              w.store.string() + "\\) and the next run reuses them\n")));
     CHECK(snapshot(w.out) == before);
     CHECK(staging_left(w.dir.path).empty());
     CHECK(count_files(w.store) > stored);
@@ -196,17 +201,46 @@ TEST_SUITE("a run is all or nothing") {
     CHECK(staging_left(w.dir.path).empty());
   }
 
-  TEST_CASE("a run that succeeds replaces the whole previous run, and run.json sums it up") {
+  TEST_CASE("a data check after a render keeps the movie, its frames and its sound track, and says so") {
+    bsim::test::require_program("povray");
+    Workspace w;
+    w.finish_a_run();
+    const auto before = snapshot(w.out);
+    const std::string events_only = bsim::test::quoted(bsim::test::bin("billiards-export")) + " " +
+                                    bsim::test::quoted(w.scene) + " -o " + bsim::test::quoted(w.out.string()) +
+                                    " --events-only --fps 2";
+    const bsim::test::CommandResult r = bsim::test::run_command(events_only);
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    // Every file of the render is still there, byte for byte; the data files are this run's (the same).
+    CHECK(snapshot(w.out) == before);
+    CHECK(r.err.find("; kept from an earlier run: frames/, movie.mp4, soundtrack.wav, run.json\n") !=
+          std::string::npos);
+    CHECK(r.err.find("made before the shot changed") == std::string::npos);
+
+    // The shot changes: the data files are new, the movie stays, and the line says it is out of date.
+    w.dir.file("shot.scn", std::string(kScene) + "ball 10 0.5 0.3 0.028575  0 0 0  1 0 0 0\n");
+    const bsim::test::CommandResult changed = bsim::test::run_command(events_only);
+    REQUIRE_MESSAGE(changed.exit_code == 0, changed.err);
+    CHECK(bsim::test::require_file(w.out / "movie.mp4") == before.at("movie.mp4"));
+    CHECK(bsim::test::require_file(w.out / "events.json") != before.at("events.json"));
+    CHECK(changed.err.find("kept from an earlier run: frames/, movie.mp4, soundtrack.wav, run.json (made before the "
+                           "shot changed; render again to bring them up to date)") != std::string::npos);
+  }
+
+  TEST_CASE("a run replaces what it makes, keeps the rest, and run.json sums it up") {
     bsim::test::require_program("povray");
     Workspace w;
     w.finish_a_run();
     bsim::test::write_file(w.out / "notes.txt", "mine");
+    const std::string movie = bsim::test::require_file(w.out / "movie.mp4");
     const bsim::test::CommandResult r = bsim::test::run_command(w.command() + " --no-render");
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-    // A run without a movie leaves no older movie beside its newer data, nor older pictures.
-    CHECK_FALSE(fs::exists(w.out / "movie.mp4"));
+    // The frames folder is replaced whole (no older pictures beside the new .pov files); the movie
+    // this run did not make stays, and the closing line names it.
+    CHECK(bsim::test::require_file(w.out / "movie.mp4") == movie);
     for (const auto& e : fs::directory_iterator(w.out / "frames")) CHECK(e.path().extension() != ".png");
     CHECK(bsim::test::require_file(w.out / "notes.txt") == "mine");
+    CHECK(r.err.find("; kept from an earlier run: movie.mp4\n") != std::string::npos);
 
     const bsim::test::CommandResult full = bsim::test::run_command(w.command());
     REQUIRE_MESSAGE(full.exit_code == 0, full.err);

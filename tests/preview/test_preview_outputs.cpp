@@ -144,6 +144,29 @@ TEST_SUITE("preview outputs") {
     CHECK(require_file(dir.path / "s_1.250.png") == require_file(shots / "at_1.250.png"));
   }
 
+  TEST_CASE("the binary: -o into a folder that is missing makes it, and every picture says `wrote`") {
+    TempDir dir;
+    const std::string scene = dir.file("cluster.scn", test::fixtures::cluster_scene());
+    const std::string common = quoted(scene) + " --size 160x90 ";
+    for (const auto& [args, files] : std::vector<std::pair<std::string, std::vector<fs::path>>>{
+             {"--at 0.5 --at 1.25 -o " + quoted((dir.path / "takes/take_%t.png").string()),
+              {dir.path / "takes/take_0.500.png", dir.path / "takes/take_1.250.png"}},
+             {"--at 0.5 -o " + quoted((dir.path / "one/deeper/still.png").string()),
+              {dir.path / "one/deeper/still.png"}},
+             {"--timeline -o " + quoted((dir.path / "lines/timeline.png").string()), {dir.path / "lines/timeline.png"}},
+         }) {
+      CAPTURE(args);
+      const test::CommandResult r = preview(common + args);
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      std::string expected;
+      for (const fs::path& file : files) {
+        CHECK(fs::is_regular_file(file));
+        expected += "wrote " + file.string() + "\n";
+      }
+      CHECK(r.err.ends_with(expected));
+    }
+  }
+
   TEST_CASE("the binary: a missing event among several is a usage error before any picture") {
     TempDir dir;
     const std::string scene = dir.file("cluster.scn", test::fixtures::cluster_scene());
