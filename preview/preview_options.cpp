@@ -145,6 +145,18 @@ bool check_combination(PreviewOptions& o, std::string& message) {
     message = "--write-camera writes the automatic director's script, which --camera scene turns off";
   else if ((o.screenshot || o.quit_after > 0) && (at || o.timeline || o.movie || o.write_camera || o.write_scene))
     message = std::string(o.screenshot ? "--screenshot" : "--quit-after") + " is for the interactive window only";
+  else if (o.fps_given && (at || o.timeline))
+    message = std::string("--fps does nothing with ") + (at ? "--at" : "--timeline") +
+              " (it draws instants, not frames); leave one of them out";
+  else if (o.overlays.any() && o.timeline)
+    message = "--overlay does nothing with --timeline (it draws no view of the table); leave one of them out";
+  else if ((o.write_camera || o.write_scene) && !at && !o.timeline && !o.movie &&
+           (o.fps_given || o.size_given || o.overlays.any()))
+    message = std::string(o.fps_given    ? "--fps"
+                          : o.size_given ? "--size"
+                                         : "--overlay") +
+              " does nothing with " + (o.write_camera ? "--write-camera" : "--write-scene") +
+              " alone (it writes text); leave one of them out";
   else if (o.movie && !has_extension(*o.movie, ".mp4"))
     message = bad_value_message("--movie", *o.movie, "a file name ending in .mp4");
   else if (o.timeline && !has_extension(*o.output, ".png"))

@@ -186,6 +186,7 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::strin
       return SharedOption::bad;
     }
     o.fps = *fps;
+    o.fps_given = true;
   } else {
     if (!parse_size_option(*v, o.width, o.height)) {
       message = bad_value_message(

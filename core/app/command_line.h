@@ -97,8 +97,9 @@ bool apply_table_option(ArgReader& reader, const OptionTable& table, std::string
 /// The options both programs take, with their defaults. apply_shared_option() reads and checks
 /// them, so each is parsed in one place and rejected in the same words by both.
 struct SharedOptions {
-  int fps = 30;      ///< --fps N: frames per second of the movie or the animatic
-  int width = 1280;  ///< --size WxH: pixels
+  int fps = 30;            ///< --fps N: frames per second of the movie or the animatic
+  bool fps_given = false;  ///< --fps was given
+  int width = 1280;        ///< --size WxH: pixels
   int height = 720;
   bool size_given = false;    ///< --size was given
   bool strict = false;        ///< --strict: accept only the original scene language

@@ -77,9 +77,9 @@ TEST_SUITE("preview command line") {
   }
 
   TEST_CASE("--timeline, --movie, --overlay, --fps, --strict") {
-    const PreviewOptions timeline = accepted({"--timeline", "-o", "t.png", "--overlay", "events"});
+    const PreviewOptions timeline = accepted({"--timeline", "-o", "t.png"});
     CHECK(timeline.timeline);
-    CHECK(timeline.overlays.events);
+    CHECK(accepted({"--at", "1", "-o", "f.png", "--overlay", "events"}).overlays.events);
     const PreviewOptions movie =
         accepted({"--movie", "a.mp4", "--fps", "12", "--overlay", "paths,camera,events", "--strict"});
     CHECK(*movie.movie == "a.mp4");
@@ -133,6 +133,22 @@ TEST_SUITE("preview command line") {
     CHECK(contains(rejection({"--movie", "a.mp4", "--at", "1", "-o", "f.png"}), "--movie cannot be combined"));
     CHECK(contains(rejection({"--screenshot", "s.png", "--movie", "a.mp4"}), "interactive window only"));
     CHECK(contains(rejection({"--quit-after", "1", "--timeline", "-o", "t.png"}), "interactive window only"));
+  }
+
+  TEST_CASE("an option that does nothing beside the others is a mistake, as in billiards-export") {
+    CHECK(rejection({"--at", "1", "-o", "f.png", "--fps", "24"}) ==
+          "--fps does nothing with --at (it draws instants, not frames); leave one of them out");
+    CHECK(rejection({"--timeline", "-o", "t.png", "--fps", "24"}).starts_with("--fps does nothing with --timeline"));
+    CHECK(rejection({"--timeline", "-o", "t.png", "--overlay", "paths"})
+              .starts_with("--overlay does nothing with --timeline"));
+    CHECK(rejection({"--write-camera", "-", "--size", "64x36"})
+              .starts_with("--size does nothing with --write-camera alone"));
+    CHECK(rejection({"--write-scene", "s.scn", "--overlay", "aim"})
+              .starts_with("--overlay does nothing with --write-scene alone"));
+    // Where they do something, they are taken: the animatic's frames, the window's steps.
+    CHECK(accepted({"--movie", "a.mp4", "--fps", "12", "--size", "64x36"}).fps == 12);
+    CHECK(accepted({"--fps", "12"}).fps == 12);
+    CHECK(accepted({"--write-camera", "-", "--at", "1", "-o", "f.png", "--size", "64x36"}).width == 64);
   }
 
   TEST_CASE("--help lists every option with its default; --version names the program") {
