@@ -99,7 +99,7 @@ TEST_CASE("billiards-preview's manual page and completion list every option and 
     CAPTURE(name);
     PreviewOptions parsed;
     std::string message;
-    CHECK(parse_preview_options({"--overlay", name, "--timeline", "-o", "t.png"}, parsed, message) ==
+    CHECK(parse_preview_options({"--overlay", name, "--at", "1", "-o", "t.png"}, parsed, message) ==
           PreviewCommandLineOutcome::run);
   }
 }
