@@ -81,6 +81,9 @@ struct TimelineLayout {
   float x = 0, y = 0, width = 0, height = 0;  ///< px, the area to fill
   bool compact = false;                       ///< scrub bar: only the rows and the axis, no title, list or legend
   double cursor = -1;                         ///< s, a playhead drawn when >= 0
+  /// The height is timeline_height()'s: as many levels of event numbers and lanes of camera labels as
+  /// the crowding needs. Otherwise they take a share of the room the height leaves.
+  bool fit_all = false;
 };
 
 /// Draws the timeline. Returns the x of time 0 and the pixels per second used (for hit testing).
@@ -91,6 +94,10 @@ struct TimelineAxis {
 };
 /// px a compact timeline needs with these fonts.
 float compact_timeline_height(const UiFonts& fonts);
+
+/// px a full timeline picture `width` px wide needs with these fonts (fit_all): every row with all its
+/// labels, the legend and the event list complete.
+float timeline_height(const TimelineData& data, const UiFonts& fonts, float width);
 
 TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts,
                            const TimelineLayout& layout);
