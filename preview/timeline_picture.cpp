@@ -394,22 +394,33 @@ class TimelinePainter {
         const std::string strike = s.detail.substr(s.detail.find('\n') + 1);
         const float line = std::max(name, text_size(fonts_.small, fonts_.small_size, strike).x);
         if (b - pad - size.x >= a + pad + line + pad) {
-          draw_stroke_diagram(list_, *s.stroke, fonts_, ImVec2(b - pad - size.x, top + (bottom - top - size.y) / 2));
+          const ImVec2 corner(b - pad - size.x, top + (bottom - top - size.y) / 2);
+          draw_stroke_diagram(list_, *s.stroke, fonts_, corner);
+          note({TimelineDrawn::Kind::stroke, {}, corner.x, corner.y, corner.x + size.x, corner.y + size.y, int(k)});
           text_right = b - pad - size.x - pad / 2;
         } else {
           // As large as leaves the strike's line whole (at most the whole diagram's ball, at least
           // 8 px), and within the section however narrow.
           float r = std::clamp((b - a - 2 * pad - line - pad / 2) / 2 - 1, std::min(8.f, whole.radius), whole.radius);
           r = std::max(2.f, std::min(r, (b - a - pad) / 2 - 1));
-          draw_stroke_ball(list_, *s.stroke, ImVec2(b - pad / 2 - r - 1, (top + bottom) / 2), r);
+          const ImVec2 centre(b - pad / 2 - r - 1, (top + bottom) / 2);
+          draw_stroke_ball(list_, *s.stroke, centre, r);
+          note({TimelineDrawn::Kind::stroke, {}, centre.x - r, centre.y - r, centre.x + r, centre.y + r, int(k)});
           text_right = b - pad / 2 - (2 * r + 2) - pad / 2;
         }
       }
       const float room = text_right - (a + pad);
-      list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(a + pad, top + 3), kText,
-                    elided(fonts_.bold, fonts_.bold_size, s.label, room).c_str());
-      list_.AddText(fonts_.small, fonts_.small_size, ImVec2(a + pad, top + 3 + fonts_.bold_size + 2), kDim,
-                    elided_lines(fonts_.small, fonts_.small_size, s.detail, room).c_str());
+      const std::string name = elided(fonts_.bold, fonts_.bold_size, s.label, room);
+      const std::string detail = elided_lines(fonts_.small, fonts_.small_size, s.detail, room);
+      const ImVec2 at_name(a + pad, top + 3), at_detail(a + pad, top + 3 + fonts_.bold_size + 2);
+      list_.AddText(fonts_.bold, fonts_.bold_size, at_name, kText, name.c_str());
+      list_.AddText(fonts_.small, fonts_.small_size, at_detail, kDim, detail.c_str());
+      const auto noted = [&](ImFont* font, float px, const std::string& text, ImVec2 where) {
+        const ImVec2 extent = text_size(font, px, text);
+        note({TimelineDrawn::Kind::shot_text, text, where.x, where.y, where.x + extent.x, where.y + extent.y, int(k)});
+      };
+      noted(fonts_.bold, fonts_.bold_size, name, at_name);
+      noted(fonts_.small, fonts_.small_size, detail, at_detail);
     }
   }
 
@@ -487,6 +498,7 @@ class TimelinePainter {
       const float y = lane_y(l.lane), w = text_size(fonts_.small, small, l.text).x;
       list_.AddRectFilled(ImVec2(l.x - 1, y), ImVec2(l.x + w + 1, y + small), kRowBackground);
       list_.AddText(fonts_.small, small, ImVec2(l.x, y), camera_mode_color(l.span->mode), l.text.c_str());
+      note({TimelineDrawn::Kind::lane_label, l.text, l.x, y, l.x + w, y + small, -1, l.span});
     }
   }
 
@@ -635,11 +647,14 @@ class TimelinePainter {
       const float cx = across_.x0 + static_cast<float>(k / l.lines) * l.column;
       const float cy = y + static_cast<float>(k % l.lines) * l.line;
       if (k == l.capacity - 1 && l.count > l.capacity) {
-        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim,
-                      ("\xE2\x80\xA6 and " + std::to_string(l.count - l.capacity + 1) + " more").c_str());
+        const std::string more = "\xE2\x80\xA6 and " + std::to_string(l.count - l.capacity + 1) + " more";
+        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim, more.c_str());
+        note({TimelineDrawn::Kind::list_more, more, cx, cy, cx + l.column, cy + small});
         break;
       }
-      draw_event_list_line(cx, cy, l.entries[static_cast<std::size_t>(k)]);
+      const ListEntry& entry = l.entries[static_cast<std::size_t>(k)];
+      draw_event_list_line(cx, cy, entry);
+      note({TimelineDrawn::Kind::list_line, entry.text, cx, cy, cx + l.column, cy + small});
     }
   }
 
@@ -678,6 +693,10 @@ class TimelinePainter {
     l.columns = std::max(1, static_cast<int>((right_ - across_.x0) / l.column));
     l.capacity = l.lines * l.columns;
     return l;
+  }
+
+  void note(TimelineDrawn drawn) const {
+    if (layout_.drawn) layout_.drawn->push_back(std::move(drawn));
   }
 
   float at(double t) const { return across_.x0 + static_cast<float>(t) * across_.axis.pixels_per_second; }
