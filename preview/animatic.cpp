@@ -50,6 +50,17 @@ class FfmpegPipe {
     return out_ && std::fwrite(bytes.data(), 1, bytes.size(), out_) == bytes.size();
   }
 
+  /// Ctrl-C: closes the pipe, stops ffmpeg without waiting for it to finish the file and deletes
+  /// its log (the process is about to die of the signal, so no destructor will).
+  void stop() {
+    if (out_) std::fclose(out_);
+    out_ = nullptr;
+    if (pid_ >= 0) stop_process(pid_);
+    pid_ = -1;
+    std::error_code ec;
+    if (!log_.empty()) std::filesystem::remove(log_, ec);
+  }
+
   /// Closes the pipe and waits; true when ffmpeg succeeded, else `error` holds its last message.
   bool finish(std::string& error) {
     if (out_) std::fclose(out_);
@@ -79,12 +90,58 @@ std::filesystem::path temporary_file(const char* extension) {
   return std::filesystem::temp_directory_path() / ("bsim-animatic-" + std::to_string(device()) + extension);
 }
 
+/// H.264 in 4:2:0 needs even sides: an odd --size is padded by one black line, which the user is told.
+void warn_if_padded(int width, int height) {
+  if (width % 2 == 0 && height % 2 == 0) return;
+  std::cerr << "billiards-preview: warning: --size " << width << "x" << height
+            << " has an odd side, which H.264 cannot encode: the animatic is " << width + width % 2 << "x"
+            << height + height % 2 << " (a black line added at the " << (width % 2 ? "right" : "")
+            << (width % 2 && height % 2 ? " and " : "") << (height % 2 ? "bottom" : "") << ")\n";
+}
+
+/// ffmpeg's command line: raw RGBA frames on its standard input and the sound track into `partial`.
+std::vector<std::string> ffmpeg_arguments(const PreviewOptions& options, const std::filesystem::path& wav,
+                                          const std::string& partial) {
+  return {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
+          std::to_string(options.width) + "x" + std::to_string(options.height), "-framerate",
+          std::to_string(options.fps), "-i", "-", "-i", wav.string(), "-map", "0:v:0", "-map", "1:a:0",
+          // GL rows come bottom-up; H.264 in 4:2:0 needs even sides, so an odd size gets one black line.
+          "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20",
+          "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
+}
+
+/// Draws every frame into ffmpeg. False when a write failed or Ctrl-C came.
+bool draw_frames(const PreviewOptions& options, const Shot& shot, HeadlessCanvas& canvas, SceneRenderer& renderer,
+                 FfmpegPipe& ffmpeg, ProgressReporter& progress, int frames) {
+  const int width = options.width, height = options.height;
+  const bool overlays = options.overlays.any();
+  const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
+  for (int k = 0; k < frames; ++k) {
+    if (InterruptGuard::interrupted()) return false;
+    const double t = frame_time(k, options.fps);
+    const FrameState frame = scripted_frame(shot, t);
+    renderer.draw(shot.scene, frame, width, height);
+    if (overlays) {
+      ImDrawList* list = canvas.begin_2d();
+      draw_overlays(*list,
+                    OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
+                    options.overlays);
+      canvas.end_2d();
+    }
+    if (!ffmpeg.write(canvas.pixels())) return false;
+    progress.advance();
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const int fps = options.fps, width = options.width, height = options.height;
   const int frames = frame_count(shot.timeline.duration(), fps);
   std::string error;
+  // Ctrl-C (or SIGTERM) from here on stops ffmpeg and deletes the half-written file before dying.
+  InterruptGuard guard;
 
   // The sound lasts exactly as long as the frames, so the streams end together.
   const auto samples = static_cast<std::size_t>(frames) * kSampleRate / static_cast<std::size_t>(fps);
@@ -108,38 +165,27 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
 
   const std::string target = *options.movie;
   const std::string partial = target + ".partial";
-  const std::vector<std::string> args = {
-      "ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
-      std::to_string(width) + "x" + std::to_string(height), "-framerate", std::to_string(fps), "-i", "-", "-i",
-      wav.string(), "-map", "0:v:0", "-map", "1:a:0",
-      // GL rows come bottom-up; H.264 in 4:2:0 needs even sides, so an odd size gets one black line.
-      "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20", "-pix_fmt",
-      "yuv420p", "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
+  warn_if_padded(width, height);
   // A dead ffmpeg must show up as a failed write, not kill the process.
   const auto previous = std::signal(SIGPIPE, SIG_IGN);
   FfmpegPipe ffmpeg;
-  bool ok = ffmpeg.start(args, temporary_file(".log"), error);
-  const bool overlays = options.overlays.any();
-  const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
+  bool ok = ffmpeg.start(ffmpeg_arguments(options, wav, partial), temporary_file(".log"), error);
   ProgressReporter progress("billiards-preview", "animatic", frames, 0, progress_style(options.quiet));
-  for (int k = 0; ok && k < frames; ++k) {
-    const double t = frame_time(k, fps);
-    const FrameState frame = scripted_frame(shot, t);
-    renderer.draw(shot.scene, frame, width, height);
-    if (overlays) {
-      ImDrawList* list = canvas.begin_2d();
-      draw_overlays(*list,
-                    OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
-                    options.overlays);
-      canvas.end_2d();
-    }
-    ok = ffmpeg.write(canvas.pixels());
-    if (ok) progress.advance();
-  }
-  ok = ffmpeg.finish(error) && ok;
-  progress.finish();
+  ok = ok && draw_frames(options, shot, canvas, renderer, ffmpeg, progress, frames);
+  if (InterruptGuard::interrupted())
+    ffmpeg.stop();
+  else
+    ok = ffmpeg.finish(error) && ok;
   std::signal(SIGPIPE, previous);
   std::filesystem::remove(wav);
+  if (InterruptGuard::interrupted()) {
+    std::error_code ec;
+    std::filesystem::remove(partial, ec);
+    progress.message("billiards-preview: interrupted: nothing was written to " + target);
+    guard.finish();  // dies of the signal, as the user asked
+    return 130;
+  }
+  progress.finish();
   if (ok) ok = move_into_place(partial, target, error);
   if (!ok) {
     std::error_code ec;

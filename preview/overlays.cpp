@@ -74,20 +74,50 @@ const CameraShot* camera_shot_at(const Shot& shot, double t) {
   return &shot.scene.camera[static_cast<std::size_t>(i)];
 }
 
-// Samples up to time t, then the point at t itself: the part of a path already travelled.
-std::vector<Vec3> before(const std::vector<OverlayPaths::Point>& path, double t, const Vec3& now) {
-  std::vector<Vec3> out;
-  for (const auto& p : path)
-    if (p.time <= t) out.push_back(p.where);
-  out.push_back(now);
-  return out;
+// One ball's path cut at the shot in play and at the current time: the shots before and after it
+// (drawn faint), the part of this shot already travelled and the part still to come. The pieces
+// join, so the path stays one line.
+struct PathPieces {
+  std::vector<Vec3> earlier, past, future, later;
+};
+
+PathPieces path_pieces(const std::vector<OverlayPaths::Point>& path, double begin, double t, double end,
+                       const Vec3& now, bool gone) {
+  PathPieces p;
+  for (const auto& point : path) {
+    if (point.time < begin)
+      p.earlier.push_back(point.where);
+    else if (point.time <= t)
+      p.past.push_back(point.where);
+    else if (point.time <= end)
+      p.future.push_back(point.where);
+    else
+      p.later.push_back(point.where);
+  }
+  if (!gone) {
+    if (t >= begin && t <= end) p.past.push_back(now);
+    p.future.insert(p.future.begin(), p.past.empty() ? now : p.past.back());
+  } else {
+    p.future.clear();  // a pocketed ball goes nowhere after now
+  }
+  if (!p.earlier.empty() && !p.past.empty()) p.earlier.push_back(p.past.front());
+  if (!p.later.empty()) {
+    const std::vector<Vec3>& before = p.future.size() >= 2 ? p.future : p.past;
+    if (!before.empty()) p.later.insert(p.later.begin(), before.back());
+  }
+  return p;
 }
 
-std::vector<Vec3> after(const std::vector<OverlayPaths::Point>& path, double t, const Vec3& now) {
-  std::vector<Vec3> out{now};
-  for (const auto& p : path)
-    if (p.time > t) out.push_back(p.where);
-  return out;
+// The stretch of the timeline that belongs to the shot in play at t: from its start to the next
+// shot's (the whole timeline for a scene of one shot).
+void shot_stretch(const Timeline& timeline, double t, double& begin, double& end) {
+  const std::vector<ShotSpan>& shots = timeline.shots();
+  begin = -INFINITY;
+  end = INFINITY;
+  if (shots.size() < 2) return;
+  const auto k = static_cast<std::size_t>(timeline.shot_at(t));
+  if (k > 0) begin = shots[k].start;
+  if (k + 1 < shots.size()) end = shots[k + 1].start;
 }
 
 // On the cloth a path lies on the bed; in a pocket it follows the drop.
@@ -132,20 +162,22 @@ void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
   const Timeline& timeline = f.shot.timeline;
   const Projector project = projector(f);
   const float scale = ui_scale(f);
+  // In a scene of several shots the shot in play is drawn as a shot of its own is; the paths of the
+  // others are faint, so a break's fan of lines does not bury the shot that follows it.
+  double begin = 0, end = 0;
+  shot_stretch(timeline, f.time, begin, end);
   for (int i = 0; i < timeline.ball_count() && i < static_cast<int>(paths.balls.size()); ++i) {
     const int number = f.shot.scene.balls[static_cast<std::size_t>(i)].number;
     const BallState now = timeline.state(i, f.time);
-    const auto& path = paths.balls[static_cast<std::size_t>(i)];
     const Vec3 here = path_point(now, timeline.physics().ball_radius);
-    const bool gone = now.motion == Motion::pocketed;
-    const std::vector<Vec3> past =
-        gone ? before(path, f.time, path.empty() ? here : path.back().where) : before(path, f.time, here);
-    const std::vector<Vec3> future = gone ? std::vector<Vec3>{} : after(path, f.time, here);
-    if (past.size() < 2 && future.size() < 2) continue;
-    draw_projected_path(list, project, future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
-    draw_projected_path(list, project, future, ball_ui_color(number, 120), 1.5f * scale);
-    draw_projected_path(list, project, past, IM_COL32(0, 0, 0, 150), 4.f * scale);
-    draw_projected_path(list, project, past, ball_ui_color(number, 255), 2.2f * scale);
+    const PathPieces p = path_pieces(paths.balls[static_cast<std::size_t>(i)], begin, f.time, end, here,
+                                     now.motion == Motion::pocketed);
+    for (const std::vector<Vec3>* other : {&p.earlier, &p.later})
+      draw_projected_path(list, project, *other, ball_ui_color(number, 50), 1.2f * scale);
+    draw_projected_path(list, project, p.future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
+    draw_projected_path(list, project, p.future, ball_ui_color(number, 120), 1.5f * scale);
+    draw_projected_path(list, project, p.past, IM_COL32(0, 0, 0, 150), 4.f * scale);
+    draw_projected_path(list, project, p.past, ball_ui_color(number, 255), 2.2f * scale);
   }
 }
 
@@ -294,7 +326,10 @@ void draw_camera_map(ImDrawList& list, const OverlayFrame& f) {
                    "camera from above");
 }
 
-void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
+namespace {
+
+/// "t = 1.500 s  •  after event 3 (1.480 s): ball 0 – ball 5  •  camera: follow ball 0".
+std::string status_text(const OverlayFrame& f) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "t = %.3f s", f.time);
   std::string text = buffer;
@@ -307,14 +342,39 @@ void draw_status_line(ImDrawList& list, const OverlayFrame& f) {
     text += "  \xE2\x80\xA2  camera: " + camera_shot_label(*c, painted);
     if (f.shot.camera->pose(f.time).interpolating) text += " (interpolating)";
   }
-  const float size = f.fonts.regular_size;
-  const ImVec2 extent = f.fonts.regular->CalcTextSizeA(size, 1e9f, 0, text.c_str());
-  const float pad = 6;
-  const ImVec2 at(static_cast<float>(f.left) + pad + 4, static_cast<float>(f.top + f.height) - extent.y - pad - 4);
-  list.AddRectFilled(ImVec2(at.x - pad, at.y - pad / 2), ImVec2(at.x + extent.x + pad, at.y + extent.y + pad / 2),
-                     IM_COL32(0, 0, 0, 150), 4.f);
-  list.AddText(f.fonts.regular, size, at, IM_COL32(235, 235, 235, 255), text.c_str());
+  return text;
 }
+
+/// Below this many pixels high the status line takes the small font: it wraps onto fewer lines.
+constexpr double kSmallStatusBelow = 400;
+
+}  // namespace
+
+StatusLine status_line_layout(const OverlayFrame& f, bool top) {
+  StatusLine s;
+  s.text = status_text(f);
+  const bool small = f.height < kSmallStatusBelow;
+  s.font = small ? f.fonts.small : f.fonts.regular;
+  s.size = small ? f.fonts.small_size : f.fonts.regular_size;
+  const float pad = small ? 3.f : 6.f, margin = small ? 2.f : 4.f;
+  // Wrapped to the picture's width, so a small picture shows all of it.
+  s.wrap = std::max(static_cast<float>(f.width) - 2 * (pad + margin), 20.f);
+  const ImVec2 extent = s.font->CalcTextSizeA(s.size, 1e9f, s.wrap, s.text.c_str());
+  const float left = static_cast<float>(f.left), picture_top = static_cast<float>(f.top);
+  const float y = top ? picture_top + pad / 2 + margin
+                      : static_cast<float>(f.top + f.height) - extent.y - pad / 2 - margin;
+  s.at = ImVec2(left + pad + margin, y);
+  s.box = {s.at.x - pad, s.at.y - pad / 2, s.at.x + extent.x + pad, s.at.y + extent.y + pad / 2};
+  s.top = top;
+  return s;
+}
+
+void draw_status_line(ImDrawList& list, const StatusLine& s) {
+  list.AddRectFilled(ImVec2(s.box.x0, s.box.y0), ImVec2(s.box.x1, s.box.y1), IM_COL32(0, 0, 0, 150), 4.f);
+  list.AddText(s.font, s.size, s.at, IM_COL32(235, 235, 235, 255), s.text.c_str(), nullptr, s.wrap);
+}
+
+void draw_status_line(ImDrawList& list, const OverlayFrame& f) { draw_status_line(list, status_line_layout(f, false)); }
 
 void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspect) {
   if (!f.shot.camera) return;
@@ -356,26 +416,65 @@ void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& f, double aspec
 
 namespace {
 
-/// A label centred on a point of the table, on a dark pill so it reads over cloth and wood alike.
-void draw_label(ImDrawList& list, const OverlayFrame& f, const Projector& project, const Vec3& where,
-                const std::string& text, ImU32 color) {
-  ImVec2 at;
-  if (!project(where, at)) return;
-  ImFont* font = f.fonts.regular;
-  const float size = f.fonts.regular_size;
-  const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0, text.c_str());
-  const ImVec2 corner(at.x - extent.x / 2, at.y - extent.y / 2);
-  const float pad = 4;
-  list.AddRectFilled(ImVec2(corner.x - pad, corner.y - pad / 2),
-                     ImVec2(corner.x + extent.x + pad, corner.y + extent.y + pad / 2), IM_COL32(0, 0, 0, 170), 5.f);
-  list.AddText(font, size, corner, color, text.c_str());
-}
+/// The table overlay's labels: each centred on a point of the table, on a dark pill so it reads over
+/// cloth and wood alike. Gathered before they are drawn, so that the status line can keep clear of
+/// them or they of it.
+class TableLabels {
+ public:
+  explicit TableLabels(const OverlayFrame& f) : f_(f), project_(projector(f)) {}
 
-}  // namespace
+  void add(const Vec3& where, const std::string& text, ImU32 color) {
+    ImVec2 at;
+    if (!project_(where, at)) return;
+    const ImVec2 extent = f_.fonts.regular->CalcTextSizeA(f_.fonts.regular_size, 1e9f, 0, text.c_str());
+    const ImVec2 corner(at.x - extent.x / 2, at.y - extent.y / 2);
+    labels_.push_back({at, corner, extent, text, color});
+  }
 
-void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
+  /// The pills, where they would be drawn if nothing moved them.
+  std::vector<OverlayBox> boxes() const {
+    std::vector<OverlayBox> out;
+    for (const Label& l : labels_) out.push_back(pill(l.corner, l.extent));
+    return out;
+  }
+
+  /// Draws every label; one whose pill would fall under `keep_clear` moves out of it (up when the box
+  /// is at the picture's bottom, down when at its top), tied to its place by a thin line.
+  void draw(ImDrawList& list, const OverlayBox* keep_clear, bool clear_at_top) const {
+    for (const Label& l : labels_) {
+      ImVec2 corner = l.corner;
+      if (keep_clear && pill(corner, l.extent).overlaps(*keep_clear)) {
+        corner.y = clear_at_top ? keep_clear->y1 + kPad / 2 + 2 : keep_clear->y0 - kPad / 2 - 2 - l.extent.y;
+        const float y = clear_at_top ? corner.y - kPad / 2 : corner.y + l.extent.y + kPad / 2;
+        list.AddLine(l.at, ImVec2(l.at.x, y), IM_COL32(0, 0, 0, 170), 3.f);
+        list.AddLine(l.at, ImVec2(l.at.x, y), l.color, 1.f);
+      }
+      const OverlayBox box = pill(corner, l.extent);
+      list.AddRectFilled(ImVec2(box.x0, box.y0), ImVec2(box.x1, box.y1), IM_COL32(0, 0, 0, 170), 5.f);
+      list.AddText(f_.fonts.regular, f_.fonts.regular_size, corner, l.color, l.text.c_str());
+    }
+  }
+
+ private:
+  static constexpr float kPad = 4;
+  struct Label {
+    ImVec2 at, corner, extent;
+    std::string text;
+    ImU32 color;
+  };
+  static OverlayBox pill(ImVec2 corner, ImVec2 extent) {
+    return {corner.x - kPad, corner.y - kPad / 2, corner.x + extent.x + kPad, corner.y + extent.y + kPad / 2};
+  }
+
+  const OverlayFrame& f_;
+  Projector project_;
+  std::vector<Label> labels_;
+};
+
+/// The rails', pockets' and balls' labels of the frame's moment.
+TableLabels table_labels(const OverlayFrame& f) {
+  TableLabels labels(f);
   const Scene& scene = f.shot.scene;
-  const Projector project = projector(f);
   const TableLayout layout = table_layout(scene);
   // Rails on the wood beside their nose line: the playing side is on the right walking from a to b.
   const double onto_wood = kStandardTable.cushion.width + kStandardTable.rail.width / 2;
@@ -384,8 +483,7 @@ void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
     const Vec3 along = rail.b - rail.a;
     const Vec3 outward = Vec3(-along.y(), along.x(), 0).normalized();
     const Vec3 mid = (rail.a + rail.b) / 2 + outward * onto_wood;
-    draw_label(list, f, project, Vec3(mid.x(), mid.y(), layout.rail_top), "rail " + std::to_string(i),
-               IM_COL32(255, 226, 140, 255));
+    labels.add(Vec3(mid.x(), mid.y(), layout.rail_top), "rail " + std::to_string(i), IM_COL32(255, 226, 140, 255));
   }
   // Pockets just outside their hole, away from the table's centre.
   const Vec3 centre((layout.noses.x0 + layout.noses.x1) / 2, (layout.noses.y0 + layout.noses.y1) / 2, 0);
@@ -395,16 +493,23 @@ void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) {
     away.z() = 0;
     away = away.norm() > 0 ? away.normalized() : Vec3(0, 1, 0);
     const Vec3 at = pocket.center + away * (pocket.radius + 0.04);
-    draw_label(list, f, project, Vec3(at.x(), at.y(), layout.rail_top), "pocket " + std::to_string(i), pocket_color());
+    labels.add(Vec3(at.x(), at.y(), layout.rail_top), "pocket " + std::to_string(i), pocket_color());
   }
-  // Each ball's index in file order (what `cue`, `look`, `follow` and `spin` refer to).
+  // Each ball's index in file order (what `cue`, `look`, `follow` and `spin` refer to), with its
+  // painted number beside it where the two differ, as the timeline writes it: "1 (3)".
+  const std::vector<int> painted = painted_numbers(scene);
   for (int i = 0; i < f.shot.timeline.ball_count(); ++i) {
     const BallState s = f.shot.timeline.state(i, f.time);
     if (s.motion == Motion::pocketed) continue;
     const double r = scene.physics.ball_radius;  // the label just beyond the ball, leaving it in sight
-    draw_label(list, f, project, s.position + Vec3(0, 3 * r, r), std::to_string(i), IM_COL32(255, 255, 255, 255));
+    labels.add(s.position + Vec3(0, 3 * r, r), ball_index_text(i, painted), IM_COL32(255, 255, 255, 255));
   }
+  return labels;
 }
+
+}  // namespace
+
+void draw_table_numbering(ImDrawList& list, const OverlayFrame& f) { table_labels(f).draw(list, nullptr, false); }
 
 namespace {
 
@@ -471,6 +576,22 @@ void draw_aim(ImDrawList& list, const OverlayFrame& f) {
   draw_ring(list, project, pocket, 0.01, IM_COL32(255, 200, 60, 255), 2.f * scale);
 }
 
+namespace {
+
+/// The status line at the picture's bottom, or at its top when fewer of the table's labels are there
+/// (never with the camera map, which has the top right corner).
+StatusLine place_status_line(const OverlayFrame& f, const std::vector<OverlayBox>& labels, bool top_taken) {
+  const auto covered = [&](const StatusLine& s) {
+    return std::count_if(labels.begin(), labels.end(), [&](const OverlayBox& b) { return b.overlaps(s.box); });
+  };
+  StatusLine bottom = status_line_layout(f, false);
+  if (top_taken || covered(bottom) == 0) return bottom;
+  StatusLine top = status_line_layout(f, true);
+  return covered(top) < covered(bottom) ? top : bottom;
+}
+
+}  // namespace
+
 void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOverlays& overlays) {
   const bool others = overlays.paths || overlays.events || overlays.camera || overlays.table;
   if (!others && !overlays.aim) return;
@@ -483,9 +604,13 @@ void draw_overlays(ImDrawList& list, const OverlayFrame& given, const PreviewOve
   if (overlays.paths) draw_ball_paths(list, frame);
   if (overlays.events) draw_event_markers(list, frame);
   if (overlays.camera) draw_camera_map(list, frame);
-  if (overlays.table) draw_table_numbering(list, frame);
+  // The status line never covers a label of the table: it goes where fewer are, and those it would
+  // still cover move out of its way.
+  const TableLabels labels = overlays.table ? table_labels(frame) : TableLabels(frame);
+  const StatusLine status = place_status_line(frame, labels.boxes(), overlays.camera);
+  labels.draw(list, others ? &status.box : nullptr, status.top);
   if (overlays.aim) draw_aim(list, frame);
-  if (others) draw_status_line(list, frame);
+  if (others) draw_status_line(list, status);
 }
 
 }  // namespace bsim

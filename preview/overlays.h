@@ -1,13 +1,14 @@
 #pragma once
 // Drawn over the 3D picture in 2D: every ball's path, event markers, the camera seen from above,
 // a line of text saying where in the shot the picture is, and the scripted camera as a frustum.
+#include <string>
 #include <vector>
+
+#include <imgui.h>
 
 #include "fonts.h"
 #include "preview_options.h"
 #include "view.h"
-
-struct ImDrawList;
 
 namespace bsim {
 
@@ -38,7 +39,25 @@ void draw_ball_paths(ImDrawList& list, const OverlayFrame& frame);
 void draw_event_markers(ImDrawList& list, const OverlayFrame& frame);
 /// The scripted camera's path and view wedge over a top view of the table, in the top-right corner.
 void draw_camera_map(ImDrawList& list, const OverlayFrame& frame);
-/// "t = 1.500 s · event 3 ball 0 – ball 5 · follow ball 0 · interpolating" along the bottom.
+/// A rectangle on the picture, px.
+struct OverlayBox {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool overlaps(const OverlayBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+/// "t = 1.500 s · event 3 ball 0 – ball 5 · follow ball 0 · interpolating", wrapped to the picture's
+/// width (in the small font below 400 px high), and where it goes: along the bottom, or the top.
+struct StatusLine {
+  std::string text;
+  ImFont* font = nullptr;
+  float size = 0, wrap = 0;  ///< px
+  ImVec2 at;                 ///< px, the text's top left
+  OverlayBox box;            ///< px, its dark band
+  bool top = false;
+};
+StatusLine status_line_layout(const OverlayFrame& frame, bool top);
+void draw_status_line(ImDrawList& list, const StatusLine& line);
+/// The status line along the bottom.
 void draw_status_line(ImDrawList& list, const OverlayFrame& frame);
 /// The scripted camera at `time` as a frustum and its path, seen from the frame's (free) camera.
 void draw_scripted_frustum(ImDrawList& list, const OverlayFrame& frame, double aspect);

@@ -1,5 +1,6 @@
 // --at: one frame of the shot, drawn headless, with optional overlays.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -17,8 +18,9 @@ namespace bsim {
 namespace {
 /// Snapshots are single frames, so they can afford antialiasing.
 constexpr int kSnapshotSamples = 4;
-/// Without --size the timeline is wider than a frame: a long shot's events need the room.
-constexpr int kTimelineWidth = 1600, kTimelineMinHeight = 360, kTimelineMaxHeight = 1200;
+/// Without --size the timeline is wider than a frame (a long shot's events need the room) and as tall
+/// as it needs to be, within these bounds.
+constexpr int kTimelineWidth = 1600, kTimelineMinHeight = 360, kTimelineMaxHeight = 8000;
 }  // namespace
 
 std::optional<double> resolve_time(const TimeSpec& at, const Timeline& timeline, std::string& error) {
@@ -102,16 +104,18 @@ int run_snapshot(const PreviewOptions& options, const Shot& shot) {
 }
 
 int run_timeline_picture(const PreviewOptions& options, const TimelineData& data) {
-  // Without --size, tall enough to list every event (about five columns of 19 px lines) and, for a
-  // camera script that failed, its errors and each description's second line.
-  const int rows = (static_cast<int>(data.events.size()) + 4) / 5;
-  const int errors = static_cast<int>(data.script_errors.size());
-  // The stroke's ball diagram makes the title about 40 px taller; the band of a scene's shots adds about 60.
-  const int extra = (errors > 0 ? 60 + errors * 17 : 0) + (data.stroke ? 40 : 0) + (data.shots.empty() ? 0 : 60);
+  // Without --size, exactly as tall as the picture needs to show everything: every label and the
+  // whole event list (measured with the fonts it will be drawn in).
   const int width = options.size_given ? options.width : kTimelineWidth;
-  const int height =
-      options.size_given ? options.height : std::clamp(330 + rows * 19 + extra, kTimelineMinHeight, kTimelineMaxHeight);
-  const float text_px = options.size_given ? std::clamp(std::min(height / 36.f, width / 90.f), 11.f, 20.f) : 16.f;
+  const float text_px = options.size_given ? std::clamp(std::min(options.height / 36.f, width / 90.f), 11.f, 20.f) : 16.f;
+  int height = options.size_given ? options.height : kTimelineMinHeight;
+  if (!options.size_given) {
+    ImFontAtlas atlas;
+    const UiFonts fonts = add_ui_fonts(atlas, text_px);
+    atlas.Build();
+    const float needed = std::ceil(timeline_height(data, fonts, static_cast<float>(width))) + 1;
+    height = std::clamp(static_cast<int>(needed), kTimelineMinHeight, kTimelineMaxHeight);
+  }
   std::string error;
   HeadlessCanvas canvas;
   if (!canvas.open(width, height, text_px, error)) {
@@ -119,7 +123,9 @@ int run_timeline_picture(const PreviewOptions& options, const TimelineData& data
     return 1;
   }
   ImDrawList* list = canvas.begin_2d();
-  draw_timeline(*list, data, canvas.fonts(), {0, 0, float(width), float(height)});
+  TimelineLayout layout{0, 0, float(width), float(height)};
+  layout.fit_all = !options.size_given;
+  draw_timeline(*list, data, canvas.fonts(), layout);
   canvas.end_2d();
   if (!make_parent_directory(*options.output, error) || !canvas.write_png(*options.output, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";

@@ -43,10 +43,7 @@ StrokeDiagramBall stroke_diagram_ball(const UiFonts& fonts, ImVec2 at) {
   return {ImVec2(at.x + text_column_width(fonts) + gap(fonts) + r + 1, at.y + r + 1), r};
 }
 
-void draw_stroke_diagram(ImDrawList& list, const Stroke& stroke, const UiFonts& fonts, ImVec2 at) {
-  const StrokeDiagramBall ball = stroke_diagram_ball(fonts, at);
-  const ImVec2 c = ball.centre;
-  const float r = ball.radius;
+void draw_stroke_ball(ImDrawList& list, const Stroke& stroke, ImVec2 c, float r) {
   list.AddCircleFilled(c, r, kBall, 48);
   list.AddCircle(c, r, kEdge, 48, 1.f);
   list.AddLine(ImVec2(c.x - r, c.y), ImVec2(c.x + r, c.y), kCross);
@@ -55,6 +52,13 @@ void draw_stroke_diagram(ImDrawList& list, const Stroke& stroke, const UiFonts& 
   // The tip's contact: a 13 mm tip's mark on a 57 mm ball, about 0.2 of the radius (at least 3 px).
   const float dot = std::max(3.f, r * 0.2f);
   list.AddCircleFilled(stroke_tip_point(stroke, c, r), dot, kTip, 20);
+}
+
+void draw_stroke_diagram(ImDrawList& list, const Stroke& stroke, const UiFonts& fonts, ImVec2 at) {
+  const StrokeDiagramBall ball = stroke_diagram_ball(fonts, at);
+  const ImVec2 c = ball.centre;
+  const float r = ball.radius;
+  draw_stroke_ball(list, stroke, c, r);
   char speed[32], elevation[32];
   std::snprintf(speed, sizeof speed, "%.2f m/s", stroke.speed);
   std::snprintf(elevation, sizeof elevation, "%.0f\xC2\xB0 up", stroke.elevation_deg);

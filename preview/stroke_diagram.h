@@ -23,6 +23,10 @@ struct StrokeDiagramBall {
 };
 StrokeDiagramBall stroke_diagram_ball(const UiFonts& fonts, ImVec2 at);
 
+/// Draws the ball alone (no text): the ball centred at `centre` with `radius` px, the miscue ring and
+/// the tip's dot; for a place too narrow for the whole diagram.
+void draw_stroke_ball(ImDrawList& list, const Stroke& stroke, ImVec2 centre, float radius);
+
 /// Draws the diagram with its top left corner at `at`.
 void draw_stroke_diagram(ImDrawList& list, const Stroke& stroke, const UiFonts& fonts, ImVec2 at);
 

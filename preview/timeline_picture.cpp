@@ -44,6 +44,34 @@ ImVec2 text_size(ImFont* font, float size, const std::string& text) {
   return font->CalcTextSizeA(size, FLT_MAX, 0, text.c_str());
 }
 
+/// `text` cut to fit `width` px, ending in an ellipsis when cut (never inside a character); empty when
+/// not even the ellipsis fits.
+std::string elided(ImFont* font, float size, const std::string& text, float width) {
+  if (text_size(font, size, text).x <= width) return text;
+  static const std::string kEllipsis = "\xE2\x80\xA6";
+  std::string cut = text;
+  while (!cut.empty()) {
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();
+    if (!cut.empty()) cut.pop_back();
+    while (!cut.empty() && cut.back() == ' ') cut.pop_back();
+    if (text_size(font, size, cut + kEllipsis).x <= width) return cut + kEllipsis;
+  }
+  return text_size(font, size, kEllipsis).x <= width ? kEllipsis : std::string();
+}
+
+/// Each line of `text` elided to `width` px.
+std::string elided_lines(ImFont* font, float size, const std::string& text, float width) {
+  std::string out;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t end = text.find('\n', from);
+    out += elided(font, size, text.substr(from, end == std::string::npos ? end : end - from), width);
+    if (end == std::string::npos) return out;
+    out += '\n';
+    from = end + 1;
+  }
+}
+
 ImU32 with_alpha(ImU32 color, int alpha) {
   return (color & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha) << IM_COL32_A_SHIFT);
 }
@@ -94,11 +122,13 @@ struct RowLayout {
   float pad = 0;              ///< px, the picture's spacing unit
   float top_margin = 0;       ///< px above the title, or above the rows when compact
   float label_height = 0;     ///< px, one level of event numbers
-  float camera_height = 0;    ///< px of the camera band
-  float lane = 0;             ///< px at the bottom of the camera band for the labels too long for their bar
+  float camera_height = 0;    ///< px of the camera band, its lanes included
+  float lane_height = 0;      ///< px of one lane under the camera bars, for the labels too long for their bar
+  float lane = 0;             ///< px of all the lanes (0 for the scrub bar and for a script that failed)
 
   // Set by place().
   int label_levels = 0;
+  int lanes = 0;
   float sections_top = 0, sections_bottom = 0;
   float labels_top = 0;
   float events_top = 0, events_bottom = 0;
@@ -115,9 +145,7 @@ struct RowLayout {
         label_height(small + 2),
         // A script that failed shows each description's error under its label.
         camera_height(script_failed ? fonts.regular_size + small + 12 : fonts.regular_size + 10),
-        lane(compact || script_failed ? 0 : small + 6) {
-    camera_height += lane;
-  }
+        lane_height(compact || script_failed ? 0 : small + 4) {}
 
   /// px the band of shot sections takes with the gap under it.
   float sections_gap() const { return sections_height > 0 ? sections_height + 2 * kGap : 0; }
@@ -126,14 +154,20 @@ struct RowLayout {
   float bars_bottom() const { return camera_bottom - lane; }
 
   /// px the four bands and the axis take, gaps aside: the height the label levels cannot have.
-  float bands_height() const {
-    return sections_gap() + (small + kEventsExtra) + (small + kDropsExtra) + camera_height + (small + kCueExtra) +
-           (small + kAxisExtra);
+  float bands_height(int lane_count) const {
+    return sections_gap() + (small + kEventsExtra) + (small + kDropsExtra) + camera_height + lanes_px(lane_count) +
+           (small + kCueExtra) + (small + kAxisExtra);
   }
 
-  /// Places the rows from `top` down, with `levels` levels of event numbers above the events band.
-  void place(float top, int levels) {
+  /// px `n` lanes take under the camera bars.
+  float lanes_px(int n) const { return n > 0 && lane_height > 0 ? n * lane_height + 2 : 0; }
+
+  /// Places the rows from `top` down, with `levels` levels of event numbers above the events band and
+  /// `lane_count` lanes of labels under the camera bars.
+  void place(float top, int levels, int lane_count) {
     label_levels = levels;
+    lanes = lane_height > 0 ? lane_count : 0;
+    lane = lanes_px(lanes);
     sections_top = top;
     sections_bottom = top + sections_height;
     labels_top = top + sections_gap();
@@ -142,7 +176,7 @@ struct RowLayout {
     drops_top = events_bottom + kGap;
     drops_bottom = drops_top + small + kDropsExtra;
     camera_top = drops_bottom + kGap;
-    camera_bottom = camera_top + camera_height;
+    camera_bottom = camera_top + camera_height + lane;
     cue_top = camera_bottom + kGap;
     cue_bottom = cue_top + small + kCueExtra;
     axis_top = cue_bottom;
@@ -160,6 +194,8 @@ struct RowLayout {
 };
 
 constexpr const char* kRowNames[] = {"events", "pockets", "camera", "cue"};
+/// The most levels of event numbers over the events row, and lanes of labels under the camera bars.
+constexpr int kMaxLevels = 4, kMaxLanes = 8;
 
 // Where things go across: the row names' gutter, then the time axis, then (when descriptions name an
 // event the shot lacks) the zone where those go, having no time.
@@ -304,18 +340,29 @@ class TimelinePainter {
       title_right = at.x - rows_.pad;
       bottom = std::max(bottom, y + size.y);
     }
-    const ImVec4 clip(layout_.x, layout_.y, title_right, bottom_);
-    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, data_.title.c_str(), nullptr,
-                  0.f, data_.stroke ? &clip : nullptr);
-    y = bottom + rows_.pad;
-    if (script_failed_) y = draw_failure_note(y);
-    return y;
+    // Cut short of the diagram (or the edge) with an ellipsis.
+    const std::string title =
+        elided(fonts_.bold, fonts_.bold_size, data_.title, title_right - rows_.pad - (layout_.x + rows_.pad));
+    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, title.c_str());
+    if (script_failed_) draw_failure_note(bottom + rows_.pad);
+    return header_bottom();
+  }
+
+  /// Where the rows begin: under the title (and the stroke's diagram) and the failure note.
+  float header_bottom() const {
+    const float y = layout_.y + rows_.top_margin;
+    if (layout_.compact) return y;
+    float bottom = y + fonts_.bold_size;
+    if (data_.stroke) bottom = std::max(bottom, y + stroke_diagram_size(fonts_).y);
+    return bottom + rows_.pad + (script_failed_ ? failure_note().y + rows_.pad * 0.6f : 0.f);
   }
 
   /// Sets where everything goes, the rows starting at `top`.
   void lay_out(float top) {
     across_ = measure_across();
-    rows_.place(top, label_levels_needed(top));
+    const float spare = bottom_ - top - rows_.bands_height(0) - rows_.pad;
+    const int lanes = lanes_needed(spare);
+    rows_.place(top, label_levels_needed(top, lanes), lanes);
   }
 
   void draw_row_backgrounds() {
@@ -326,9 +373,10 @@ class TimelinePainter {
       row_name(list_, fonts_, layout_.x + rows_.pad, bands[k].top, bands[k].bottom, kRowNames[k]);
   }
 
-  // A scene of several shots: a band above the rows with a section per shot, its name, what it does
-  // and its stroke's diagram at the section's right end when there is room (the text clipped short
-  // of it).
+  // A scene of several shots: a band above the rows with a section per shot, its name and what it
+  // does on the left (each line cut with an ellipsis when it is too long) and its stroke's diagram at
+  // the right end: whole where the name and the strike's time fit beside it, else the ball alone,
+  // shrunk to the section when even that is too wide.
   void draw_shot_sections() {
     const float top = rows_.sections_top, bottom = rows_.sections_bottom, pad = rows_.pad;
     if (bottom <= top) return;
@@ -338,14 +386,41 @@ class TimelinePainter {
       const TimelineShotSection& s = data_.shots[k];
       const float a = at(s.start), b = std::max(at(s.end), a + 2);
       list_.AddRectFilled(ImVec2(a, top), ImVec2(b, bottom), k % 2 ? kSectionOdd : kSectionEven, 2.f);
-      const ImVec2 diagram(b - pad - size.x, top + (bottom - top - size.y) / 2);
-      const bool room = s.stroke && diagram.x >= a + pad + text_size(fonts_.bold, fonts_.bold_size, s.label).x + pad;
-      if (room) draw_stroke_diagram(list_, *s.stroke, fonts_, diagram);
-      list_.PushClipRect(ImVec2(a + 1, top), ImVec2(room ? diagram.x - pad / 2 : b - 1, bottom), true);
-      list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(a + pad, top + 3), kText, s.label.c_str());
-      list_.AddText(fonts_.small, fonts_.small_size, ImVec2(a + pad, top + 3 + fonts_.bold_size + 2), kDim,
-                    s.detail.c_str());
-      list_.PopClipRect();
+      float text_right = b - pad / 2;
+      if (s.stroke) {
+        const float name = text_size(fonts_.bold, fonts_.bold_size, s.label).x;
+        const StrokeDiagramBall whole = stroke_diagram_ball(fonts_, ImVec2(b - pad - size.x, 0));
+        // The whole diagram when the name and the strike's line fit beside it.
+        const std::string strike = s.detail.substr(s.detail.find('\n') + 1);
+        const float line = std::max(name, text_size(fonts_.small, fonts_.small_size, strike).x);
+        if (b - pad - size.x >= a + pad + line + pad) {
+          const ImVec2 corner(b - pad - size.x, top + (bottom - top - size.y) / 2);
+          draw_stroke_diagram(list_, *s.stroke, fonts_, corner);
+          note({TimelineDrawn::Kind::stroke, {}, corner.x, corner.y, corner.x + size.x, corner.y + size.y, int(k)});
+          text_right = b - pad - size.x - pad / 2;
+        } else {
+          // As large as leaves the strike's line whole (at most the whole diagram's ball, at least
+          // 8 px), and within the section however narrow.
+          float r = std::clamp((b - a - 2 * pad - line - pad / 2) / 2 - 1, std::min(8.f, whole.radius), whole.radius);
+          r = std::max(2.f, std::min(r, (b - a - pad) / 2 - 1));
+          const ImVec2 centre(b - pad / 2 - r - 1, (top + bottom) / 2);
+          draw_stroke_ball(list_, *s.stroke, centre, r);
+          note({TimelineDrawn::Kind::stroke, {}, centre.x - r, centre.y - r, centre.x + r, centre.y + r, int(k)});
+          text_right = b - pad / 2 - (2 * r + 2) - pad / 2;
+        }
+      }
+      const float room = text_right - (a + pad);
+      const std::string name = elided(fonts_.bold, fonts_.bold_size, s.label, room);
+      const std::string detail = elided_lines(fonts_.small, fonts_.small_size, s.detail, room);
+      const ImVec2 at_name(a + pad, top + 3), at_detail(a + pad, top + 3 + fonts_.bold_size + 2);
+      list_.AddText(fonts_.bold, fonts_.bold_size, at_name, kText, name.c_str());
+      list_.AddText(fonts_.small, fonts_.small_size, at_detail, kDim, detail.c_str());
+      const auto noted = [&](ImFont* font, float px, const std::string& text, ImVec2 where) {
+        const ImVec2 extent = text_size(font, px, text);
+        note({TimelineDrawn::Kind::shot_text, text, where.x, where.y, where.x + extent.x, where.y + extent.y, int(k)});
+      };
+      noted(fonts_.bold, fonts_.bold_size, name, at_name);
+      noted(fonts_.small, fonts_.small_size, detail, at_detail);
     }
   }
 
@@ -387,19 +462,16 @@ class TimelinePainter {
   void draw_camera_descriptions() {
     const float top = rows_.camera_top + 2, low = rows_.bars_bottom() - 2;
     if (!script_failed_) {
-      // A label too long for its bar goes in the lane under the bars (the scrub bar: the mode alone).
-      std::vector<const TimelineCameraSpan*> in_lane;
+      // A label too long for its bar goes in a lane under the bars (the scrub bar: the mode alone).
       for (const TimelineCameraSpan& c : data_.camera) {
-        const std::string label = camera_span_label(c, data_.painted);
-        const bool fits = text_size(fonts_.regular, fonts_.regular_size, label).x + 8 <= at(c.end) - at(c.begin);
+        const bool fits = label_fits_bar(c);
         labelled_bar(list_, fonts_, at(c.begin), at(c.end), top, low, camera_mode_color(c.mode),
-                     fits              ? label
+                     fits              ? camera_span_label(c, data_.painted)
                      : layout_.compact ? c.label
                                        : "",
                      true);
-        if (!fits && !layout_.compact) in_lane.push_back(&c);
       }
-      draw_lane_labels(in_lane);
+      draw_lane_labels();
     }
     for (int faulty = 0; script_failed_ && faulty < 2; ++faulty)
       for (const TimelineCameraSpan& c : data_.camera) {
@@ -410,22 +482,23 @@ class TimelinePainter {
       }
   }
 
-  // The labels of short bars in the lane under them, from the last one back so that the last is
-  // always whole: each at its bar's start if there is room, else moved left, tied to its bar by a line.
-  void draw_lane_labels(const std::vector<const TimelineCameraSpan*>& spans) {
-    const float small = fonts_.small_size, y = rows_.bars_bottom() + 2;
-    float limit = right_ - rows_.pad;
-    for (auto it = spans.rbegin(); it != spans.rend(); ++it) {
-      const TimelineCameraSpan& c = **it;
-      const std::string label = camera_span_label(c, data_.painted);
-      const float w = text_size(fonts_.small, small, label).x;
-      const float start = at(c.begin);
-      const float x = std::max(std::min(start, limit - w), across_.x0);
-      const ImU32 color = camera_mode_color(c.mode);
-      list_.AddLine(ImVec2(start + 1, rows_.bars_bottom() - 2), ImVec2(std::max(x, start) + 1, y + 2), color, 1.f);
-      if (x < start) list_.AddLine(ImVec2(x, y + 2), ImVec2(start + 1, y + 2), with_alpha(color, 140), 1.f);
-      list_.AddText(fonts_.small, small, ImVec2(x, y + 2), color, label.c_str());
-      limit = x - rows_.pad;
+  // The labels of short bars in the lanes under them, each starting at its bar and tied to it by a
+  // thin line (draw_camera_descriptions).
+  void draw_lane_labels() {
+    const float small = fonts_.small_size;
+    const std::vector<LaneLabel> placed = lane_labels(rows_.lanes).labels;
+    for (const LaneLabel& l : placed) {
+      const float start = at(l.span->begin) + 1, y = lane_y(l.lane);
+      const ImU32 color = with_alpha(camera_mode_color(l.span->mode), 150);
+      list_.AddLine(ImVec2(start, rows_.bars_bottom() - 2), ImVec2(start, y + small), color, 1.f);
+      if (l.x < start - 1) list_.AddLine(ImVec2(l.x, y + small), ImVec2(start, y + small), color, 1.f);
+    }
+    // The text over the ties of the lanes below it, on the row's ground.
+    for (const LaneLabel& l : placed) {
+      const float y = lane_y(l.lane), w = text_size(fonts_.small, small, l.text).x;
+      list_.AddRectFilled(ImVec2(l.x - 1, y), ImVec2(l.x + w + 1, y + small), kRowBackground);
+      list_.AddText(fonts_.small, small, ImVec2(l.x, y), camera_mode_color(l.span->mode), l.text.c_str());
+      note({TimelineDrawn::Kind::lane_label, l.text, l.x, y, l.x + w, y + small, -1, l.span});
     }
   }
 
@@ -534,8 +607,15 @@ class TimelinePainter {
       list_.AddText(fonts_.small, small, ImVec2(across_.x0, y), kErrorText, line.c_str());
       y += small + 3;
     }
-    if (script_failed_) y += rows_.pad * 0.5f;
-    return y;
+    return errors_bottom();
+  }
+
+  /// Where the part under the errors begins (right under the axis when there are none).
+  float errors_bottom() const {
+    const float small = fonts_.small_size;
+    float y = rows_.axis_bottom + rows_.pad * 0.5f;
+    for (std::size_t k = 0; k < data_.script_errors.size() && y + small <= bottom_ - 2; ++k) y += small + 3;
+    return script_failed_ ? y + rows_.pad * 0.5f : y;
   }
 
   /// The legend on one line at `y`, as many keys as fit. Returns where the next part begins.
@@ -557,45 +637,161 @@ class TimelinePainter {
   }
 
   // Every event in a list from `y` down, in columns, so a number in the camera script can be checked
-  // against what happened.
+  // against what happened. A picture too short for all of them (a --size chosen by hand) ends the
+  // list with "… and N more".
   void draw_event_list(float y) {
-    const float small = fonts_.small_size, pad = rows_.pad;
-    const float line = small + 3;
-    const int lines = static_cast<int>((bottom_ - pad * 0.5f - y) / line);
-    if (lines < 1 || data_.events.empty()) return;
-    const std::vector<ListEntry> entries = event_list_entries(data_);
-    float column = 0;
-    for (const ListEntry& entry : entries)
-      column = std::max(column, text_size(fonts_.small, small, "000  " + entry.text).x);
-    column += pad * 2;
-    const int columns = std::max(1, static_cast<int>((right_ - across_.x0) / column));
-    const int capacity = lines * columns;
-    const int count = static_cast<int>(entries.size());
-    for (int k = 0; k < count && k < capacity; ++k) {
-      const float cx = across_.x0 + (k / lines) * column, cy = y + (k % lines) * line;
-      if (k == capacity - 1 && count > capacity) {
-        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim,
-                      ("\xE2\x80\xA6 and " + std::to_string(count - capacity + 1) + " more").c_str());
+    const EventList l = event_list(y);
+    if (l.lines < 1) return;
+    const float small = fonts_.small_size;
+    for (int k = 0; k < l.count && k < l.capacity; ++k) {
+      const float cx = across_.x0 + static_cast<float>(k / l.lines) * l.column;
+      const float cy = y + static_cast<float>(k % l.lines) * l.line;
+      if (k == l.capacity - 1 && l.count > l.capacity) {
+        const std::string more = "\xE2\x80\xA6 and " + std::to_string(l.count - l.capacity + 1) + " more";
+        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim, more.c_str());
+        note({TimelineDrawn::Kind::list_more, more, cx, cy, cx + l.column, cy + small});
         break;
       }
-      draw_event_list_line(cx, cy, entries[static_cast<std::size_t>(k)]);
+      const ListEntry& entry = l.entries[static_cast<std::size_t>(k)];
+      draw_event_list_line(cx, cy, entry);
+      note({TimelineDrawn::Kind::list_line, entry.text, cx, cy, cx + l.column, cy + small});
     }
   }
 
+  /// px from the top of the picture that the whole of it needs, the event list complete: what the
+  /// rows, the errors and the legend take at this layout's width, and the list in as many columns as
+  /// fit across.
+  float needed_height() {
+    lay_out(header_bottom());
+    const float y = errors_bottom() + fonts_.small_size + rows_.pad;  // the legend's line
+    const EventList l = event_list(y);
+    const int lines = l.count == 0 ? 0 : (l.count + l.columns - 1) / l.columns;
+    return y + static_cast<float>(lines) * l.line + rows_.pad * 0.5f - layout_.y;
+  }
+
  private:
+  struct EventList {
+    std::vector<ListEntry> entries;
+    int count = 0;             ///< entries
+    int lines = 0;             ///< lines per column that fit below the list's top
+    int columns = 1;           ///< columns that fit across
+    int capacity = 0;          ///< lines * columns
+    float line = 0, column = 0;  ///< px
+  };
+
+  EventList event_list(float y) const {
+    EventList l;
+    const float small = fonts_.small_size, pad = rows_.pad;
+    l.line = small + 3;
+    l.lines = std::max(0, static_cast<int>((bottom_ - pad * 0.5f - y) / l.line));
+    if (data_.events.empty()) return l;
+    l.entries = event_list_entries(data_);
+    l.count = static_cast<int>(l.entries.size());
+    for (const ListEntry& entry : l.entries)
+      l.column = std::max(l.column, text_size(fonts_.small, small, "000  " + entry.text).x);
+    l.column += pad * 2;
+    l.columns = std::max(1, static_cast<int>((right_ - across_.x0) / l.column));
+    l.capacity = l.lines * l.columns;
+    return l;
+  }
+
+  void note(TimelineDrawn drawn) const {
+    if (layout_.drawn) layout_.drawn->push_back(std::move(drawn));
+  }
+
   float at(double t) const { return across_.x0 + static_cast<float>(t) * across_.axis.pixels_per_second; }
 
-  float draw_failure_note(float y) {
-    const float text = fonts_.regular_size, pad = rows_.pad;
+  std::string failure_note_text() const {
     const std::size_t n = data_.script_errors.size();
-    const std::string note = "The camera script does not fit this shot (" + std::to_string(n) +
-                             (n == 1 ? " error" : " errors") +
-                             "): the camera row shows it as written, each description at the event it "
-                             "names, the faulty ones in red.";
-    const float wrap = right_ - layout_.x - 2 * pad;
-    list_.AddText(fonts_.regular, text, ImVec2(layout_.x + pad, y - pad * 0.4f), kErrorText, note.c_str(), nullptr,
-                  wrap);
-    return y + fonts_.regular->CalcTextSizeA(text, FLT_MAX, wrap, note.c_str()).y + pad * 0.6f;
+    return "The camera script does not fit this shot (" + std::to_string(n) + (n == 1 ? " error" : " errors") +
+           "): the camera row shows it as written, each description at the event it names, the faulty ones in red.";
+  }
+  float failure_note_wrap() const { return right_ - layout_.x - 2 * rows_.pad; }
+  /// px the note takes, wrapped.
+  ImVec2 failure_note() const {
+    return fonts_.regular->CalcTextSizeA(fonts_.regular_size, FLT_MAX, failure_note_wrap(),
+                                         failure_note_text().c_str());
+  }
+
+  void draw_failure_note(float y) {
+    const float pad = rows_.pad;
+    list_.AddText(fonts_.regular, fonts_.regular_size, ImVec2(layout_.x + pad, y - pad * 0.4f), kErrorText,
+                  failure_note_text().c_str(), nullptr, failure_note_wrap());
+  }
+
+  /// px, the top of lane `k` under the camera bars.
+  float lane_y(int k) const { return rows_.bars_bottom() + 1 + static_cast<float>(k) * rows_.lane_height; }
+
+  bool label_fits_bar(const TimelineCameraSpan& c) const {
+    const std::string label = camera_span_label(c, data_.painted);
+    return text_size(fonts_.regular, fonts_.regular_size, label).x + 8 <= at(c.end) - at(c.begin);
+  }
+
+  /// px, where the shot section holding time t begins (time 0 for a scene of one shot).
+  float section_start(double t) const {
+    float x = across_.x0;
+    for (const TimelineShotSection& s : data_.shots)
+      if (s.start <= t) x = at(s.start);
+    return x;
+  }
+
+  struct LaneLabel {
+    const TimelineCameraSpan* span = nullptr;
+    std::string text;  ///< the label, elided with an ellipsis when cut
+    float x = 0;       ///< px, where it starts: its bar's start, or left of it at the picture's right edge
+    int lane = 0;
+  };
+  struct LanePlan {
+    std::vector<LaneLabel> labels;
+    bool whole = true;  ///< every label whole
+  };
+
+  // The labels too long for their bars in `lanes` lanes, from the last bar back: each starts at its bar
+  // in the first lane free there, never over another; the last ones may move left of their bars to
+  // stay whole before the picture's right edge, but never out of their shot's section. One for which
+  // no lane has room is cut, with an ellipsis, to the room of the lane with the most.
+  LanePlan lane_labels(int lanes) const {
+    LanePlan plan;
+    if (lanes <= 0 || layout_.compact || script_failed_) return plan;
+    const float edge = right_ - rows_.pad, gap = rows_.pad * 0.75f, small = fonts_.small_size;
+    std::vector<float> free_to(static_cast<std::size_t>(lanes), edge);  // px, each lane is free left of this
+    for (auto it = data_.camera.rbegin(); it != data_.camera.rend(); ++it) {
+      if (label_fits_bar(*it)) continue;
+      const std::string label = camera_span_label(*it, data_.painted);
+      const float x = at(it->begin), w = text_size(fonts_.small, small, label).x;
+      LaneLabel placed{&*it, label, x, -1};
+      for (std::size_t k = 0; k < free_to.size() && placed.lane < 0; ++k) {
+        if (x + w + gap <= free_to[k]) placed.lane = static_cast<int>(k);
+        // At the right edge: moved left to stay whole, within its own shot.
+        else if (free_to[k] == edge && edge - w >= std::max(section_start(it->begin), across_.x0)) {
+          placed.lane = static_cast<int>(k);
+          placed.x = std::min(x, edge - w);
+        }
+      }
+      if (placed.lane < 0) {
+        const auto most = std::max_element(free_to.begin(), free_to.end());
+        placed.lane = static_cast<int>(most - free_to.begin());
+        placed.text = elided(fonts_.small, small, label, *most - gap - x);
+        plan.whole = false;
+      }
+      free_to[static_cast<std::size_t>(placed.lane)] = placed.x;
+      if (!placed.text.empty()) plan.labels.push_back(std::move(placed));
+    }
+    return plan;
+  }
+
+  // As many lanes as the labels need to be whole, up to what the height allows (none when every
+  // label fits its bar).
+  int lanes_needed(float spare) const {
+    if (layout_.compact || script_failed_ || rows_.lane_height <= 0) return 0;
+    const bool any = std::any_of(data_.camera.begin(), data_.camera.end(),
+                                 [&](const TimelineCameraSpan& c) { return !label_fits_bar(c); });
+    if (!any) return 0;
+    const int max_lanes =
+        layout_.fit_all ? kMaxLanes : std::clamp(static_cast<int>(spare * 0.3f / rows_.lane_height), 1, kMaxLanes);
+    for (int lanes = 1; lanes < max_lanes; ++lanes)
+      if (lane_labels(lanes).whole) return lanes;
+    return max_lanes;
   }
 
   Across measure_across() const {
@@ -622,9 +818,11 @@ class TimelinePainter {
   }
 
   // As many label levels as the crowding needs, up to what the height allows.
-  int label_levels_needed(float top) const {
-    const float spare = bottom_ - top - rows_.bands_height() - rows_.pad;
-    const int max_levels = layout_.compact ? 1 : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, 4);
+  int label_levels_needed(float top, int lanes) const {
+    const float spare = bottom_ - top - rows_.bands_height(lanes) - rows_.pad;
+    const int max_levels = layout_.compact   ? 1
+                           : layout_.fit_all ? kMaxLevels
+                                             : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, kMaxLevels);
     for (int levels = 1; levels < max_levels; ++levels)
       if (event_numbers_fit(levels)) return levels;
     return max_levels;
@@ -739,9 +937,16 @@ TimelineData timeline_data(const Shot& shot) {
   return data;
 }
 
+float timeline_height(const TimelineData& data, const UiFonts& fonts, float width) {
+  ImDrawList unused(nullptr);  // measured, not drawn
+  TimelineLayout layout{0, 0, width, 1e6f};
+  layout.fit_all = true;
+  return TimelinePainter(unused, data, fonts, layout).needed_height();
+}
+
 float compact_timeline_height(const UiFonts& fonts) {
   RowLayout rows(fonts, true, false);
-  rows.place(rows.top_margin, 1);
+  rows.place(rows.top_margin, 1, 0);
   return rows.axis_bottom;
 }
 

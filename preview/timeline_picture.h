@@ -77,10 +77,25 @@ struct TimelineData {
 
 TimelineData timeline_data(const Shot& shot);
 
+/// A piece of the picture drawn, as the tests check it: what and where.
+struct TimelineDrawn {
+  enum class Kind { shot_text, stroke, lane_label, list_line, list_more };
+  Kind kind = Kind::shot_text;
+  std::string text;                       ///< as drawn (elided text ends in "…"); empty for a stroke diagram
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;   ///< px
+  int shot = -1;                          ///< shot_text and stroke: the section's index
+  const TimelineCameraSpan* span = nullptr;  ///< lane_label: the description it names
+};
+
 struct TimelineLayout {
   float x = 0, y = 0, width = 0, height = 0;  ///< px, the area to fill
   bool compact = false;                       ///< scrub bar: only the rows and the axis, no title, list or legend
   double cursor = -1;                         ///< s, a playhead drawn when >= 0
+  /// The height is timeline_height()'s: as many levels of event numbers and lanes of camera labels as
+  /// the crowding needs. Otherwise they take a share of the room the height leaves.
+  bool fit_all = false;
+  /// When set, the labels, the stroke diagrams and the list's lines are recorded here as they are drawn.
+  std::vector<TimelineDrawn>* drawn = nullptr;
 };
 
 /// Draws the timeline. Returns the x of time 0 and the pixels per second used (for hit testing).
@@ -91,6 +106,10 @@ struct TimelineAxis {
 };
 /// px a compact timeline needs with these fonts.
 float compact_timeline_height(const UiFonts& fonts);
+
+/// px a full timeline picture `width` px wide needs with these fonts (fit_all): every row with all its
+/// labels, the legend and the event list complete.
+float timeline_height(const TimelineData& data, const UiFonts& fonts, float width);
 
 TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiFonts& fonts,
                            const TimelineLayout& layout);
