@@ -195,7 +195,7 @@ OptionTable export_option_table(ExportOptions& o) {
        [&o](S n, S v, std::string& m) { return apply_loudness(o, n, v, m); }},
       {"--strict",
        "",
-       "accept only the original scene language: no comments, spin, pocket, param,\nrack, stroke, pot or camera keys",
+       kStrictHelp,
        {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",

@@ -207,7 +207,7 @@ OptionTable preview_option_table(PreviewOptions& o) {
        true, kOverlayNames},
       {"--strict",
        "",
-       "accept only the original scene language: no comments, spin, pocket, param,\nrack, stroke, pot or camera keys",
+       kStrictHelp,
        {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",

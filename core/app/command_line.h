@@ -85,6 +85,12 @@ std::optional<std::size_t> choice_index(std::string_view choices, std::string_vi
 /// --camera's values, for both programs' rows and apply_shared_option.
 inline constexpr std::string_view kCameraChoices = "auto|scene";
 
+/// --strict's help, for both programs' rows: each extension the scene parser rejects under --strict.
+inline constexpr std::string_view kStrictHelp =
+    "accept only the original scene language: no comments, spin, pocket,\n"
+    "param, rack, stroke, place, pot, second cue line (several shots) or\n"
+    "camera keys; a camera description is required";
+
 /// The usage text: `head`, then each shown row of `table` (an option as "  NAMES ARGUMENT" with its
 /// help from the 26th column on, a line of text as it is), then `tail`.
 std::string usage_text(std::string_view head, const OptionTable& table, std::string_view tail);

@@ -10,10 +10,30 @@
 #include "export_options.h"
 #include "preview_options.h"
 #include "option_rejection.h"
+#include "scene_parse.h"
 
 using namespace bsim;
 using bsim::test::export_rejection;
 using bsim::test::preview_rejection;
+
+namespace {
+
+/// A program's --help with each run of whitespace made one space (its help column wraps).
+template <class Options, class Parse>
+std::string flat_help(Parse parse) {
+  Options options;
+  std::string usage;
+  parse(std::vector<std::string>{"--help"}, options, usage);
+  std::string flat;
+  for (char c : usage)
+    if (c != ' ' && c != '\n')
+      flat += c;
+    else if (!flat.empty() && flat.back() != ' ')
+      flat += ' ';
+  return flat;
+}
+
+}  // namespace
 
 TEST_SUITE("shared options") {
   TEST_CASE("the same defaults") {
@@ -90,5 +110,37 @@ TEST_SUITE("shared options") {
     CHECK(apply_shared_option(reader, o, message) == SharedOption::not_shared);
     CHECK(message.empty());
     CHECK(unknown_option_message("--jobs") == "unknown option '--jobs' (see --help)");
+  }
+
+  TEST_CASE("--strict's help names each extension --strict rejects, in both programs") {
+    const std::string camera = "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n";
+    const std::string rolling = "ball 0 0 0 0.028575 1 0 0 1 0 0 0\n";  // set going by its line, as in the seed
+    const std::string still = "ball 0 0 0 0.028575 0 0 0 1 0 0 0\n";
+    const std::string seed = "cue 0 0\n" + rolling + camera;
+    const std::string stroked = "cue 0 0\nstroke 2 0 0 0\n" + still + camera;
+    // Each extension as --help names it, and a scene that uses it (the seed's form otherwise).
+    const std::vector<std::pair<std::string, std::string>> extensions = {
+        {"comments", "# a comment\n" + seed},
+        {"spin", seed + "spin 0 1 0 0\n"},
+        {"pocket", seed + "pocket 1.27 0.635 0 0.08\n"},
+        {"param", seed + "param mu_roll 0.01\n"},
+        {"rack", seed + "rack 9ball\n"},
+        {"stroke", stroked},
+        {"place", stroked + "cue 0 0\nstroke 2 0 0 0\nplace 0\n"},
+        {"pot", "cue 0 pot 1 2\n" + rolling + "ball 1 0.5 0 0.028575 0 0 0 1 0 0 0\n" + camera},
+        {"second cue line", stroked + "cue 0 90\nstroke 2 0 0 0\n"},
+        {"camera keys", "cue 0 0\n" + rolling + "camera\nevent start 0 0 hover 0 -2 2 0 0 0\nendcamera\n"},
+        {"camera description is required", "cue 0 0\n" + rolling},
+    };
+    const std::string help[] = {flat_help<ExportOptions>(parse_export_options),
+                                flat_help<PreviewOptions>(parse_preview_options)};
+    REQUIRE(parse_scene(seed, "seed", {.strict = true}).scene);
+    for (const auto& [name, text] : extensions) {
+      CAPTURE(name);
+      const ParseResult plain = parse_scene(text, "extension");
+      CHECK_MESSAGE(plain.scene, (plain.diagnostics.empty() ? "" : plain.diagnostics.front().message));
+      CHECK_FALSE(parse_scene(text, "extension", {.strict = true}).scene);
+      for (const std::string& usage : help) CHECK(usage.find(name) != std::string::npos);
+    }
   }
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Makes the Debian package (cpack -G DEB) into a temporary directory and checks its control fields
 # (dpkg-deb -f: Package, Version, Depends naming povray, ffmpeg and the libraries), its file list
-# (dpkg-deb -c) and that the packaged program runs.
+# (dpkg-deb -c: the manual pages gzip-compressed, the change log), that the packaged program runs and,
+# where lintian is installed (.ci/test installs it), that lintian finds no error and no warning.
 #   debian_package.sh BUILD_DIR VERSION
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -25,16 +26,27 @@ for package in povray povray-includes ffmpeg libosmesa6 libgl1 libglfw3 libsndfi
 done
 
 dpkg-deb -c "$deb" | awk '{print $NF}' > "$tmp/files"
-for file in ./usr/bin/billiards-export ./usr/bin/billiards-preview ./usr/share/man/man1/billiards-export.1 \
-            ./usr/share/man/man1/billiards-preview.1 ./usr/share/bash-completion/completions/billiards-export \
+for file in ./usr/bin/billiards-export ./usr/bin/billiards-preview ./usr/share/man/man1/billiards-export.1.gz \
+            ./usr/share/man/man1/billiards-preview.1.gz ./usr/share/bash-completion/completions/billiards-export \
             ./usr/share/bash-completion/completions/billiards-preview ./usr/share/billiards-sim/scenes/break.scn \
-            ./usr/share/doc/billiards-sim/copyright; do
+            ./usr/share/doc/billiards-sim/copyright ./usr/share/doc/billiards-sim/changelog.gz; do
   grep -qxF "$file" "$tmp/files" || fail "the package lacks $file"
 done
 # Nothing else in usr/bin (no test or generator program), nothing outside usr/.
 [ "$(grep -c '^\./usr/bin/.' "$tmp/files")" = 2 ] || fail "usr/bin holds: $(grep '^\./usr/bin/.' "$tmp/files")"
 grep -v '^\./usr/\|^\./$' "$tmp/files" && fail "files outside usr/"
 
+# No manual page left uncompressed.
+grep '^\./usr/share/man/.*\.[0-9]$' "$tmp/files" && fail "manual pages installed uncompressed"
+
 dpkg-deb -x "$deb" "$tmp/root"
 [ "$("$tmp/root/usr/bin/billiards-export" --version)" = "billiards-export $version" ] || fail "packaged program"
+
+# lintian's errors and warnings (the informational tags README lists are not shown by default).
+if command -v lintian > /dev/null; then
+  lintian --fail-on error,warning "$deb" > "$tmp/lintian.log" 2>&1 || { cat "$tmp/lintian.log"; fail "lintian"; }
+  if grep -q '^[EW]: ' "$tmp/lintian.log"; then cat "$tmp/lintian.log"; fail "lintian reports tags"; fi
+else
+  echo "lintian is not installed: the package's lintian check is skipped"
+fi
 echo "package $(basename "$deb"): ok"

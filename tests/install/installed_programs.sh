@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the build into a temporary prefix (cmake --install) and runs the installed programs from a
 # directory outside the source and build trees: --help, a snapshot, an --events-only export; checks that
-# the manual pages and bash completions are installed and name every option each program's --help lists,
-# and that the completion offers --quality's and --camera's values and the scene files.
+# the manual pages (gzip-compressed, as Debian installs them) and bash completions are installed and name
+# every option each program's --help lists, that the completion offers --quality's and --camera's values
+# and the scene files, that the change log's entry is this version and that every example scene is there.
 #   installed_programs.sh BUILD_DIR VERSION
 set -euo pipefail
 build=$(cd "$1" && pwd)
 version=$2
+src_dir=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/bsim-install.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -22,9 +24,16 @@ for program in billiards-export billiards-preview; do
   [ "$(command -v $program)" = "$prefix/bin/$program" ] || fail "$program is not the installed one"
   [ "$($program --version)" = "$program $version" ] || fail "$program --version: $($program --version)"
   $program --help > "$program.help" || fail "$program --help"
-  man=$prefix/share/man/man1/$program.1
+  # The manual page compressed as Debian installs one (gzip, no time stamp in its header): read it unpacked.
+  [ -s "$prefix/share/man/man1/$program.1.gz" ] || fail "no $prefix/share/man/man1/$program.1.gz"
+  [ ! -e "$prefix/share/man/man1/$program.1" ] || fail "$program.1 is installed uncompressed too"
+  gzip -t "$prefix/share/man/man1/$program.1.gz" || fail "$program.1.gz is not gzip"
+  [ "$(od -An -tu4 -j4 -N4 "$prefix/share/man/man1/$program.1.gz" | tr -d ' ')" = 0 ] ||
+    fail "$program.1.gz carries a time stamp"
+  man=$tmp/$program.1
+  gzip -dc "$prefix/share/man/man1/$program.1.gz" > "$man"
   completion=$prefix/share/bash-completion/completions/$program
-  [ -s "$man" ] || fail "no $man"
+  [ -s "$man" ] || fail "$program.1.gz is empty"
   [ -s "$completion" ] || fail "no $completion"
   grep -q "^\.TH \"${program^^}\" \"1\" .*billiards-sim $version" "$man" || fail "$man has no .TH of version $version"
   # Every option --help lists ("  -o, --output DIR   ...", "  --fps N   ..."): in the manual page as
@@ -37,6 +46,15 @@ for program in billiards-export billiards-preview; do
     [[ $offered == *" $option "* ]] || fail "the completion of $program does not offer $option"
   done
 done
+
+# The change log where Debian keeps a native package's, its latest entry this version.
+changelog=$prefix/share/doc/billiards-sim/changelog.gz
+[ -s "$changelog" ] || fail "no $changelog"
+gzip -dc "$changelog" | head -1 | grep -qxF "billiards-sim ($version) unstable; urgency=medium" ||
+  fail "the change log's first entry is not version $version: $(gzip -dc "$changelog" | head -1)"
+# Every example scene, and nothing else, in the scenes folder.
+[ "$(cd "$prefix/share/billiards-sim/scenes" && ls)" = "$(cd "$src_dir/scenes" && ls -- *.scn)" ] ||
+  fail "the installed scenes are $(ls "$prefix/share/billiards-sim/scenes")"
 
 # The completion's values: --quality's presets, --camera's and --overlay's words, the scene files.
 complete_words() {  # PROGRAM WORD... : what the completion offers for the last word
