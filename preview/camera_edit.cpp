@@ -125,7 +125,7 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
     const std::pair<int, int> which{timeline.shot_count() > 1 ? timeline.shot_at(d.time) : 0, d.ball};
     if (std::find(dropped.begin(), dropped.end(), which) != dropped.end()) continue;
     dropped.push_back(which);
-    moments.push_back({shot_key_text(timeline, which.first, CameraKeyKind::pocket, d.ball), d.time, -1});
+    moments.push_back({shot_key_text(timeline, which.first, CameraKeyKind::drop, d.ball), d.time, -1});
   }
   return moments;
 }

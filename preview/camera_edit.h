@@ -15,7 +15,7 @@
 namespace bsim {
 
 /// s: a description written within this of an event or pocket drop starts at that moment's key
-/// (`hit 0 5`, `pocket 3`, ...); further from every one it starts at `at T`. About a quarter of a
+/// (`hit 0 5`, `drop 3`, ...); further from every one it starts at `at T`. About a quarter of a
 /// second: a few frames either side of a contact, where a person pausing "on" it usually is.
 inline constexpr double kKeySnap = 0.25;
 
@@ -26,7 +26,7 @@ inline constexpr double kWrittenPre = 0.3, kWrittenPost = 0;
 
 /// A moment of the shot named the way a camera key names it.
 struct NamedMoment {
-  std::string key;  ///< "hit 0 5", "second cushion 3", "pocket 8", "cue", "at 2.4"
+  std::string key;  ///< "hit 0 5", "second cushion 3", "drop 8", "cue", "at 2.4"
   double time = 0;  ///< s, the instant the key resolves to
   int event = -1;   ///< the numbered event it is or falls within; -1 for a pocket drop or `at T`
 };

@@ -33,7 +33,8 @@ std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& pa
 }
 
 std::string camera_key_label(const std::string& key, const std::vector<int>& painted) {
-  // The tokens after hit, cushion or pocket are ball indices; the rest stays as written.
+  // The tokens after hit, cushion or drop (or its older spelling pocket) are ball indices; the rest stays
+  // as written.
   std::string out;
   bool balls = false;
   std::size_t start = 0;
@@ -44,7 +45,7 @@ std::string camera_key_label(const std::string& key, const std::vector<int>& pai
     if (!out.empty()) out += ' ';
     const bool number = !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
     out += balls && number && word.size() < 6 ? ball_index_text(std::stoi(word), painted) : word;
-    if (word == "hit" || word == "cushion" || word == "pocket") balls = true;
+    if (word == "hit" || word == "cushion" || word == "drop" || word == "pocket") balls = true;
     start = end + 1;
   }
   return out;

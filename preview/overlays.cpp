@@ -493,7 +493,11 @@ TableLabels table_labels(const OverlayFrame& f) {
     away.z() = 0;
     away = away.norm() > 0 ? away.normalized() : Vec3(0, 1, 0);
     const Vec3 at = pocket.center + away * (pocket.radius + 0.04);
-    labels.add(Vec3(at.x(), at.y(), layout.rail_top), "pocket " + std::to_string(i), pocket_color());
+    // Its number, and on the standard table the name `pot` takes for it: "pocket 0" over "top-left".
+    const std::string number = "pocket " + std::to_string(i);
+    labels.add(Vec3(at.x(), at.y(), layout.rail_top),
+               standard_pocket_set(scene.pockets) ? number + "\n" + std::string(standard_pocket_words()[i]) : number,
+               pocket_color());
   }
   // Each ball's index in file order (what `cue`, `look`, `follow` and `spin` refer to), with its
   // painted number beside it where the two differ, as the timeline writes it: "1 (3)".

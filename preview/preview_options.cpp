@@ -197,7 +197,7 @@ OptionTable preview_option_table(PreviewOptions& o) {
       {"--fps", "N", "animatic frames per second, 1 to 1000 (default: 30)", {}},
       {"--overlay", "LIST",
        "draw extras, comma-separated: paths, events, camera, table\n"
-       "(the rails', pockets' and balls' numbers), aim (for 'cue I pot B P': the\n"
+       "(the rails' and balls' numbers, the pockets' names), aim (for 'cue I pot B P': the\n"
        "ghost ball, the aim line, the ball's path to the pocket) (default: none)",
        [&o](S n, S v, std::string& m) {
          if (!parse_overlays(v, o.overlays))

@@ -267,7 +267,7 @@ std::vector<LegendKey> legend_keys(bool script_failed) {
                                  {event_color(EventType::cue), "cue", false},
                                  {event_color(EventType::ball_ball), "ball-ball", false},
                                  {event_color(EventType::ball_rail), "ball-rail", false},
-                                 {pocket_color(), "pocket drop (its key: pocket I)", false},
+                                 {pocket_color(), "ball drops in a pocket (its key: drop I)", false},
                                  {camera_mode_color(CameraMode::follow), "follow", true},
                                  {camera_mode_color(CameraMode::look), "look", true},
                                  {camera_mode_color(CameraMode::hover), "hover", true},
@@ -284,7 +284,7 @@ struct ListEntry {
 };
 
 // The event list's lines in time order, the pocket drops among the events by their key:
-// "  4.900 s   pocket 3 (12): into pocket 2".
+// "  4.900 s   drop 3 (12): into the top-right corner (pocket 2)".
 std::vector<ListEntry> event_list_entries(const TimelineData& data) {
   std::vector<ListEntry> entries;
   std::size_t drop = 0;
@@ -293,8 +293,8 @@ std::vector<ListEntry> event_list_entries(const TimelineData& data) {
       const TimelineDrop& d = data.drops[drop];
       char buffer[48];
       std::snprintf(buffer, sizeof buffer, "%8.3f s   ", d.time);
-      entries.push_back({nullptr, buffer + ("pocket " + ball_index_text(d.ball, data.painted)) + ": into pocket " +
-                                      std::to_string(d.pocket)});
+      entries.push_back(
+          {nullptr, buffer + ("drop " + ball_index_text(d.ball, data.painted)) + ": into " + d.pocket_name});
     }
   };
   for (const TimelineEventMark& e : data.events) {
@@ -581,9 +581,9 @@ class TimelinePainter {
       list_.AddLine(ImVec2(x, mid + s), ImVec2(x, axis - r), with_alpha(pocket_color(), 70), 1.f);
       list_.AddQuadFilled(ImVec2(x, axis - r), ImVec2(x + r, axis), ImVec2(x, axis + r), ImVec2(x - r, axis),
                           pocket_color());
-      // Named by its key, as a camera description would start at it: "pocket 3 (12)".
+      // Named by its key, as a camera description would start at it: "drop 3 (12)".
       const std::string label =
-          layout_.compact ? ball_index_text(d.ball, data_.painted) : "pocket " + ball_index_text(d.ball, data_.painted);
+          layout_.compact ? ball_index_text(d.ball, data_.painted) : "drop " + ball_index_text(d.ball, data_.painted);
       const float w = text_size(fonts_.small, small, label).x;
       if (drop_levels.place(x + s + 2, w, 6) == 0 && x + s + 2 + w < across_.x1)
         list_.AddText(fonts_.small, small, ImVec2(x + s + 2, text_y), pocket_color(), label.c_str());
@@ -879,8 +879,8 @@ std::vector<TimelineShotSection> shot_sections(const Shot& shot, const std::vect
     char buffer[96];
     std::snprintf(buffer, sizeof buffer, "%.1f\xC2\xB0\nstrike at %.2f s", cue.heading_deg, s.cue);
     s.detail = "cue " + ball_index_text(cue.target, painted) +
-               (cue.aims() ? " pot " + ball_index_text(cue.pot_ball, painted) + " into pocket " +
-                                 std::to_string(cue.pot_pocket) + " at "
+               (cue.aims() ? " pot " + ball_index_text(cue.pot_ball, painted) + " into " +
+                                 pocket_short_name(shot.scene.pockets, cue.pot_pocket) + " at "
                            : " at ") +
                buffer;
     s.stroke = cue.stroke;
@@ -913,7 +913,7 @@ TimelineData timeline_data(const Shot& shot) {
   data.duration = timeline.duration();
   int pocketed = 0;
   for (const PocketDrop& d : timeline.pocket_drops()) {
-    data.drops.push_back({d.time, d.ball, d.pocket});
+    data.drops.push_back({d.time, d.ball, d.pocket, pocket_name(shot.scene.pockets, d.pocket)});
     ++pocketed;
   }
   char buffer[160];

@@ -28,6 +28,7 @@ struct TimelineDrop {
   double time = 0;  ///< s
   int ball = 0;     ///< file-order index
   int pocket = 0;
+  std::string pocket_name;  ///< the pocket in words: "the top-right corner (pocket 2)" (scene.h: pocket_name)
 };
 
 struct TimelineCameraSpan {
@@ -44,7 +45,7 @@ struct TimelineCameraSpan {
 struct TimelineShotSection {
   double start = 0, cue = 0, end = 0;  ///< s: the stick may come in, the strike, the next shot's start (or the end)
   std::string label;                   ///< "shot 2"
-  std::string detail;                  ///< "cue 0 pot 2 into pocket 3 at 41.2°\nstrike at 10.87 s" (two lines)
+  std::string detail;                  ///< "cue 0 pot 2 into top-right corner at 41.2°\nstrike at 10.87 s" (two lines)
   std::optional<Stroke> stroke;        ///< drawn as a small diagram in its section
 };
 

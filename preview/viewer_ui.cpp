@@ -128,8 +128,9 @@ void event_list(ViewerState& state, float window_height) {
       ImGui::PopStyleColor();
     }
     for (const PocketDrop& d : state.shot->timeline.pocket_drops()) {
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pocket_color()), "     %7.3f s  pocket %s: into pocket %d",
-                         d.time, ball_index_text(d.ball, state.timeline.painted).c_str(), d.pocket);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pocket_color()), "     %7.3f s  drop %s: into %s", d.time,
+                         ball_index_text(d.ball, state.timeline.painted).c_str(),
+                         pocket_name(state.shot->scene.pockets, d.pocket).c_str());
     }
   }
   ImGui::End();

@@ -127,8 +127,7 @@ class Solver {
     result_.entry = target_at + unit_at(want_) * std::max(0.0, window_.distance);
     result_.ghost = target_at - unit_at(want_) * (2 * R_);
     if (!window_.open())
-      return fail("the jaws of pocket " + std::to_string(pocket_) + " close it to " + ball_name(written_, target_) +
-                  " from where it lies");
+      return fail("the pocket's jaws close it to " + ball_name(written_, target_) + " from where it lies");
     const double cut = std::abs(wrap(want_ - angle_of(result_.ghost - struck_at))) * 180 / kPi;
     if (cut > kMaxCutDeg || (result_.ghost - struck_at).norm() < 1e-9)
       return fail("the cut is thinner than " + fmt_deg(kMaxCutDeg) + " (it would need " + fmt_deg(cut) + ")");
@@ -143,8 +142,7 @@ class Solver {
     // Nothing pots: a ball in the way (a swerve may still get round one, so this is asked only now), or
     // what the ball did at the best heading.
     if (const std::string why = blocked(target_at, result_.entry, {target_}); !why.empty())
-      return fail("the path of " + ball_name(written_, target_) + " to pocket " + std::to_string(pocket_) +
-                  " is blocked by " + why);
+      return fail("the path of " + ball_name(written_, target_) + " to the pocket is blocked by " + why);
     if (const std::string why = blocked(struck_at, result_.ghost, {written_.cue().target, target_}); !why.empty())
       return fail("the path of " + struck_name() + " to " + ball_name(written_, target_) + " is blocked by " + why);
     return fail(why_not(best));
@@ -164,8 +162,9 @@ class Solver {
   bool grazed_ = false;  ///< the secant wanted a thinner cut than the struck ball can make
 
   AimResult fail(std::string why) {
-    result_.failure = "no heading pots " + ball_name(written_, target_) + " in pocket " + std::to_string(pocket_) +
-                      ": " + std::move(why);
+    result_.failure =
+        "no heading pots " + ball_name(written_, target_) + " in " + pocket_name(written_.pockets, pocket_) + ": " +
+        std::move(why);
     result_.simulations = simulations_;
     return result_;
   }
@@ -336,7 +335,27 @@ void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
   struck.cue().heading_deg = heading_deg;
 }
 
-AimResult aim_cue(const Scene& scene) { return Solver(scene).run(); }
+std::vector<int> pockets_that_take(const Scene& scene) {
+  std::vector<int> found;
+  Scene other = scene;
+  for (int k = 0; k < static_cast<int>(scene.pockets.size()); ++k) {
+    if (k == scene.cue().pot_pocket) continue;
+    other.cue().pot_pocket = k;
+    if (Solver(other).run().heading_deg) found.push_back(k);
+  }
+  return found;
+}
+
+AimResult aim_cue(const Scene& scene) {
+  AimResult result = Solver(scene).run();
+  if (result.heading_deg) return result;
+  // What the user can do instead: the pockets this stroke does pot the ball in, from where it lies.
+  std::string others;
+  for (int k : pockets_that_take(scene)) others += (others.empty() ? "" : ", ") + pocket_name(scene.pockets, k);
+  result.failure += others.empty() ? "\n  no other pocket takes it from here either"
+                                   : "\n  other pockets take it from here: " + others;
+  return result;
+}
 
 std::string apply_aim(Scene& scene) {
   if (!scene.cue().aims()) return "";

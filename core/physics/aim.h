@@ -10,6 +10,7 @@
 // `ai/aim/core.py`, `ai/pot/core.py`), which ignore throw; correcting by simulation is this program's.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene.h"
 
@@ -40,8 +41,14 @@ struct AimResult {
 inline constexpr double kMaxCutDeg = 89.0;
 
 /// The heading for `scene.cue` (which must aim: Cue::aims()), from `scene` as parsed (validated: its
-/// ball and pocket exist). Deterministic: the same scene gives the same heading to the last bit.
+/// ball and pocket exist). Deterministic: the same scene gives the same heading to the last bit. When
+/// nothing pots, `failure` is the reason and, on a line of its own, the other pockets the same stroke
+/// does pot the ball in (pockets_that_take), in words.
 AimResult aim_cue(const Scene& scene);
+
+/// The pockets other than the one `scene.cue` names that the solver finds a heading for: the ball to pot
+/// drops into each with the cue's own stroke. In the pockets' order.
+std::vector<int> pockets_that_take(const Scene& scene);
 
 /// For a scene whose cue aims: finds the heading (aim_cue) and strikes `scene` with it (strike_heading),
 /// so that simulate(scene) plays the aimed shot. Returns the failure (empty when it pots, and for a

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "aim.h"
 #include "number_format.h"
@@ -32,20 +33,48 @@ int touching(const std::vector<Ball>& balls, const Vec3& p, int self, double rad
   return -1;
 }
 
-/// "after shot 2 the balls stood: 0 (the cue ball) at (-0.412, 0.118), ...; down: the 1 (pocket 4)".
-std::string where_balls_were(const std::vector<Ball>& balls, int after_shot) {
-  std::string on, down;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    const int number = balls[i].number;
-    const std::string name = number == 0 ? "the cue ball" : "the " + std::to_string(number);
-    if (balls[i].pocket >= 0) {
-      down += (down.empty() ? "" : ", ") + name + " (pocket " + std::to_string(balls[i].pocket) + ")";
+/// The centre's distance from the segment a-b on the bed, m.
+double off_line(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = flat(b - a), ap = flat(p - a);
+  const double t = ab.squaredNorm() > 0 ? std::clamp(ap.dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (ap - t * ab).norm();
+}
+
+/// "the cue ball", "the 7": a ball by its painted number.
+std::string painted(const Ball& ball) {
+  return ball.number == 0 ? "the cue ball" : "the " + std::to_string(ball.number);
+}
+
+/// Where the balls stood before shot `k` (from 0) that a failed `pot` is about, a line each, for a
+/// message: the struck ball, the ball to pot and any ball near the lines from one to the other and on
+/// to the pocket; the rest counted; then the balls down, a line per pocket.
+std::string where_balls_were(const Scene& shot, const Cue& cue, int k) {
+  const double reach = 4 * shot.physics.ball_radius;  // a ball this near a line may be in the way
+  const Vec3& struck = shot.ball(cue.target).position;
+  const Vec3& target = shot.ball(cue.pot_ball).position;
+  const Vec3& pocket = shot.pockets[static_cast<std::size_t>(cue.pot_pocket)].center;
+  std::string near;
+  std::vector<std::string> down(shot.pockets.size());
+  int elsewhere = 0;
+  for (int i = 0; i < static_cast<int>(shot.balls.size()); ++i) {
+    const Ball& ball = shot.ball(i);
+    if (ball.pocket >= 0) {
+      std::string& in = down[static_cast<std::size_t>(ball.pocket)];
+      in += (in.empty() ? "" : ", ") + painted(ball);
+    } else if (i == cue.target || i == cue.pot_ball || off_line(ball.position, struck, target) < reach ||
+               off_line(ball.position, target, pocket) < reach) {
+      near += "\n    " + ball_name(shot, i) + " at " + xy(ball.position);
     } else {
-      on += (on.empty() ? "" : ", ") + std::to_string(i) + " (" + name + ") at " + xy(balls[i].position);
+      ++elsewhere;
     }
   }
-  return "after shot " + std::to_string(after_shot) + " the balls stood: " + (on.empty() ? "none on the bed" : on) +
-         (down.empty() ? "" : "; down: " + down);
+  std::string out = "\n  after shot " + std::to_string(k) + " the balls stood:" + near;
+  if (elsewhere > 0) out += "\n    and " + std::to_string(elsewhere) + (elsewhere == 1 ? " other" : " others") +
+                            " on the bed, away from the shot's paths";
+  std::string pockets;
+  for (std::size_t p = 0; p < down.size(); ++p)
+    if (!down[p].empty()) pockets += "\n    in " + pocket_name(shot.pockets, static_cast<int>(p)) + ": " + down[p];
+  return out + (pockets.empty() ? "" : "\n  down:" + pockets);
 }
 
 /// Lays the shots' own simulations end to end.
@@ -185,15 +214,15 @@ PlayResult play(Scene& scene) {
       std::string why;
       std::optional<double> heading;
       if (target.pocket >= 0) {
-        why = shot_name + " cannot pot " + ball_name(scene, cue.pot_ball) + ": it is already down (pocket " +
-              std::to_string(target.pocket) + ")";
+        why = shot_name + " cannot pot " + ball_name(scene, cue.pot_ball) + ": it is already down, in " +
+              pocket_name(scene.pockets, target.pocket);
       } else {
         const AimResult aim = aim_cue(shot);
         heading = aim.heading_deg;
         if (!heading) why = (k == 0 ? "" : shot_name + ": ") + aim.failure;
       }
       if (!heading) {
-        if (k > 0) why += "; " + where_balls_were(shot.balls, k);
+        if (k > 0) why += where_balls_were(shot, cue, k);
         result.failure = PlayFailure{k, cue.loc, why};
         break;
       }

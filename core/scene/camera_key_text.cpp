@@ -18,8 +18,11 @@ struct KindWord {
 /// The kinds in the order messages list them.
 constexpr KindWord kKindWords[] = {
     {CameraKeyKind::start, "start"}, {CameraKeyKind::cue, "cue"},         {CameraKeyKind::end, "end"},
-    {CameraKeyKind::hit, "hit"},     {CameraKeyKind::cushion, "cushion"}, {CameraKeyKind::pocket, "pocket"},
+    {CameraKeyKind::hit, "hit"},     {CameraKeyKind::cushion, "cushion"}, {CameraKeyKind::drop, "drop"},
     {CameraKeyKind::at, "at"}};
+
+/// The older spelling of `drop I`, read as it and never written: `pocket I` (a ball I, not a pocket).
+constexpr KindWord kOlderDropWord = {CameraKeyKind::drop, "pocket"};
 
 /// The ordinals that pick a later hit or cushion contact: `second` is 2, ..., `fifth` 5; `last` the last.
 constexpr std::string_view kOrdinalWords[] = {"second", "third", "fourth", "fifth", "last"};
@@ -47,6 +50,7 @@ std::vector<std::string_view> split_words(std::string_view text) {
 std::optional<CameraKeyKind> camera_key_kind(std::string_view word) {
   for (const KindWord& k : kKindWords)
     if (k.word == word) return k.kind;
+  if (word == kOlderDropWord.word) return kOlderDropWord.kind;
   return std::nullopt;
 }
 
@@ -72,7 +76,7 @@ bool takes_ordinal(CameraKeyKind kind) { return kind == CameraKeyKind::hit || ki
 
 int ball_operands(CameraKeyKind kind) {
   if (kind == CameraKeyKind::hit) return 2;
-  return kind == CameraKeyKind::cushion || kind == CameraKeyKind::pocket ? 1 : 0;
+  return kind == CameraKeyKind::cushion || kind == CameraKeyKind::drop ? 1 : 0;
 }
 
 bool takes_seconds(CameraKeyKind kind) { return kind == CameraKeyKind::at; }
@@ -80,6 +84,7 @@ bool takes_seconds(CameraKeyKind kind) { return kind == CameraKeyKind::at; }
 std::vector<std::string_view> camera_key_first_words() {
   std::vector<std::string_view> words;
   for (const KindWord& k : kKindWords) words.push_back(k.word);
+  words.push_back(kOlderDropWord.word);
   words.insert(words.end(), std::begin(kOrdinalWords), std::end(kOrdinalWords));
   words.push_back(kShotWord);
   return words;
@@ -88,7 +93,8 @@ std::vector<std::string_view> camera_key_first_words() {
 std::string camera_key_list() {
   std::string out;
   for (const KindWord& k : kKindWords) out.append(out.empty() ? "" : ", ").append(k.word);
-  return out + ", with second, third, fourth, fifth or last before hit or cushion, and 'shot K' before any";
+  return out + " ('pocket I' is the older spelling of 'drop I'), with second, third, fourth, fifth or last before "
+               "hit or cushion, and 'shot K' before any";
 }
 
 std::string camera_key_text(const CameraKey& key, int event) {

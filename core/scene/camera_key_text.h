@@ -13,10 +13,12 @@
 
 namespace bsim {
 
-/// The kind a key's word names ("start", "hit", ...); none for any other word, `event` included
-/// (an event number is written as the number alone).
+/// The kind a key's word names ("start", "hit", ...; "drop" and its older spelling "pocket" both name
+/// CameraKeyKind::drop); none for any other word, `event` included (an event number is written as the
+/// number alone).
 std::optional<CameraKeyKind> camera_key_kind(std::string_view word);
-/// The word of a kind ("hit"); empty for CameraKeyKind::event.
+/// The word of a kind ("hit", "drop": keys are written with it, never with an older spelling); empty
+/// for CameraKeyKind::event.
 std::string_view camera_key_word(CameraKeyKind kind);
 
 /// The ordinal a word before `hit` or `cushion` names: 2 for "second" to 5 for "fifth",
@@ -26,7 +28,7 @@ std::optional<int> camera_key_ordinal(std::string_view word);
 std::string_view camera_key_ordinal_word(int ordinal);
 /// Whether an ordinal word may stand before the kind: hit and cushion.
 bool takes_ordinal(CameraKeyKind kind);
-/// How many ball indices follow the kind's word: 2 for hit, 1 for cushion and pocket, else 0.
+/// How many ball indices follow the kind's word: 2 for hit, 1 for cushion and drop, else 0.
 int ball_operands(CameraKeyKind kind);
 /// Whether seconds follow the kind's word: at.
 bool takes_seconds(CameraKeyKind kind);
@@ -34,9 +36,9 @@ bool takes_seconds(CameraKeyKind kind);
 /// The word before a shot number that makes a key count within that shot: `shot 2 cue`.
 inline constexpr std::string_view kShotWord = "shot";
 
-/// Every word a key may start with: the kinds' words, then the ordinals, then kShotWord.
+/// Every word a key may start with: the kinds' words, the older "pocket", then the ordinals, then kShotWord.
 std::vector<std::string_view> camera_key_first_words();
-/// The keys for a message: "start, cue, end, hit, cushion, pocket, at, with second, ... before hit or cushion".
+/// The keys for a message: "start, cue, end, hit, cushion, drop, at ('pocket I' is ...), with second, ...".
 std::string camera_key_list();
 
 /// A key as it is written after `event`: "start", "second hit 0 5", "last cushion 3", "at 1.5" (its

@@ -1,6 +1,38 @@
 #include "scene.h"
 
+#include <array>
+
 namespace bsim {
+
+namespace {
+
+/// The standard pockets in their numbering's order: the word typed, where it is, and its kind.
+struct StandardPocketName {
+  std::string_view word;   ///< "top-right"
+  std::string_view where;  ///< "top-right", "top"
+  bool corner;
+};
+constexpr std::array<StandardPocketName, 6> kStandardPocketNames = {{{"top-left", "top-left", true},
+                                                                     {"top-side", "top", false},
+                                                                     {"top-right", "top-right", true},
+                                                                     {"bottom-right", "bottom-right", true},
+                                                                     {"bottom-side", "bottom", false},
+                                                                     {"bottom-left", "bottom-left", true}}};
+
+/// Other words for the side pockets: the table's numbering calls them the middle ones.
+struct PocketAlias {
+  std::string_view word;
+  int pocket;
+};
+constexpr PocketAlias kPocketAliases[] = {{"top-middle", 1}, {"bottom-middle", 4}};
+
+/// The standard name's entry for pocket `k` of `pockets`, or none (a scene's own pockets, no such pocket).
+const StandardPocketName* standard_name(const std::vector<Pocket>& pockets, int k) {
+  if (k < 0 || k >= static_cast<int>(kStandardPocketNames.size()) || !standard_pocket_set(pockets)) return nullptr;
+  return &kStandardPocketNames[static_cast<std::size_t>(k)];
+}
+
+}  // namespace
 
 std::vector<Rail> standard_rails() {
   const TableSpec& t = kStandardTable;
@@ -16,6 +48,44 @@ std::vector<Pocket> standard_pockets() {
   const double x = t.half_length, y = t.half_width, c = t.corner_pocket_radius, s = t.side_pocket_radius;
   auto pocket = [](double px, double py, double r) { return Pocket{Vec3(px, py, 0), r, {}}; };
   return {pocket(-x, y, c), pocket(0, y, s), pocket(x, y, c), pocket(x, -y, c), pocket(0, -y, s), pocket(-x, -y, c)};
+}
+
+std::vector<std::string_view> standard_pocket_words(bool aliases) {
+  std::vector<std::string_view> words;
+  for (const StandardPocketName& n : kStandardPocketNames) words.push_back(n.word);
+  if (aliases)
+    for (const PocketAlias& a : kPocketAliases) words.push_back(a.word);
+  return words;
+}
+
+std::optional<int> standard_pocket_number(std::string_view word) {
+  for (const PocketAlias& a : kPocketAliases)
+    if (a.word == word) return a.pocket;
+  for (std::size_t k = 0; k < kStandardPocketNames.size(); ++k)
+    if (kStandardPocketNames[k].word == word) return static_cast<int>(k);
+  return std::nullopt;
+}
+
+bool standard_pocket_set(const std::vector<Pocket>& pockets) {
+  const std::vector<Pocket> standard = standard_pockets();
+  if (pockets.size() != standard.size()) return false;
+  for (std::size_t k = 0; k < standard.size(); ++k)
+    if (pockets[k].loc.known() || pockets[k].center != standard[k].center || pockets[k].radius != standard[k].radius)
+      return false;
+  return true;
+}
+
+std::string pocket_name(const std::vector<Pocket>& pockets, int pocket) {
+  const std::string number = "pocket " + std::to_string(pocket);
+  const StandardPocketName* n = standard_name(pockets, pocket);
+  if (!n) return number;
+  return "the " + std::string(n->where) + (n->corner ? " corner (" : " side pocket (") + number + ")";
+}
+
+std::string pocket_short_name(const std::vector<Pocket>& pockets, int pocket) {
+  const StandardPocketName* n = standard_name(pockets, pocket);
+  if (!n) return "pocket " + std::to_string(pocket);
+  return std::string(n->where) + (n->corner ? " corner" : " side");
 }
 
 }  // namespace bsim

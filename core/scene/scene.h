@@ -3,6 +3,7 @@
 // source location of its tokens so that checks made after simulation can still cite the file.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "check.h"
@@ -79,15 +80,16 @@ struct Cue {
 enum class CameraMode { hover, look, follow };
 
 /// What a camera description starts at: the seed's event number, or a key naming a moment of the
-/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, pocket I, at T, each
+/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, drop I (older spelling
+/// pocket I), at T, each
 /// optionally after `shot K` to count within the K-th shot.
-enum class CameraKeyKind { event, start, cue, end, hit, cushion, pocket, at };
+enum class CameraKeyKind { event, start, cue, end, hit, cushion, drop, at };
 
 struct CameraKey {
   static constexpr int kLast = -1;  ///< ordinal of `last`
   CameraKeyKind kind = CameraKeyKind::event;
   int ordinal = 1;         ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
-  int a = -1, b = -1;      ///< hit: the two balls as written; cushion/pocket: the ball in a (file-order indices)
+  int a = -1, b = -1;      ///< hit: the two balls as written; cushion/drop: the ball in a (file-order indices)
   double seconds = 0;      ///< at: s after the start of the shot (as text: camera_key_text.h)
   SourceLoc a_loc, b_loc;  ///< the ball index tokens
   /// `shot K` before the key (an extension): the 0-based shot it counts within (K - 1); -1 without
@@ -146,5 +148,23 @@ struct Scene {
 /// The standard 9-foot table's (kStandardTable's) cushions and pockets, in the spec's numbering.
 std::vector<Rail> standard_rails();
 std::vector<Pocket> standard_pockets();
+
+/// Pockets in words. The standard table's six have names by where they are (top is +y, right +x, as
+/// the table is seen from above); a scene's own `pocket` lines have only their numbers.
+///
+/// The words a pocket number may be written as (`cue 0 pot 3 top-right`), for pocket 0 to 5 in order:
+/// top-left, top-side, top-right, bottom-right, bottom-side, bottom-left; with `aliases`, then
+/// top-middle and bottom-middle.
+std::vector<std::string_view> standard_pocket_words(bool aliases = false);
+/// The standard pocket a word names: one of standard_pocket_words(), or the alias top-middle or
+/// bottom-middle (the side pockets, as the table's numbering calls them); none for any other word.
+std::optional<int> standard_pocket_number(std::string_view word);
+/// Whether `pockets` are the standard table's six (no `pocket` line of the scene's own).
+bool standard_pocket_set(const std::vector<Pocket>& pockets);
+/// A pocket as messages and pictures name it: "the top-right corner (pocket 2)", "the bottom side
+/// pocket (pocket 4)" on the standard table; "pocket 7" for a scene's own pocket lines.
+std::string pocket_name(const std::vector<Pocket>& pockets, int pocket);
+/// The same, shorter, for a picture's small labels: "top-right corner", "bottom side"; "pocket 7".
+std::string pocket_short_name(const std::vector<Pocket>& pockets, int pocket);
 
 }  // namespace bsim

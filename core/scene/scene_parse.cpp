@@ -250,11 +250,7 @@ class Parser {
       if (options_.strict) fail(pot.loc, "'pot' is an extension that --strict rejects");
       c.heading_loc = pot.loc;
       c.pot_ball = ball_index("the ball to pot", c.pot_ball_loc);
-      const long long pocket = integer("the pocket to pot into", &c.pot_pocket_loc);
-      if (pocket < 0)
-        fail(c.pot_pocket_loc,
-             "expected a pocket number of 0 or more for 'pot', found " + quote_token(lexed_.tokens[pos_ - 1].text));
-      c.pot_pocket = static_cast<int>(std::min<long long>(pocket, INT_MAX));
+      c.pot_pocket = pot_pocket(c.pot_pocket_loc);
     } else {
       c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
     }
@@ -266,6 +262,26 @@ class Parser {
     if (!map_.has_cue) scene_.cues.clear();  // the default cue of a scene built in code
     scene_.cues.push_back(c);
     map_.has_cue = true;
+  }
+
+  /// The pocket after `pot B`: its number, or a standard pocket's name (top-right); a name on a scene
+  /// with its own pocket lines is an error in finish(), once every line is read.
+  int pot_pocket(SourceLoc& where) {
+    const Token& t = take("the pocket to pot into (its number, or a name such as top-right)");
+    where = t.loc;
+    long long value = 0;
+    if (parse_integer(t.text, value)) {
+      if (value < 0) fail(where, "expected a pocket number of 0 or more for 'pot', found " + quote_token(t.text));
+      return static_cast<int>(std::min<long long>(value, INT_MAX));
+    }
+    if (const std::optional<int> named = standard_pocket_number(t.text)) {
+      named_pockets_.push_back(t.loc);
+      return *named;
+    }
+    std::string names;
+    for (std::string_view w : standard_pocket_words()) names.append(names.empty() ? "" : ", ").append(w);
+    fail_at_value(t, "expected the pocket to pot into, its number or its name (" + names + "), found " +
+                         quote_token(t.text) + did_you_mean(t.text, standard_pocket_words(true)));
   }
 
   /// `place <ball> [<x> <y>]` under a later shot's `cue` line: the ball is put at rest there before that
@@ -591,7 +607,7 @@ class Parser {
           fail(key.b_loc, "expected two different balls for 'hit', found ball " + std::to_string(key.a) + " twice");
         break;
       case CameraKeyKind::cushion: key.a = ball_index("the ball that meets the cushion", key.a_loc); break;
-      case CameraKeyKind::pocket: key.a = ball_index("the pocketed ball", key.a_loc); break;
+      case CameraKeyKind::drop: key.a = ball_index("the pocketed ball", key.a_loc); break;
       case CameraKeyKind::at: {
         SourceLoc loc;
         key.seconds = number("the seconds after the start of the shot", &loc);
@@ -622,6 +638,12 @@ class Parser {
       error(scene_.camera_loc, "the camera description has no 'endcamera'; expected 'endcamera', found end of file");
     for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
     if (scene_.rails.empty()) scene_.rails = standard_rails();
+    if (!scene_.pockets.empty())
+      for (const SourceLoc& loc : named_pockets_)
+        error(loc, "pocket names name the standard table's six pockets, and this scene has its own 'pocket' lines "
+                   "(the first on line " +
+                       std::to_string(scene_.pockets.front().loc.line) + "): give the pocket's number, 0 to " +
+                       std::to_string(scene_.pockets.size() - 1) + " in file order");
     if (scene_.pockets.empty()) scene_.pockets = standard_pockets();
     if (rack_) add_rack();
     for (std::size_t i = 0; i < map_.spins.size(); ++i) {
@@ -690,6 +712,7 @@ class Parser {
   std::optional<RackLine> rack_;
   std::map<std::string_view, int> param_lines_;
   std::vector<std::pair<std::string_view, double>> params_;
+  std::vector<SourceLoc> named_pockets_;  ///< each pocket written by name after `pot`
 };
 
 }  // namespace

@@ -106,9 +106,11 @@ class Validator {
     if (static_cast<std::size_t>(cue.pot_pocket) >= scene_.pockets.size())
       error(cue.pot_pocket_loc, "expected a pocket number from 0 to " + std::to_string(scene_.pockets.size() - 1) +
                                     " (the table has " + plural(scene_.pockets.size(), "pocket") +
-                                    ", numbered as in the README's standard table or by their order in the file), "
-                                    "found " +
-                                    std::to_string(cue.pot_pocket));
+                                    (standard_pocket_set(scene_.pockets)
+                                         ? ", numbered as in the README's standard table, or a pocket's name such "
+                                           "as top-right), "
+                                         : ", numbered by their order in the file), ") +
+                                    "found " + std::to_string(cue.pot_pocket));
     if (ball_exists(cue.target) && !cue.stroke) {
       const Vec3& v = scene_.balls[static_cast<std::size_t>(cue.target)].velocity;
       if (std::hypot(v.x(), v.y()) == 0)
@@ -162,8 +164,9 @@ class Validator {
       const Pocket& pocket = scene_.pockets[k];
       const Vec3 d = p - pocket.center;
       if (std::hypot(d.x(), d.y()) < pocket.radius)
-        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over pocket " + std::to_string(k) +
-                                       line_of(pocket.loc) + " and will drop into it");
+        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over " +
+                                       pocket_name(scene_.pockets, static_cast<int>(k)) + line_of(pocket.loc) +
+                                       " and will drop into it");
     }
   }
 

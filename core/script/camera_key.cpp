@@ -139,7 +139,7 @@ void resolve_in(const CameraKey& key, const Timeline& timeline, const Scope& sco
               scope.where);
       return;
     }
-    case CameraKeyKind::pocket:
+    case CameraKeyKind::drop:
       r.instant = drop(timeline, scope, key.a);
       if (!r.instant) never("ball " + std::to_string(key.a) + " drops into no pocket" + scope.where);
       return;

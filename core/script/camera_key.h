@@ -21,7 +21,7 @@ struct KeyInstant {
 
 struct KeyResolution {
   std::optional<KeyInstant> instant;  ///< none when the shot never reaches it
-  std::string problem;                ///< why not, as a message ("pocket 3 never happens: ...")
+  std::string problem;                ///< why not, as a message ("drop 3 never happens: ...")
   SourceLoc where;                    ///< the token the problem is about
 };
 

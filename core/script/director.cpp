@@ -488,7 +488,7 @@ std::optional<Moment> Director::settle(int subject, double after, const Stroke& 
   if (stroke.end - after < 2 * kMinDescriptionSeconds) return std::nullopt;
   const double earliest = after + kMinDescriptionSeconds, latest = stroke.end - kMinDescriptionSeconds;
   std::vector<CameraShot> options;
-  if (std::isfinite(drop_time(subject, stroke))) options.push_back(key_in(stroke, CameraKeyKind::pocket, subject));
+  if (std::isfinite(drop_time(subject, stroke))) options.push_back(key_in(stroke, CameraKeyKind::drop, subject));
   double last_contact = -1;
   CameraShot last_key;
   for (const Event& e : timeline_.events())

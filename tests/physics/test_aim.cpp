@@ -160,7 +160,7 @@ TEST_SUITE("aim") {
     const std::string text = "cue 0 pot 1 2\n" + two_balls(0.7225, -0.0783, 0.5401, 1.3994, 0.95, 0.42) +
                              "ball 7 1.1 0.52 0.028575 0 0 0 1 0 0 0\n";
     const std::string why = failure(text);
-    CHECK(why.find("no heading pots ball index 1 (the 5) in pocket 2") != std::string::npos);
+    CHECK(why.find("no heading pots ball index 1 (the 5) in the top-right corner (pocket 2)") != std::string::npos);
     CHECK(why.find("blocked by ball index 2 (the 7)") != std::string::npos);
     // And in the cue ball's way to the ghost ball.
     const std::string in_front =
@@ -181,6 +181,33 @@ TEST_SUITE("aim") {
     CHECK(
         failure("cue 0 pot 1 2\n" + two_balls(1.0, 0.3, -1, 0, 0.7, 0.1)).find("the cut is thinner than 89 degrees") !=
         std::string::npos);
+  }
+
+  TEST_CASE("a pot that fails names the pockets the same stroke does pot the ball in, or says none does") {
+    // The 5 behind its line to the bottom-left corner (pocket 5) as the cue ball sees it: the cut would
+    // be too thin. The line under the error names the other pockets; the oracle for each is the shot
+    // played at the heading aimed for it: the 5 drops there. Every pocket left out does not take it.
+    const std::string balls = "stroke 1.5 0 0 0\n" + two_balls(-0.9, -0.3, 0, 0, -0.4, -0.1);
+    const std::string why = failure("cue 0 pot 1 5\n" + balls);
+    CHECK(why.find("in the bottom-left corner (pocket 5): the cut is thinner than") != std::string::npos);
+    const std::size_t line = why.find("\n  other pockets take it from here: ");
+    REQUIRE(line != std::string::npos);
+    const std::string named = why.substr(line);
+    int takers = 0;
+    for (int pocket = 0; pocket < 5; ++pocket) {
+      CAPTURE(pocket);
+      const std::string text = "cue 0 pot 1 " + std::to_string(pocket) + "\n" + balls;
+      const ShotResult r = load_shot(text, "aim");
+      const bool named_here = named.find(pocket_name(standard_pockets(), pocket)) != std::string::npos;
+      CHECK(named_here == (r.shot != nullptr));
+      if (r.shot) CHECK(pots(r.shot->timeline, 1, pocket));
+      takers += named_here ? 1 : 0;
+    }
+    CHECK(takers > 0);
+    // Too slow to reach the 5 at all: no pocket takes it.
+    const std::string slow = failure("cue 0 pot 1 2\n" + two_balls(-1, -0.3, 0.5, 0, 0.3, 0.1));
+    CHECK(slow.find("cannot reach it") != std::string::npos);
+    CHECK(slow.ends_with("\n  no other pocket takes it from here either"));
   }
 
   TEST_CASE("a pocket that does not exist and the struck ball as the one to pot fail before any shot") {

@@ -188,10 +188,12 @@ TEST_SUITE("several shots") {
     REQUIRE(a.failure);
     CHECK(a.failure->shot == 3);
     CHECK(a.failure->loc.line == 13);
-    CHECK(a.failure->message.find("shot 4 cannot pot ball index 1 (the 1): it is already down (pocket 2)") !=
+    CHECK(a.failure->message.find(
+              "shot 4 cannot pot ball index 1 (the 1): it is already down, in the top-right corner (pocket 2)\n") == 0);
+    CHECK(a.failure->message.find("\n  after shot 3 the balls stood:\n    ball index 0 (the cue ball) at (") !=
           std::string::npos);
-    CHECK(a.failure->message.find("after shot 3 the balls stood: 0 (the cue ball) at (") != std::string::npos);
-    CHECK(a.failure->message.find("down: the 1 (pocket 2), the 2 (pocket 3), the 3 (pocket 2)") != std::string::npos);
+    CHECK(a.failure->message.ends_with("\n  down:\n    in the top-right corner (pocket 2): the 1, the 3"
+                                       "\n    in the bottom-right corner (pocket 3): the 2"));
     CHECK(a.timeline.shot_count() == 3);  // what was played before it
 
     Scene thin = parsed(kTwoStraight + "cue 0 pot 1 5\nstroke 1 0 0 0\n");
@@ -199,7 +201,39 @@ TEST_SUITE("several shots") {
     REQUIRE(b.failure);
     CHECK(b.failure->loc.line == 7);
     CHECK(b.failure->message.rfind("shot 3: ", 0) == 0);
-    CHECK(b.failure->message.find("after shot 2 the balls stood: ") != std::string::npos);
+    CHECK(b.failure->message.find("\n  after shot 2 the balls stood:\n") != std::string::npos);
+  }
+
+  TEST_CASE("a later pot that fails on a full table lists the balls that matter to it, a line each") {
+    // The break scatters a 9-ball rack; shot 2 then asks for the 9 in the top-left corner, a long way
+    // back up the table behind the cue ball. The struck ball and the ball to pot are listed, and those near
+    // their paths; the rest are counted, not listed.
+    Scene scene = parsed(
+        "ball 0 -0.635 0.03 0.028575 0 0 0 1 0 0 0\nrack 9ball seed 2\ncue 0 -1.5\nstroke 8.0 0 -0.15 0\n"
+        "cue 0 pot 9 top-left\nstroke 0.2 0 0 0\n");
+    const PlayResult r = play(scene);
+    REQUIRE(r.failure);
+    const std::string& m = r.failure->message;
+    INFO(m);
+    CHECK(m.rfind("shot 2: no heading pots ball index 9 (the 9) in the top-left corner (pocket 0): ", 0) == 0);
+    // Each listed ball on a line of its own, the struck ball and the ball to pot among them.
+    int listed = 0;
+    for (std::size_t at = m.find("\n    ball index "); at != std::string::npos; at = m.find("\n    ball index ", at + 1)) {
+      const std::size_t end = m.find('\n', at + 1);
+      const std::string line = m.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
+      CHECK(line.find(" at (") != std::string::npos);
+      CHECK(line.find(", ") == line.rfind(", "));  // one ball: one "(x, y)" pair
+      ++listed;
+    }
+    CHECK(m.find("\n    ball index 0 (the cue ball) at (") != std::string::npos);
+    CHECK(m.find("\n    ball index 9 (the 9) at (") != std::string::npos);
+    // The others on the bed are counted: listed + counted + down = the ten balls.
+    const int down = static_cast<int>(r.timeline.pocket_drops().size());
+    const std::size_t others_at = m.find("\n    and ");
+    REQUIRE(others_at != std::string::npos);
+    const int others = std::stoi(m.substr(others_at + 9));
+    CHECK(others > 0);
+    CHECK(listed + others + down == 10);
   }
 
   TEST_CASE("twenty shots: the timeline grows with the events, not with the time") {

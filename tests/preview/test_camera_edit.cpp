@@ -358,7 +358,8 @@ TEST_SUITE("camera edit") {
     const std::vector<int> painted = {0, 1, 9, 12};
     CHECK(camera_key_label("hit 0 3", painted) == "hit 0 3 (12)");
     CHECK(camera_key_label("fourth cushion 2", painted) == "fourth cushion 2 (9)");
-    CHECK(camera_key_label("pocket 3", painted) == "pocket 3 (12)");
+    CHECK(camera_key_label("drop 3", painted) == "drop 3 (12)");
+    CHECK(camera_key_label("pocket 3", painted) == "pocket 3 (12)");  // the older spelling
     CHECK(camera_key_label("at 3", painted) == "at 3");
     CHECK(camera_key_label("cue", painted) == "cue");
 
@@ -371,14 +372,19 @@ TEST_SUITE("camera edit") {
     REQUIRE(data.camera.size() == 5);
     CHECK(data.camera[2].label == "follow ball 3");
     CHECK(data.camera[3].label == "look ball 1");
-    CHECK(data.camera[4].key == "pocket 1");
+    CHECK(data.camera[4].key == "drop 1");
     CHECK(camera_key_label(data.camera[2].key, data.painted) == "third cushion 3");
     bool group_named = false;
     for (const TimelineEventMark& e : data.events)
       group_named = group_named || e.label.find(" 15") != std::string::npos;
     CHECK(group_named);
-    // Every drop is a moment a camera key names.
-    for (const TimelineDrop& d : data.drops)
-      CHECK(name_moment(r.shot->timeline, d.time).key == "pocket " + std::to_string(d.ball));
+    // Every drop is a moment a camera key names, and its pocket is named in words.
+    REQUIRE_FALSE(data.drops.empty());
+    for (const TimelineDrop& d : data.drops) {
+      CHECK(name_moment(r.shot->timeline, d.time).key == "drop " + std::to_string(d.ball));
+      CHECK(d.pocket_name == pocket_name(standard_pockets(), d.pocket));
+    }
+    CHECK(data.drops[0].pocket_name.find(" (pocket " + std::to_string(data.drops[0].pocket) + ")") != std::string::npos);
+    CHECK(data.drops[0].pocket_name.rfind("the ", 0) == 0);
   }
 }

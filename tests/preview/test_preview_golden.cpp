@@ -78,13 +78,13 @@ TimelineData made_up_timeline() {
                                                  {4.4, EventType::ball_rail}, {6.0, EventType::end}};
   int index = 0;
   for (const auto& [time, type] : events) data.events.push_back({index++, time, type, "made-up event"});
-  data.drops.push_back({4.9, 3, 2});
+  data.drops.push_back({4.9, 3, 2, pocket_name(standard_pockets(), 2)});
   data.painted = {0, 1, 9, 12};  // ball 3 is the 12, ball 2 the 9
   // The last description too short for its label, which goes under the bars.
   data.camera = {{0.0, 2.5, 0, CameraMode::hover, "hover", "", true, ""},
                  {2.5, 3.1, 1, CameraMode::follow, "follow ball 0", "", true, "cue"},
                  {3.1, 4.9, 4, CameraMode::look, "look ball 3 (12)", "", true, "hit 0 3"},
-                 {4.9, 5.85, 0, CameraMode::hover, "hover", "", true, "pocket 3"},
+                 {4.9, 5.85, 0, CameraMode::hover, "hover", "", true, "drop 3"},
                  {5.85, 6.0, 0, CameraMode::follow, "follow ball 2 (9)", "", true, "at 5.85"}};
   data.windows = {{1.75, 2.5, 2.68}, {2.9, 3.1, 3.9}, {4.6, 4.9, 5.2}, {5.7, 5.85, 5.9}};
   data.cue = {{CuePhase::approach, 0.0, 0.9},
@@ -132,7 +132,7 @@ TimelineData made_up_three_shots() {
       if ((e.type == EventType::start && k > 0) || (e.type == EventType::end && k < 2)) continue;
       data.events.push_back({index++, t0 + e.time, e.type, e.label});
     }
-    data.drops.push_back({t0 + 4.9, 1 + k, 2});
+    data.drops.push_back({t0 + 4.9, 1 + k, 2, pocket_name(standard_pockets(), 2)});
     // The first shot filmed as the one-shot picture films it, the later ones by one description each.
     for (const TimelineCameraSpan& c : one.camera)
       if (k == 0) data.camera.push_back(c);
@@ -146,7 +146,7 @@ TimelineData made_up_three_shots() {
     section.cue = t0 + 2.5;
     section.end = t0 + 6.0;
     section.label = "shot " + std::to_string(k + 1);
-    section.detail = "cue 0 pot " + std::to_string(k + 1) + " into pocket 2 at 12.5\xC2\xB0\nstrike at " +
+    section.detail = "cue 0 pot " + std::to_string(k + 1) + " into top-right corner at 12.5\xC2\xB0\nstrike at " +
                      std::to_string(static_cast<int>(t0 + 2.5)) + ".50 s";
     Stroke stroke;
     stroke.speed = 2.0;

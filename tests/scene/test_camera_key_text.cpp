@@ -31,7 +31,7 @@ std::vector<CameraKey> every_key() {
   std::vector<CameraKey> keys = {key_of(CameraKeyKind::start),
                                  key_of(CameraKeyKind::cue),
                                  key_of(CameraKeyKind::end),
-                                 key_of(CameraKeyKind::pocket, 1),
+                                 key_of(CameraKeyKind::drop, 1),
                                  key_of(CameraKeyKind::at, -1, -1, 1, 0.0),
                                  key_of(CameraKeyKind::at, -1, -1, 1, 1.25),
                                  key_of(CameraKeyKind::at, -1, -1, 1, 0.1 + 0.2)};
@@ -81,17 +81,24 @@ TEST_SUITE("camera key text") {
   TEST_CASE("the names: kinds, ordinals and what follows each") {
     CHECK(camera_key_text(key_of(CameraKeyKind::hit, 3, 8, 2)) == "second hit 3 8");
     CHECK(camera_key_text(key_of(CameraKeyKind::cushion, 3, -1, CameraKey::kLast)) == "last cushion 3");
-    CHECK(camera_key_text(key_of(CameraKeyKind::pocket, 5)) == "pocket 5");
+    CHECK(camera_key_text(key_of(CameraKeyKind::drop, 5)) == "drop 5");
+    // `pocket I`, the older spelling of `drop I` (I a ball, not a pocket), is read as it, and written as it.
+    CHECK(camera_key_kind("drop") == CameraKeyKind::drop);
+    CHECK(camera_key_kind("pocket") == CameraKeyKind::drop);
+    const std::optional<CameraKey> older = parse_camera_key("shot 2 pocket 5");
+    REQUIRE(older);
+    CHECK(same_camera_key(*older, parse_camera_key("shot 2 drop 5").value()));
+    CHECK(camera_key_text(*older) == "shot 2 drop 5");
     CHECK(camera_key_text(key_of(CameraKeyKind::at, -1, -1, 1, 4.25)) == "at 4.25");
     CHECK(camera_key_ordinal("third") == 3);
     CHECK(camera_key_ordinal("first") == std::nullopt);
     CHECK(camera_key_kind("event") == std::nullopt);
-    CHECK(camera_key_first_words().size() == 13);  // 7 kinds, 5 ordinals, `shot`
+    CHECK(camera_key_first_words().size() == 14);  // 7 kinds, `pocket` (drop's older spelling), 5 ordinals, `shot`
   }
 
   TEST_CASE("text that is no key is refused") {
     for (const char* text :
-         {"", "hit 0", "second pocket 3", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1", "start 3",
+         {"", "hit 0", "second pocket 3", "second drop 3", "drop", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1", "start 3",
           "second  hit 0 1", "shot 0 cue", "shot cue", "shot 2", "shot 2 shot 1 cue", "shot x cue", "cue shot 2"}) {
       CAPTURE(text);
       CHECK_FALSE(parse_camera_key(text));

@@ -178,6 +178,9 @@ TEST_SUITE("validation: balls") {
   TEST_CASE("a ball starting over a pocket is a warning") {
     expect_warning("cue 0 0\nball 0 0.1 0 0.028575 1 0 0 1 0 0 0\npocket 0.12 0 0 0.05\n", 2, 8,
                    "starts over pocket 0 (line 3)");
+    // On the standard table the pocket is named in words.
+    expect_warning("cue 0 180\nball 0 1.24 0.6 0.028575 -1 0 0 1 0 0 0\n", 2, 8,
+                   "ball 0 starts over the top-right corner (pocket 2) and will drop into it");
   }
 }
 
@@ -325,11 +328,17 @@ TEST_SUITE("validation: aim") {
   }
 
   TEST_CASE("a pocket that does not exist is an error at the pocket number") {
-    expect_error("cue 0 pot 1 6\n" + kTwoBalls, 1, 13, {"expected a pocket number from 0 to 5", "found 6"});
+    expect_error("cue 0 pot 1 6\n" + kTwoBalls, 1, 13,
+                 {"expected a pocket number from 0 to 5", "or a pocket's name such as top-right", "found 6"});
     expect_error("cue 0 pot 1 -1\n" + kTwoBalls, 1, 13, {"expected a pocket number of 0 or more", "found '-1'"});
     // A scene's own pockets replace the standard six.
     expect_error("cue 0 pot 1 1\n" + kTwoBalls + "pocket 1.27 0.635 0 0.08\n", 1, 13,
-                 {"expected a pocket number from 0 to 0", "found 1"});
+                 {"expected a pocket number from 0 to 0", "numbered by their order in the file", "found 1"});
+    // A standard pocket's name; a misspelled one gets a suggestion; a name on a scene with its own pockets.
+    expect_error("cue 0 pot 1 top-rigt\n" + kTwoBalls, 1, 13, {"found 'top-rigt'", "did you mean 'top-right'?"});
+    expect_error("cue 0 pot 1 bottom-midle\n" + kTwoBalls, 1, 13, {"did you mean 'bottom-middle'?"});
+    expect_error("cue 0 pot 1 top-side\n" + kTwoBalls + "pocket 0 0.635 0 0.08\n", 1, 13,
+                 {"this scene has its own 'pocket' lines (the first on line 4)", "give the pocket's number, 0 to 0"});
   }
 
   TEST_CASE("a ball to pot that does not exist, or the struck ball itself") {

@@ -109,7 +109,7 @@ TEST_SUITE("camera_keys") {
     const ParseResult parsed = parse_scene(
         two_balls({"event start 0 0 hover 0 -3 2 0 0 0", "event cue 0 0 follow 0 -0.6 0 0.3",
                    "event hit 1 0 0.2 0.2 look 0 -2 1 1", "event second  cushion 0 0.2 0.2 follow 0 -0.6 0 0.3",
-                   "event last cushion 1 0 0 look 0 -2 1 1", "event pocket 1 0 0 look 0 -2 1 1",
+                   "event last cushion 1 0 0 look 0 -2 1 1", "event drop 1 0 0 look 0 -2 1 1",
                    "event at 4.25 0 0 hover 0 -3 2 0 0 0", "event end 0 0 hover 0 -3 2 0 0 0",
                    "event 3 0 0 hover 0 -3 2 0 0 0"}),
         "keys");
@@ -131,7 +131,7 @@ TEST_SUITE("camera_keys") {
     CHECK(c[3].event_loc.column == 7);
     CHECK(c[3].key.a_loc.column == 23);
     CHECK(c[4].key.ordinal == CameraKey::kLast);
-    CHECK(c[5].key.kind == CameraKeyKind::pocket);
+    CHECK(c[5].key.kind == CameraKeyKind::drop);
     CHECK(c[6].key.kind == CameraKeyKind::at);
     CHECK(c[6].key.seconds == 4.25);
     CHECK(camera_key_text(c[6].key) == "at 4.25");
@@ -305,7 +305,10 @@ TEST_SUITE("camera_keys") {
                    fx::camera({"event 0 0 0 hover 0 -3 2 0 0 0", "event cushion 2 0 0 hover 1 -3 2 0 0 0"}));
     CHECK(d.message == "cushion 2 never happens: ball 2 meets no cushion");
     CHECK(d.loc.line == 7);
-    d = only_error(line("pocket 7"));
+    d = only_error(line("drop 7"));
+    CHECK(d.message == "ball 7 does not exist: the scene has 2 balls (0 to 1)");
+    CHECK(d.loc.column == 12);
+    d = only_error(line("pocket 7"));  // the older spelling of drop
     CHECK(d.message == "ball 7 does not exist: the scene has 2 balls (0 to 1)");
     CHECK(d.loc.column == 14);
   }
@@ -377,8 +380,8 @@ TEST_SUITE("camera_keys") {
         written_camera_spans(failed.shot->scene, failed.shot->timeline, failed.diagnostics);
     REQUIRE(spans.size() == 2);
     CHECK_FALSE(spans[1].placed);
-    CHECK(spans[1].key == "pocket 1");
-    CHECK(spans[1].problem == "pocket 1 never happens: ball 1 drops into no pocket");
+    CHECK(spans[1].key == "drop 1");
+    CHECK(spans[1].problem == "drop 1 never happens: ball 1 drops into no pocket");
 
     test::TempDir dir;
     const std::string scene = dir.file("keys.scn", read_scene("break.scn"));
@@ -513,7 +516,7 @@ TEST_SUITE("camera_keys") {
     const ShotResult never = load_shot(balls + fx::camera({"event shot 2 pocket 1 0 0 hover 0 -3 2 0 0 0"}), "never");
     CHECK_FALSE(never.scripted());
     REQUIRE(never.diagnostics.size() == 1);
-    CHECK(never.diagnostics[0].message == "shot 2 pocket 1 never happens: ball 1 drops into no pocket in shot 2");
+    CHECK(never.diagnostics[0].message == "shot 2 drop 1 never happens: ball 1 drops into no pocket in shot 2");
     CHECK(never.diagnostics[0].loc.line == line);
     CHECK(never.diagnostics[0].loc.column == 7);
   }

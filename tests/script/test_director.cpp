@@ -262,7 +262,7 @@ TEST_SUITE("director") {
     // The 1 (ball 1), the last ball down, watched from the contact that sets it going; then wide as it drops.
     CHECK(script.shots[1].ball == 1);
     CHECK(script.shots[1].mode != CameraMode::hover);
-    CHECK(camera_key_text(script.shots[2].key) == "pocket 1");
+    CHECK(camera_key_text(script.shots[2].key) == "drop 1");
     CHECK(script.shots[2].mode == CameraMode::hover);
   }
 
