@@ -23,7 +23,20 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return previous[n];
 }
 
+namespace {
+
+/// The same letters but for case (ASCII).
+bool same_but_case(std::string_view a, std::string_view b) {
+  auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) { return lower(x) == lower(y); });
+}
+
+}  // namespace
+
 std::optional<std::string> closest_word(std::string_view word, const std::vector<std::string_view>& known) {
+  if (std::find(known.begin(), known.end(), word) != known.end()) return std::nullopt;
+  for (std::string_view candidate : known)
+    if (same_but_case(word, candidate)) return std::string(candidate);
   constexpr std::size_t kMaxEdits = 2;
   std::optional<std::string> best;
   std::size_t best_distance = kMaxEdits + 1;
@@ -38,9 +51,13 @@ std::optional<std::string> closest_word(std::string_view word, const std::vector
   return best;
 }
 
-std::string did_you_mean(std::string_view word, const std::vector<std::string_view>& known) {
+std::string did_you_mean(std::string_view word, const std::vector<std::string_view>& known, std::string_view what) {
   const std::optional<std::string> best = closest_word(word, known);
-  return best ? "; did you mean '" + *best + "'?" : std::string();
+  if (!best) return std::string();
+  const bool lower = std::none_of(best->begin(), best->end(), [](char c) { return c >= 'A' && c <= 'Z'; });
+  const std::string case_note =
+      same_but_case(word, *best) ? (lower ? " (" + std::string(what) + " are lower case)" : " (case matters)") : "";
+  return "; did you mean '" + *best + "'?" + case_note;
 }
 
 }  // namespace bsim

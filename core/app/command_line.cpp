@@ -104,6 +104,18 @@ std::vector<std::string_view> split_choices(std::string_view choices) {
   return words;
 }
 
+/// "; did you mean 'WORD'?" for the first of the value's comma-separated words that is not one of
+/// `words` but close to one, or "".
+std::string value_suggestion(std::string_view value, const std::vector<std::string_view>& words) {
+  for (std::string_view rest = value; !rest.empty();) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view word = rest.substr(0, comma);
+    if (std::find(words.begin(), words.end(), word) == words.end()) return did_you_mean(word, words);
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<std::string_view> option_values(const OptionRow& row) {
@@ -154,7 +166,11 @@ bool apply_table_option(ArgReader& reader, const OptionTable& table, std::string
     }
     if (row.argument.empty()) return reader.no_value(message) && row.apply(name, "", message);
     const std::optional<std::string> value = reader.value(message);
-    return value && row.apply(name, *value, message);
+    if (!value) return false;
+    if (row.apply(name, *value, message)) return true;
+    // A misspelt word of the value: the closest of the words the option takes.
+    if (message.find("did you mean") == std::string::npos) message += value_suggestion(*value, option_values(row));
+    return false;
   }
   message = unknown_option_message(name, own);
   return false;
@@ -172,7 +188,8 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::strin
   if (!v) return SharedOption::bad;
   if (name == "--camera") {
     if (!choice_index(kCameraChoices, *v)) {
-      message = bad_value_message(name, *v, "auto (the automatic director's script) or scene (the scene's own)");
+      message = bad_value_message(name, *v, "auto (the automatic director's script) or scene (the scene's own)") +
+                value_suggestion(*v, split_choices(kCameraChoices));
       return SharedOption::bad;
     }
     o.auto_camera = *v == "auto";

@@ -9,6 +9,7 @@
 #include "number_format.h"
 #include "simulate.h"
 #include "strike.h"
+#include "table_escape.h"
 
 namespace bsim {
 
@@ -233,7 +234,14 @@ PlayResult play(Scene& scene) {
       strike_cue_ball(shot);
     }
     if (k == 0) scene.balls = shot.balls;  // the first shot's struck ball as struck
-    chain.add(simulate_events(shot), moved, offset, k);
+    SimulationResult simulated = simulate_events(shot);
+    // The guard: a ball off the bed fails the run (the shot is still laid down, for a picture of it).
+    const std::optional<TableEscape> escape = first_escape(shot, simulated);
+    chain.add(std::move(simulated), moved, offset, k);
+    if (escape) {
+      result.failure = PlayFailure{k, cue.loc, escape_message(shot, *escape, offset)};
+      break;
+    }
   }
   result.timeline = chain.finish();
   return result;

@@ -18,7 +18,8 @@ inline constexpr double kHeadSpotX = -0.635;
 inline constexpr double kHeadSpotY = 0.0;
 
 /// Why a shot could not be played: a `pot` with no heading from where the balls stopped, a `place`
-/// that puts a ball onto another.
+/// that puts a ball onto another, a ball that left the table (table_escape.h; the shot is then in the
+/// timeline).
 struct PlayFailure {
   int shot = 0;   ///< from 0
   SourceLoc loc;  ///< the line to blame: the shot's `cue` line, or a `place` line

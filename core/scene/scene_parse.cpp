@@ -159,8 +159,17 @@ class Parser {
 
   /// A bad value that is really the next statement's keyword (the line is short): leave it to start
   /// that statement, so the short line costs one error, not two.
+  /// Reported just past the short line's last token, so it points at the line that is short.
   [[noreturn]] void fail_at_value(const Token& t, std::string message) {
-    if (is_top_keyword(t.text) || t.text == "endcamera" || (in_camera_ && t.text == "event")) --pos_;
+    if (is_top_keyword(t.text) || t.text == "endcamera" || (in_camera_ && t.text == "event")) {
+      --pos_;
+      if (pos_ > 0) {
+        const Token& last = lexed_.tokens[pos_ - 1];
+        const SourceLoc past{last.loc.line, last.loc.column + static_cast<int>(last.text.size())};
+        fail(past, message + ", which starts the next statement (line " + std::to_string(t.loc.line) +
+                       "): the statement ends early");
+      }
+    }
     fail(t.loc, std::move(message));
   }
 
@@ -238,10 +247,11 @@ class Parser {
       fail(t.loc, "expected a keyword (" + keyword_list(options_.strict) + "), found the number " + quote_token(k) +
                       " (too many values on the line before?)");
     fail(t.loc, "unknown keyword " + quote_token(k) + "; expected one of " + keyword_list(options_.strict) +
-                    did_you_mean(k, keywords(options_.strict)));
+                    did_you_mean(k, keywords(options_.strict), "keywords"));
   }
 
   void cue(const Token& keyword) {
+    broken_cue_ = true;  // until the line is read whole: its stroke and places then raise no errors of their own
     Cue c;
     c.loc = keyword.loc;
     c.target = ball_index("the cue's target ball", c.target_loc);
@@ -262,6 +272,7 @@ class Parser {
     if (!map_.has_cue) scene_.cues.clear();  // the default cue of a scene built in code
     scene_.cues.push_back(c);
     map_.has_cue = true;
+    broken_cue_ = false;
   }
 
   /// The pocket after `pot B`: its number, or a standard pocket's name (top-right); a name on a scene
@@ -296,6 +307,7 @@ class Parser {
       const double y = number("the place's y in metres", &y_loc);
       p.at = Vec3(x, y, 0);
     }
+    if (broken_cue_) return;  // the cue line above has its error already
     if (!map_.has_cue)
       fail(keyword.loc, "expected the 'cue' line of the shot this place belongs to above it, found none");
     Cue& cue = scene_.cues.back();
@@ -322,8 +334,10 @@ class Parser {
     s.height = number("the stroke's height offset (a fraction of the ball's radius)", &height_loc);
     s.elevation_deg = number("the stroke's elevation in degrees", &s.elevation_loc);
     const std::string elevation_text = quote_token(lexed_.tokens[pos_ - 1].text);
-    if (!map_.has_cue) fail(keyword.loc, "expected the 'cue' line this stroke strikes with above it, found none");
-    Cue& cue = scene_.cues.back();
+    if (!map_.has_cue && !broken_cue_)
+      fail(keyword.loc, "expected the 'cue' line this stroke strikes with above it, found none");
+    Cue unread;  // the cue line above has its error already: the stroke's own values are still checked
+    Cue& cue = broken_cue_ ? unread : scene_.cues.back();
     if (cue.stroke)
       fail(keyword.loc, "the cue on line " + std::to_string(cue.loc.line) + " already has a stroke on line " +
                             std::to_string(cue.stroke->loc.line));
@@ -359,7 +373,21 @@ class Parser {
       fail(tokens.number, "ball number " + std::to_string(b.number) + " is already in the " +
                               std::string(rack_game_name(rack_->spec.game)) + " rack on line " +
                               std::to_string(rack_->loc.line));
-    b.position = vector("the ball's {} position", &tokens.position_x, &tokens.position_z);
+    b.position.x() = number("the ball's x position", &tokens.position_x);
+    b.position.y() = number("the ball's y position");
+    // `ball N X Y` then a keyword (or the end of the file): at rest on the bed, upright.
+    if (at_end() || is_top_keyword(peek().text)) {
+      if (options_.strict)
+        fail(keyword.loc, "the short ball line ('ball N X Y', at rest on the bed) is an extension that --strict "
+                          "rejects; expected 'ball N X Y Z VX VY VZ W QX QY QZ'");
+      tokens.position_z = tokens.position_x;
+      short_balls_.push_back(scene_.balls.size());
+      ball_lines_[b.number] = keyword.loc.line;
+      scene_.balls.push_back(b);
+      map_.balls.push_back(tokens);
+      return;
+    }
+    b.position.z() = number("the ball's z position", &tokens.position_z);
     b.velocity = vector("the ball's {} velocity");
     SourceLoc w_loc;
     double q[4];
@@ -637,6 +665,7 @@ class Parser {
     if (in_camera_ && !too_many_errors_)
       error(scene_.camera_loc, "the camera description has no 'endcamera'; expected 'endcamera', found end of file");
     for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
+    for (std::size_t i : short_balls_) scene_.balls[i].position.z() = scene_.physics.ball_radius;
     if (scene_.rails.empty()) scene_.rails = standard_rails();
     if (!scene_.pockets.empty())
       for (const SourceLoc& loc : named_pockets_)
@@ -660,6 +689,7 @@ class Parser {
     RackSpec spec = line.spec;
     spec.radius = scene_.physics.ball_radius;
     Scene alone;  // the rack by itself on the scene's table, checked as ball lines are
+    alone.cues.clear();  // so only the balls' places are checked
     alone.physics = scene_.physics;
     alone.rails = scene_.rails;
     SceneSourceMap alone_map;
@@ -699,6 +729,8 @@ class Parser {
   bool in_camera_ = false;
   bool camera_seen_ = false;
   bool too_many_errors_ = false;
+  bool broken_cue_ = false;                ///< the last `cue` line had an error
+  std::vector<std::size_t> short_balls_;  ///< `ball N X Y` lines: z is the ball radius, once params are read
   std::size_t error_count_ = 0;
   Scene scene_;
   SceneSourceMap map_;

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <string>
 
+#include "cushion_gaps.h"
+
 namespace bsim {
 
 namespace {
@@ -52,6 +54,7 @@ class Validator {
     rails_ok_ = diagnostics_.size() == before;
     for (std::size_t i = 0; i < scene_.balls.size(); ++i) ball_placement(i);
     if (scene_.cues.empty()) return;  // a rack checked alone
+    if (rails_ok_) cushion_gaps();
     cue_heading();
     for (const Cue& cue : scene_.cues) later_shot(cue);
   }
@@ -75,6 +78,8 @@ class Validator {
       if (!ball_exists(cue.target))
         error(cue.target_loc,
               "expected a cue target ball index " + index_range() + ", found " + std::to_string(cue.target));
+      else
+        cue_ball_struck(cue);
       pot_references(cue);
     }
     for (const auto& spin : map_.spins)
@@ -91,6 +96,19 @@ class Validator {
         error(shot.ball_loc, std::string("expected the index of the ball the camera ") +
                                  (shot.mode == CameraMode::look ? "looks at " : "follows ") + index_range() +
                                  ", found " + std::to_string(shot.ball));
+  }
+
+  /// A `cue` line striking a numbered ball while the cue ball (painted 0) is elsewhere: most likely the
+  /// index counts a `rack` line's balls or a `ball` line the writer forgot.
+  void cue_ball_struck(const Cue& cue) {
+    const Ball& struck = scene_.balls[static_cast<std::size_t>(cue.target)];
+    if (struck.number == 0) return;
+    const auto white = std::find_if(scene_.balls.begin(), scene_.balls.end(), [](const Ball& b) { return b.number == 0; });
+    if (white == scene_.balls.end()) return;  // no cue ball: striking a numbered ball is the only way
+    warning(cue.target_loc, "the cue strikes ball index " + std::to_string(cue.target) + ", the " +
+                                std::to_string(struck.number) + ", not the cue ball; the cue ball (painted 0) is ball index " +
+                                std::to_string(white - scene_.balls.begin()) +
+                                " (indices count the `ball` lines and a `rack` line's balls in file order)");
   }
 
   /// `cue I pot B P`: B and P must be there, B must not be the struck ball, and the struck ball needs a speed
@@ -138,7 +156,7 @@ class Validator {
       Ball ball = scene_.balls[static_cast<std::size_t>(p.ball)];
       ball.position = Vec3(p.at->x(), p.at->y(), radius_);
       SceneSourceMap::BallTokens tokens{p.at_loc, p.at_loc, p.at_loc};
-      if (rails_ok_) inside_cushions(ball, tokens);
+      if (!rails_ok_ || inside_cushions(ball, tokens)) over_pocket(ball, p.at_loc);
     }
   }
 
@@ -160,13 +178,19 @@ class Validator {
                             " m apart (two ball radii), found " + fmt(d) + " m");
     }
     if (rails_ok_ && !inside_cushions(ball, tokens)) return;
+    over_pocket(ball, tokens.position_x);
+  }
+
+  /// A warning at `loc` (where the ball's place is written) when the ball stands over a pocket: the
+  /// same words for a `ball` line and a `place` line.
+  void over_pocket(const Ball& ball, SourceLoc loc) {
     for (std::size_t k = 0; k < scene_.pockets.size(); ++k) {
       const Pocket& pocket = scene_.pockets[k];
-      const Vec3 d = p - pocket.center;
+      const Vec3 d = ball.position - pocket.center;
       if (std::hypot(d.x(), d.y()) < pocket.radius)
-        warning(tokens.position_x, "ball " + std::to_string(ball.number) + " starts over " +
-                                       pocket_name(scene_.pockets, static_cast<int>(k)) + line_of(pocket.loc) +
-                                       " and will drop into it");
+        warning(loc, "ball " + std::to_string(ball.number) + " starts over " +
+                         pocket_name(scene_.pockets, static_cast<int>(k)) + line_of(pocket.loc) +
+                         " and will drop into it");
     }
   }
 
@@ -251,6 +275,50 @@ class Validator {
             "expected the rail's ends in clockwise order seen from above (the playing side is on the right "
             "walking from the first end to the second), found its playing side facing away from every ball; "
             "swap its two ends");
+  }
+
+  /// Where the table's outline lets a ball off the bed (cushion_gaps.h): an error at the line that
+  /// makes that part of the table (the rail, else the first `pocket` line, else the first ball).
+  void cushion_gaps() {
+    bool enclosed = false;
+    const std::vector<CushionGap> gaps = open_cushion_gaps(scene_.rails, scene_.pockets, radius_, enclosed);
+    const bool own_rails = !scene_.rails.empty() && scene_.rails.front().loc.known();
+    const bool own_pockets = !scene_.pockets.empty() && scene_.pockets.front().loc.known();
+    auto blame = [&](int rail) {
+      if (own_rails) return scene_.rails[static_cast<std::size_t>(rail)].loc;
+      if (own_pockets) return scene_.pockets.front().loc;
+      return scene_.balls.empty() ? map_.end : scene_.balls.front().loc;
+    };
+    if (!enclosed && !scene_.rails.empty())
+      error(blame(0), "the cushions do not close round the bed: no run of `rail` lines goes round it clockwise, so a "
+                      "ball rolls off the table; give the table's edge as rails clockwise seen from above, with a "
+                      "`pocket` in each gap");
+    const std::string replaced =
+        own_pockets && !own_rails ? " (the scene's own `pocket` lines replace all six of the standard table's)" : "";
+    for (const CushionGap& gap : gaps) {
+      const Rail& from = scene_.rails[static_cast<std::size_t>(gap.from_rail)];
+      if (gap.under) {
+        error(blame(gap.from_rail), rail_name(from, static_cast<std::size_t>(gap.from_rail)) +
+                                        " has its nose at z = " + fmt(from.a.z()) +
+                                        ", so a ball (radius " + fmt(radius_) +
+                                        ") rolls under it off the table; expected a nose above the bed and below "
+                                        "the ball's diameter, " +
+                                        fmt(2 * radius_) + " m");
+        continue;
+      }
+      const Vec3 middle = (gap.a + gap.b) / 2;
+      const double half = (gap.b - gap.a).norm() / 2;
+      const std::string where = "from (" + fmt(gap.a.x()) + ", " + fmt(gap.a.y()) + ") to (" + fmt(gap.b.x()) +
+                                ", " + fmt(gap.b.y()) + ")";
+      const std::string between = gap.from_rail == gap.to_rail
+                                      ? "round the ends of " + rail_name(from, static_cast<std::size_t>(gap.from_rail))
+                                      : "between rails " + std::to_string(gap.from_rail) + " and " +
+                                            std::to_string(gap.to_rail) + (own_rails ? "" : " of the standard table");
+      error(blame(gap.from_rail), "the gap " + between + ", " + where + ", has no pocket: a ball (radius " +
+                                      fmt(radius_) + ") passes through it off the table" + replaced +
+                                      "; add a `pocket` line there, such as `pocket " + fmt(middle.x()) + " " +
+                                      fmt(middle.y()) + " 0 " + fmt(half) + "`");
+    }
   }
 
   /// With a stroke the strike gives the struck ball its velocity and spin, so its lines give none.

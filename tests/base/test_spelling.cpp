@@ -32,6 +32,15 @@ const std::string kBall0 = "ball 0 0 0 0.028575 1 0 0 1 0 0 0\n";
 }  // namespace
 
 TEST_SUITE("spelling") {
+  TEST_CASE("a word in the wrong case: the known word, however short, and said so") {
+    CHECK(closest_word("BALL", {"cue", "ball"}) == "ball");
+    CHECK(closest_word("G", {"g", "e"}) == "g");  // a one-letter word is never otherwise suggested
+    CHECK(did_you_mean("BALL", {"ball"}, "keywords") == "; did you mean 'ball'? (keywords are lower case)");
+    CHECK(did_you_mean("wpa", {"WPA"}) == "; did you mean 'WPA'? (case matters)");
+    CHECK(did_you_mean("bal", {"ball"}) == "; did you mean 'ball'?");
+    CHECK_FALSE(closest_word("ball", {"ball", "BALL"}));  // a known word needs no suggestion
+  }
+
   TEST_CASE("edit distance: insertions, deletions, substitutions and swapped neighbours count one each") {
     CHECK(edit_distance("", "") == 0);
     CHECK(edit_distance("ball", "ball") == 0);

@@ -210,7 +210,7 @@ TEST_SUITE("export end to end") {
     test::TempDir tmp;
     const std::pair<const char*, int> cases[] = {
         {"cue 0 0\nbal 0 0 0 0.028575 1 0 0 1 0 0 0\n", 2},
-        {"cue 0 0\nball 0 0 0\n", 2},
+        {"cue 0 0\nball 0 0\n", 2},
         {"", 1},
         {"cue 3 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\n", 1},
         // Several shots: a later cue without its stroke; a place onto a ball (found when shot 2 comes);

@@ -110,8 +110,8 @@ TEST_SUITE("strike") {
 
   TEST_CASE("strike_cue_ball gives the cue line's ball the strike, and only with a stroke") {
     auto shot = test::load_clean(
-        "cue 1 90\nstroke 2 0 0.2 0\nball 0 0.5 0 0.028575 0 0 0 1 0 0 0\n"
-        "ball 1 0 0 0.028575 0 0 0 1 0 0 0\n");
+        "cue 1 90\nstroke 2 0 0.2 0\nball 3 0.5 0 0.028575 0 0 0 1 0 0 0\n"
+        "ball 0 0 0 0.028575 0 0 0 1 0 0 0\n");
     const StrikeResult r = strike(*shot->scene.cue().stroke, 90, shot->scene.physics);
     CHECK(shot->scene.balls[1].velocity == r.velocity);
     CHECK(shot->scene.balls[1].spin == r.spin);

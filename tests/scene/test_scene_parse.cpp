@@ -46,7 +46,8 @@ const char* const kSeedScene =
     "ball 0 -0.5 0 0.028575  0 0 0  1 0 0 0\n"
     "ball 9  0.5 0.2 0.028575  0 1.5 0  0 0 0 2\n"
     "rail -1 0.6 0.0363  1 0.6 0.0363\n"
-    "rail 1 -0.6 0.0363  -1 -0.6 0.0363\n"
+    // Closed at the ends (a table's cushions close round its bed), on the same line.
+    "rail 1 -0.6 0.0363  -1 -0.6 0.0363  rail -1 -0.6 0.0363 -1 0.6 0.0363  rail 1 0.6 0.0363 1 -0.6 0.0363\n"
     "camera\n"
     "event 0 0 0.25 hover -1.5 -1.5 1.2  0 0 0\n"
     "event 1 0.5 0.5 look 0 -2 1  1\n"
@@ -74,7 +75,7 @@ TEST_SUITE("scene_parse") {
     check_vec(s.balls[1].spin, 0, 0, 0);
     check_loc(s.balls[1].loc, 3, 1);
 
-    REQUIRE(s.rails.size() == 2);
+    REQUIRE(s.rails.size() == 4);
     check_vec(s.rails[0].a, -1, 0.6, 0.0363);
     check_vec(s.rails[1].b, -1, -0.6, 0.0363);
     check_loc(s.rails[1].loc, 5, 1);
@@ -122,14 +123,15 @@ TEST_SUITE("scene_parse") {
   TEST_CASE("top-level items may come in any order") {
     const Scene s = parse_ok(
         "camera event 0 0 0 look 0 -3 2 1 endcamera\n"
-        "rail -1 0.6 0.0363 1 0.6 0.0363\n"
+        "rail -1 0.6 0.0363 1 0.6 0.0363  rail 1 0.6 0.0363 1 -0.6 0.0363\n"
         "ball 3 0.3 0 0.028575 0 0 0 1 0 0 0\n"
+        "rail 1 -0.6 0.0363 -1 -0.6 0.0363  rail -1 -0.6 0.0363 -1 0.6 0.0363\n"
         "cue 1 180\n"
         "ball 0 0.6 0 0.028575 -1 0 0 1 0 0 0\n");
     REQUIRE(s.balls.size() == 2);
     CHECK(s.balls[0].number == 3);
     CHECK(s.cue().target == 1);
-    CHECK(s.rails.size() == 1);
+    CHECK(s.rails.size() == 4);
     CHECK(s.camera.size() == 1);
   }
 
@@ -165,8 +167,10 @@ TEST_SUITE("scene_parse") {
   }
 
   TEST_CASE("the scene's own rails replace the standard cushions but keep the standard pockets") {
-    const Scene s = parse_ok("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nrail -2 1 0.03 2 1 0.03\n");
-    CHECK(s.rails.size() == 1);
+    const Scene s = parse_ok(
+        "cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nrail -2 1 0.03 2 1 0.03\nrail 2 1 0.03 2 -1 0.03\n"
+        "rail 2 -1 0.03 -2 -1 0.03\nrail -2 -1 0.03 -2 1 0.03\n");
+    CHECK(s.rails.size() == 4);
     CHECK(s.pockets.size() == 6);
   }
 
@@ -205,8 +209,9 @@ TEST_SUITE("scene_parse extensions") {
 
   TEST_CASE("pocket lines replace the standard pockets") {
     const Scene s =
-        parse_ok("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n");
-    REQUIRE(s.pockets.size() == 2);
+        parse_ok("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n"
+                 "pocket 0 0.635 0 0.065  pocket 1.27 -0.635 0 0.08  pocket 0 -0.635 0 0.065  pocket -1.27 -0.635 0 0.08\n");
+    REQUIRE(s.pockets.size() == 6);
     check_vec(s.pockets[1].center, -1.27, 0.635, 0);
     CHECK(s.pockets[1].radius == 0.07);
     check_loc(s.pockets[1].loc, 4, 1);
@@ -255,7 +260,7 @@ TEST_SUITE("scene_parse extensions") {
 
   TEST_CASE("--strict accepts the seed's grammar") {
     const Scene s = parse_ok(kSeedScene, {.strict = true});
-    CHECK(s.rails.size() == 2);
+    CHECK(s.rails.size() == 4);
   }
 }
 

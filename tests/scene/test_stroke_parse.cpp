@@ -82,7 +82,7 @@ TEST_SUITE("stroke: errors") {
     expect_error("cue 0 0\nstroke fast 0 0 0\n" + kStill0, 2, 8, "expected a number for the stroke's speed");
     expect_error("cue 0 0\nstroke 1 left 0 0\n" + kStill0, 2, 10, "expected a number for the stroke's side");
     expect_error("cue 0 0\nstroke 1 0 nan 0\n" + kStill0, 2, 12, "finite number for the stroke's height");
-    expect_error("cue 0 0\nstroke 1 0 0\n" + kStill0, 3, 1, "expected a number for the stroke's elevation");
+    expect_error("cue 0 0\nstroke 1 0 0\n" + kStill0, 2, 13, "expected a number for the stroke's elevation");
   }
 
   TEST_CASE("the struck ball's lines give it no velocity and no spin") {

@@ -274,7 +274,11 @@ TEST_SUITE("cue_script: the stick tells the stroke") {
     // A wall half a metre high just behind the cue ball: even at 75 degrees the stick runs into it.
     const ShotResult loaded = load_shot(
         "cue 0 0\nstroke 1 0 0 0\nball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\n"
-        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5\n" +
+        // The wall stands on the standard table, whose cushions (written out, on the same line) close round it.
+        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5  "
+        "rail -1.19 0.635 0.0363 -0.065 0.635 0.0363  rail 0.065 0.635 0.0363 1.19 0.635 0.0363  "
+        "rail 1.27 0.555 0.0363 1.27 -0.555 0.0363  rail 1.19 -0.635 0.0363 0.065 -0.635 0.0363  "
+        "rail -0.065 -0.635 0.0363 -1.19 -0.635 0.0363  rail -1.27 -0.555 0.0363 -1.27 0.555 0.0363\n" +
             kCamera,
         "t", {}, CameraChoice::scene);
     REQUIRE(loaded.shot);
@@ -395,7 +399,10 @@ TEST_SUITE("cue_script: several shots") {
     const ShotResult loaded = load_shot(
         "ball 0 0.5 0.3 0.028575 0 0 0 1 0 0 0\n"
         "ball 1 -0.6 0 0.028575 0 0 0 1 0 0 0\n"
-        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5\n"
+        "rail -0.7 -0.5 0.5  -0.7 0.5 0.5  "
+        "rail -1.19 0.635 0.0363 -0.065 0.635 0.0363  rail 0.065 0.635 0.0363 1.19 0.635 0.0363  "
+        "rail 1.27 0.555 0.0363 1.27 -0.555 0.0363  rail 1.19 -0.635 0.0363 0.065 -0.635 0.0363  "
+        "rail -0.065 -0.635 0.0363 -1.19 -0.635 0.0363  rail -1.27 -0.555 0.0363 -1.27 0.555 0.0363\n"
         "cue 0 90\nstroke 0.5 0 0 30\n"
         "cue 1 0\nstroke 1 0 0 0\n" +
             kCamera,
