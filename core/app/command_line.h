@@ -87,9 +87,9 @@ inline constexpr std::string_view kCameraChoices = "auto|scene";
 
 /// --strict's help, for both programs' rows: each extension the scene parser rejects under --strict.
 inline constexpr std::string_view kStrictHelp =
-    "accept only the original scene language: no comments, spin, pocket,\n"
-    "param, rack, stroke, place, pot, second cue line (several shots) or\n"
-    "camera keys; a camera description is required";
+    "accept only the original scene language: no comments, short ball line,\n"
+    "spin, pocket, param, rack, stroke, place, pot, second cue line (several\n"
+    "shots) or camera keys; a camera description is required";
 
 /// The usage text: `head`, then each shown row of `table` (an option as "  NAMES ARGUMENT" with its
 /// help from the 26th column on, a line of text as it is), then `tail`.

@@ -13,6 +13,7 @@
 #include "export_options.h"
 #include "option_rejection.h"
 #include "preview_options.h"
+#include "support.h"
 
 using namespace bsim;
 using bsim::test::export_rejection;
@@ -57,6 +58,8 @@ void check_dispatch(const std::function<OptionTable(Options&)>& make_table,
 TEST_SUITE("option tables") {
   TEST_CASE("every option of billiards-export's table is dispatched to what it does") {
     using E = ExportOptions;
+    bsim::test::TempDir tmp;  // --music takes a file that is there
+    const std::string bed = tmp.file("bed.wav", "sound");
     const std::map<std::string, Sample<E>> samples = {
         {"-o", {"somewhere", [](const E& o) { return o.out_dir == "somewhere"; }}},
         {"--output", {"elsewhere", [](const E& o) { return o.out_dir == "elsewhere"; }}},
@@ -66,7 +69,7 @@ TEST_SUITE("option tables") {
         {"--jobs", {"3", [](const E& o) { return o.jobs == 3; }}},
         {"--whole-frames", {"", [](const E& o) { return o.whole_frames; }}},
         {"--audio-lead", {"0.25", [](const E& o) { return o.audio_lead == 0.25; }}},
-        {"--music", {"bed.wav", [](const E& o) { return o.music_path == "bed.wav"; }}},
+        {"--music", {bed, [bed](const E& o) { return o.music_path == bed; }}},
         {"--loudness",
          {"-20", [](const E& o) { return o.level.mode == LevelMode::normalised && o.level.loudness == -20.0; }}},
         {"--farm", {"assemble", [](const E& o) { return o.farm == FarmMode::assemble; }}},

@@ -29,7 +29,8 @@ test::CommandResult run_preview(const std::string& scene, const fs::path& pictur
 }
 
 /// Both programs fail on `scene` with an error at line:column (and one naming `part`), writing nothing.
-void expect_both_fail(const test::TempDir& tmp, const std::string& scene, int line, int column, const std::string& part) {
+void expect_both_fail(const test::TempDir& tmp, const std::string& scene, int line, int column,
+                      const std::string& part) {
   const fs::path out = tmp.path / "out";
   const fs::path picture = tmp.path / "shot.png";
   for (const test::CommandResult& r : {run_export(scene, out), run_preview(scene, picture)}) {
@@ -98,10 +99,10 @@ TEST_SUITE("scene mistakes end to end") {
                                            kCamera);
     const test::CommandResult r = run_export(scene, tmp.path / "out");
     CHECK(r.exit_code == 0);
-    CHECK_MESSAGE(r.err.find(scene +
-                             ":3:5: warning: the cue strikes ball index 0, the 1, not the cue ball; the cue ball "
-                             "(painted 0) is ball index 9") != std::string::npos,
-                  r.err);
+    CHECK_MESSAGE(
+        r.err.find(scene + ":3:5: warning: the cue strikes ball index 0, the 1, not the cue ball; the cue ball "
+                           "(painted 0) is ball index 9") != std::string::npos,
+        r.err);
     // Written the other way round, no warning.
     const std::string right = tmp.file("cue_first.scn",
                                        "ball 0 -0.635 0 0.028575 0 0 0 1 0 0 0\n"
@@ -124,10 +125,15 @@ TEST_SUITE("scene mistakes end to end") {
                                            kCamera);
     const test::CommandResult r = run_export(scene, tmp.path / "out");
     CHECK(r.exit_code == 0);
-    CHECK_MESSAGE(r.err.find(scene + ":7:9: warning: ball 0 starts over pocket 2") != std::string::npos, r.err);
+    CHECK_MESSAGE(
+        r.err.find(scene + ":7:9: warning: ball 0 starts over the top-right corner (pocket 2)") != std::string::npos,
+        r.err);
     // The ball line's own words there.
-    const std::string ball = tmp.file("ball_pocket.scn", "ball 0 1.22 0.59 0.028575 0 0 0 1 0 0 0\ncue 0 0\n" + kCamera);
+    const std::string ball =
+        tmp.file("ball_pocket.scn", "ball 0 1.22 0.59 0.028575 0 0 0 1 0 0 0\ncue 0 0\n" + kCamera);
     const test::CommandResult b = run_export(ball, tmp.path / "out2");
-    CHECK_MESSAGE(b.err.find(ball + ":1:8: warning: ball 0 starts over pocket 2") != std::string::npos, b.err);
+    CHECK_MESSAGE(
+        b.err.find(ball + ":1:8: warning: ball 0 starts over the top-right corner (pocket 2)") != std::string::npos,
+        b.err);
   }
 }

@@ -8,8 +8,8 @@
 
 #include "command_line.h"
 #include "export_options.h"
-#include "preview_options.h"
 #include "option_rejection.h"
+#include "preview_options.h"
 #include "scene_parse.h"
 
 using namespace bsim;
@@ -122,7 +122,9 @@ TEST_SUITE("shared options") {
     const std::vector<std::pair<std::string, std::string>> extensions = {
         {"comments", "# a comment\n" + seed},
         {"spin", seed + "spin 0 1 0 0\n"},
-        {"pocket", seed + "pocket 1.27 0.635 0 0.08\n"},
+        {"pocket", seed + "pocket -1.27 0.635 0 0.08 pocket 0 0.635 0 0.065 pocket 1.27 0.635 0 0.08\n"
+                          "pocket 1.27 -0.635 0 0.08 pocket 0 -0.635 0 0.065 pocket -1.27 -0.635 0 0.08\n"},
+        {"short ball line", "cue 0 0\nball 0 0 0\n" + camera},
         {"param", seed + "param mu_roll 0.01\n"},
         {"rack", seed + "rack 9ball\n"},
         {"stroke", stroked},

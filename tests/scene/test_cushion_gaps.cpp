@@ -130,9 +130,9 @@ TEST_SUITE("the table's edge") {
   TEST_CASE("a scene's own rails: the error is at the rail whose end opens the gap") {
     // Two long cushions with nothing across the ends.
     const std::string two = "rail -1 0.6 0.0363 1 0.6 0.0363\nrail 1 -0.6 0.0363 -1 -0.6 0.0363\n";
-    expect_error("cue 0 0\n" + kBall0 + two, 3, 1,
-                 {"the gap between rails 0 and 1, from (1, 0.6) to (1, -0.6), has no pocket",
-                  "such as `pocket 1 0 0 0.6`"});
+    expect_error(
+        "cue 0 0\n" + kBall0 + two, 3, 1,
+        {"the gap between rails 0 and 1, from (1, 0.6) to (1, -0.6), has no pocket", "such as `pocket 1 0 0 0.6`"});
     // A closed box, and the box with a pocket in a gap cut into it.
     const ParseResult closed = parse_scene("cue 0 0\n" + kBall0 + kBox, "t");
     CHECK_MESSAGE(closed.diagnostics.empty(), all_messages(closed));
@@ -189,7 +189,8 @@ TEST_SUITE("the ball a cue strikes") {
 
 TEST_SUITE("a place over a pocket") {
   TEST_CASE("the same warning at the place line as at a ball line") {
-    const std::string shots = "ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n";
+    const std::string shots =
+        "ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n";
     const ParseResult placed = parse_scene(shots + "place 0 1.22 0.59\n", "t");
     const ParseResult ball = parse_scene("ball 0 1.22 0.59 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n", "t");
     REQUIRE(placed.diagnostics.size() == 1);
@@ -198,6 +199,6 @@ TEST_SUITE("a place over a pocket") {
     CHECK(placed.diagnostics[0].loc.line == 6);
     CHECK(placed.diagnostics[0].loc.column == 9);
     CHECK(placed.diagnostics[0].message == ball.diagnostics[0].message);
-    CHECK(ball.diagnostics[0].message.find("starts over pocket 2") != std::string::npos);
+    CHECK(ball.diagnostics[0].message.find("starts over the top-right corner (pocket 2)") != std::string::npos);
   }
 }
