@@ -381,6 +381,7 @@ class Parser {
         fail(keyword.loc, "the short ball line ('ball N X Y', at rest on the bed) is an extension that --strict "
                           "rejects; expected 'ball N X Y Z VX VY VZ W QX QY QZ'");
       tokens.position_z = tokens.position_x;
+      tokens.short_form = true;
       short_balls_.push_back(scene_.balls.size());
       ball_lines_[b.number] = keyword.loc.line;
       scene_.balls.push_back(b);

@@ -342,6 +342,18 @@ class Validator {
     if (scene_.cue().aims()) return;
     const Ball& target = scene_.balls[static_cast<std::size_t>(scene_.cue().target)];
     const double vx = target.velocity.x(), vy = target.velocity.y();
+    const auto index = static_cast<std::size_t>(scene_.cue().target);
+    if (index < map_.balls.size() && map_.balls[index].short_form) {
+      const SceneSourceMap::BallTokens& tokens = map_.balls[index];
+      // In the seed's form the struck ball's line gives the shot its velocity; a short line gives
+      // none, and is most often a long line cut short.
+      error(tokens.position_x, "the cue (line " + std::to_string(scene_.cue().target_loc.line) +
+                                   ") strikes ball index " + std::to_string(scene_.cue().target) +
+                                   ", whose short line 'ball N X Y' leaves it at rest, and there is no stroke; "
+                                   "expected the whole line 'ball N X Y Z VX VY VZ W QX QY QZ' with the ball's "
+                                   "velocity, or a 'stroke' line under the cue");
+      return;
+    }
     if (std::hypot(vx, vy) == 0) {
       warning(scene_.cue().target_loc, "the cue strikes ball index " + std::to_string(scene_.cue().target) +
                                            ", whose velocity has no part along the table; the stick will not move it");

@@ -13,6 +13,7 @@ namespace bsim {
 struct SceneSourceMap {
   struct BallTokens {
     SourceLoc number, position_x, position_z;
+    bool short_form = false;  ///< written `ball N X Y` (at rest on the bed)
   };
   struct RailTokens {
     SourceLoc a_z, b_z;

@@ -124,7 +124,7 @@ TEST_SUITE("shared options") {
         {"spin", seed + "spin 0 1 0 0\n"},
         {"pocket", seed + "pocket -1.27 0.635 0 0.08 pocket 0 0.635 0 0.065 pocket 1.27 0.635 0 0.08\n"
                           "pocket 1.27 -0.635 0 0.08 pocket 0 -0.635 0 0.065 pocket -1.27 -0.635 0 0.08\n"},
-        {"short ball line", "cue 0 0\nball 0 0 0\n" + camera},
+        {"short ball line", seed + "ball 1 0.5 0\n"},
         {"param", seed + "param mu_roll 0.01\n"},
         {"rack", seed + "rack 9ball\n"},
         {"stroke", stroked},

@@ -54,12 +54,24 @@ TEST_SUITE("the short ball line") {
   }
 
   TEST_CASE("a number after X Y means the long line, and checks stay at their tokens") {
-    expect_error("cue 0 0\nball 0 0 0 0.028575 1 0\n", 2, 24, {"expected a number for the ball's z velocity, found end of file"});
+    expect_error("cue 0 0\nball 0 0 0 0.028575 1 0\n", 2, 24,
+                 {"expected a number for the ball's z velocity, found end of file"});
   }
 
   TEST_CASE("a short ball line is checked as the long one: inside the cushions, apart") {
     expect_error("cue 0 0\nball 0 1.3 0\n", 2, 8, {"expected the ball inside the cushions"});
-    expect_error("cue 0 0\nball 0 0 0\nball 1 0.01 0\n", 3, 1, {"ball 1 overlaps ball 0 (line 2)"});
+    expect_error("cue 0 0\nstroke 1 0 0 0\nball 0 0 0\nball 1 0.01 0\n", 4, 1, {"ball 1 overlaps ball 0 (line 3)"});
+  }
+
+  TEST_CASE("a short ball line struck by a cue with no stroke is an error at the ball: it gives no velocity") {
+    // The acceptance checks' truncated long line reads as a short one; the shot it would make never moves.
+    expect_error("cue 0 0\nball 0 0 0\n", 2, 8,
+                 {"whose short line 'ball N X Y' leaves it at rest, and there is no stroke"});
+    // With a stroke, or struck long-form, it is a shot.
+    ParseResult stroked = parse_scene("cue 0 0\nstroke 1 0 0 0\nball 0 0 0\n", "s");
+    CHECK(stroked.scene);
+    ParseResult other = parse_scene("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nball 1 0.3 0\n", "s");
+    CHECK(other.scene);
   }
 
   TEST_CASE("--strict rejects it") {
@@ -89,10 +101,9 @@ TEST_SUITE("a malformed cue line") {
   TEST_CASE("gets one error, not a second at its stroke") {
     for (const std::string cue : {"cue x 0", "cue 0 y", "cue 0 pot 1 x", "cue -1 0"}) {
       CAPTURE(cue);
-      const ParseResult r =
-          parse_scene("ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\nball 1 0 0 0.028575 0 0 0 1 0 0 0\n" + cue +
-                          "\nstroke 1 0 0 0\n",
-                      "t");
+      const ParseResult r = parse_scene(
+          "ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\nball 1 0 0 0.028575 0 0 0 1 0 0 0\n" + cue + "\nstroke 1 0 0 0\n",
+          "t");
       INFO(all_messages(r));
       REQUIRE(r.diagnostics.size() == 1);
       CHECK(r.diagnostics[0].loc.line == 3);
