@@ -170,8 +170,8 @@ void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
     const int number = f.shot.scene.balls[static_cast<std::size_t>(i)].number;
     const BallState now = timeline.state(i, f.time);
     const Vec3 here = path_point(now, timeline.physics().ball_radius);
-    const PathPieces p = path_pieces(paths.balls[static_cast<std::size_t>(i)], begin, f.time, end, here,
-                                     now.motion == Motion::pocketed);
+    const PathPieces p =
+        path_pieces(paths.balls[static_cast<std::size_t>(i)], begin, f.time, end, here, now.motion == Motion::pocketed);
     for (const std::vector<Vec3>* other : {&p.earlier, &p.later})
       draw_projected_path(list, project, *other, ball_ui_color(number, 50), 1.2f * scale);
     draw_projected_path(list, project, p.future, IM_COL32(0, 0, 0, 90), 3.5f * scale);
@@ -361,8 +361,8 @@ StatusLine status_line_layout(const OverlayFrame& f, bool top) {
   s.wrap = std::max(static_cast<float>(f.width) - 2 * (pad + margin), 20.f);
   const ImVec2 extent = s.font->CalcTextSizeA(s.size, 1e9f, s.wrap, s.text.c_str());
   const float left = static_cast<float>(f.left), picture_top = static_cast<float>(f.top);
-  const float y = top ? picture_top + pad / 2 + margin
-                      : static_cast<float>(f.top + f.height) - extent.y - pad / 2 - margin;
+  const float y =
+      top ? picture_top + pad / 2 + margin : static_cast<float>(f.top + f.height) - extent.y - pad / 2 - margin;
   s.at = ImVec2(left + pad + margin, y);
   s.box = {s.at.x - pad, s.at.y - pad / 2, s.at.x + extent.x + pad, s.at.y + extent.y + pad / 2};
   s.top = top;
@@ -427,7 +427,15 @@ class TableLabels {
     ImVec2 at;
     if (!project_(where, at)) return;
     const ImVec2 extent = f_.fonts.regular->CalcTextSizeA(f_.fonts.regular_size, 1e9f, 0, text.c_str());
-    const ImVec2 corner(at.x - extent.x / 2, at.y - extent.y / 2);
+    ImVec2 corner(at.x - extent.x / 2, at.y - extent.y / 2);
+    // A label whose place is in the picture stays whole in it: near an edge it slides inwards.
+    const auto left = static_cast<float>(f_.left), top = static_cast<float>(f_.top);
+    const auto right = static_cast<float>(f_.left + f_.width), bottom = static_cast<float>(f_.top + f_.height);
+    if (at.x >= left && at.x <= right && at.y >= top && at.y <= bottom) {
+      corner.x = std::clamp(corner.x, std::min(left + kPad, right - extent.x - kPad), right - extent.x - kPad);
+      corner.y =
+          std::clamp(corner.y, std::min(top + kPad / 2, bottom - extent.y - kPad / 2), bottom - extent.y - kPad / 2);
+    }
     labels_.push_back({at, corner, extent, text, color});
   }
 

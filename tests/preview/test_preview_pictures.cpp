@@ -47,7 +47,8 @@ Picture load(const std::string& path) {
 
 /// Runs billiards-preview with `args`, which must succeed, and loads the picture it wrote to `out`.
 Picture preview(const std::string& args, const std::string& out) {
-  const test::CommandResult r = test::run_command(quoted(test::bin("billiards-preview")) + " " + args + " -o " + quoted(out));
+  const test::CommandResult r =
+      test::run_command(quoted(test::bin("billiards-preview")) + " " + args + " -o " + quoted(out));
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   return load(out);
@@ -92,8 +93,8 @@ const char* const kTwoHalves =
 TEST_SUITE("preview pictures") {
   TEST_CASE("the timeline of scenes/runout.scn shows each of its seven shots' strokes") {
     test::TempDir dir;
-    const Picture t = preview(quoted(test::source_path("scenes/runout.scn").string()) + " --timeline",
-                              (dir.path / "t.png").string());
+    const Picture t =
+        preview(quoted(test::source_path("scenes/runout.scn").string()) + " --timeline", (dir.path / "t.png").string());
     // The stroke diagrams' tip dots (chalk blue) in the band of shots: one cluster per shot.
     std::vector<bool> blue(static_cast<std::size_t>(t.width), false);
     for (int y = 0; y < t.height / 4; ++y)
@@ -128,8 +129,9 @@ TEST_SUITE("preview pictures") {
     const double first = timeline.shots()[1].start - 0.05, last = timeline.duration();
     const auto pair = [&](double t, const char* name) {
       const std::string at = " --size 1280x720 --at " + std::to_string(t);
-      return std::pair{preview(quoted(scene) + at, (dir.path / (std::string(name) + "_plain.png")).string()),
-                       preview(quoted(scene) + at + " --overlay paths", (dir.path / (std::string(name) + ".png")).string())};
+      return std::pair{
+          preview(quoted(scene) + at, (dir.path / (std::string(name) + "_plain.png")).string()),
+          preview(quoted(scene) + at + " --overlay paths", (dir.path / (std::string(name) + ".png")).string())};
     };
     const auto [plain1, paths1] = pair(first, "first");
     const auto [plain2, paths2] = pair(last, "last");
@@ -139,7 +141,7 @@ TEST_SUITE("preview pictures") {
     REQUIRE(ball0_then > 200);  // shot 1's path drawn strongly while it is in play
     CHECK(strong_changes(plain1, paths1, middle, low, strong) < ball0_then / 10);
     const int ball1_now = strong_changes(plain2, paths2, middle, low, strong);
-    CHECK(ball1_now > 200);                                                    // shot 2's path strong now
+    CHECK(ball1_now > 200);                                                      // shot 2's path strong now
     CHECK(strong_changes(plain2, paths2, 0, middle, strong) < ball0_then / 10);  // shot 1's faint
   }
 
@@ -166,14 +168,22 @@ TEST_SUITE("preview pictures") {
       canvas.end_2d();
       const std::string alone = (dir.path / "alone.png").string();
       REQUIRE_MESSAGE(canvas.write_png(alone, error), error);
-      const int expected = label_pixels(load(alone));
+      const Picture labels = load(alone);
+      const int expected = label_pixels(labels);
       REQUIRE(expected > 50);
+      // Every label whole inside the picture: none runs off an edge (at 320x180 the corner pockets'
+      // two-line labels reach past the sides unless they slide inwards).
+      Picture edges = labels;
+      for (int y = 0; y < edges.height; ++y)
+        for (int x = 3; x < edges.width - 3; ++x)
+          if (y >= 2 && y < edges.height - 2) std::fill_n(&edges.rgb[(static_cast<std::size_t>(y) * w + x) * 3], 3, 0);
+      CHECK_MESSAGE(label_pixels(edges) == 0, label_pixels(edges) << " label pixels at the picture's edge");
       // The snapshot, status line and all: every label as legible as alone (a label moved clear of the
       // status line may land a fraction of a pixel otherwise, hence the small tolerance; a covered
       // bottom row at 320x180 loses a third).
-      const Picture snapshot = preview(quoted(scene) + " --at 0 --overlay table --size " + std::to_string(w) + "x" +
-                                           std::to_string(h),
-                                       (dir.path / "snapshot.png").string());
+      const Picture snapshot =
+          preview(quoted(scene) + " --at 0 --overlay table --size " + std::to_string(w) + "x" + std::to_string(h),
+                  (dir.path / "snapshot.png").string());
       CHECK_MESSAGE(label_pixels(snapshot) >= expected * 0.95, label_pixels(snapshot) << " of " << expected);
     }
   }
