@@ -156,7 +156,11 @@ int run(const bsim::ExportOptions& options) {
   if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, error))
     outcome = bsim::RunOutcome::failed;
   const bool outdated = changed_since(dir, stage, "events.json");
-  if (outcome == bsim::RunOutcome::done && !stage.commit(error, kRunOutputs)) outcome = bsim::RunOutcome::failed;
+  // A farm submission's movie job makes the movie: an older one goes now, never to pass for the new one.
+  const std::vector<std::string> made_later =
+      on_farm ? std::vector<std::string>{"movie.mp4"} : std::vector<std::string>{};
+  if (outcome == bsim::RunOutcome::done && !stage.commit(error, kRunOutputs, made_later))
+    outcome = bsim::RunOutcome::failed;
   if (outcome == bsim::RunOutcome::interrupted) {
     report_interrupted(stage, dir);
     stage.discard();  // the output directory stays exactly as it was

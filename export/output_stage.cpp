@@ -62,7 +62,8 @@ std::string OutputStage::path(const std::string& relative) const {
   return p.string();
 }
 
-bool OutputStage::commit(std::string& error, const std::vector<std::string>& owned) {
+bool OutputStage::commit(std::string& error, const std::vector<std::string>& owned,
+                         const std::vector<std::string>& later) {
   kept_.clear();
   if (!open_) {
     error = "nothing staged to commit";
@@ -113,8 +114,16 @@ bool OutputStage::commit(std::string& error, const std::vector<std::string>& own
       return false;
     }
   }
+  for (const std::string& name : later) {
+    fs::remove_all(destination / name, ec);
+    if (ec) {
+      error = "cannot remove the older '" + name + "' from '" + destination_ + "': " + reason(ec);
+      return false;
+    }
+  }
   for (const std::string& name : owned) {
     if (std::find(entries.begin(), entries.end(), fs::path(name)) != entries.end()) continue;
+    if (std::find(later.begin(), later.end(), name) != later.end()) continue;
     const auto status = fs::symlink_status(destination / name, ec);
     if (fs::exists(status)) kept_.push_back(name + (fs::is_directory(status) ? "/" : ""));
   }

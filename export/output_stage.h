@@ -18,7 +18,11 @@ class OutputStage {
   /// did not stage is removed: each name in `owned` (what a run may write) that an earlier run left
   /// and this one did not make stays, and is listed by kept() (in `owned`'s order, folders with a
   /// trailing '/'); anything else in the destination is left alone too.
-  bool commit(std::string& error, const std::vector<std::string>& owned = {});
+  /// `later` names outputs this run makes after the commit (a farm submission's movie, made by its
+  /// movie job): an earlier run's copy of one of them goes at the commit, so it is never taken for this
+  /// run's.
+  bool commit(std::string& error, const std::vector<std::string>& owned = {},
+              const std::vector<std::string>& later = {});
   /// After commit: the outputs of an earlier run that this run did not replace ("movie.mp4", "frames/").
   const std::vector<std::string>& kept() const { return kept_; }
   /// Removes the staging directory; the destination is untouched. Also done by the destructor.

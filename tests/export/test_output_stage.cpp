@@ -105,6 +105,21 @@ TEST_SUITE("output_stage") {
           std::vector<std::string>{"events.json", "frames", "frames/frame_00000.pov", "movie.mp4", "notes.txt"});
   }
 
+  TEST_CASE("an output this run makes after the commit (a farm's movie) replaces an older one: it goes at the commit") {
+    test::TempDir tmp;
+    const fs::path dest = tmp.path / "farm";
+    fs::create_directories(dest);
+    write((dest / "movie.mp4").string(), "an older run's");
+    write((dest / "soundtrack.wav").string(), "an older run's");
+    OutputStage stage;
+    std::string error;
+    REQUIRE(stage.open(dest.string(), error));
+    write(stage.path("events.json"), "new");
+    REQUIRE(stage.commit(error, {"events.json", "soundtrack.wav", "movie.mp4"}, {"movie.mp4"}));
+    CHECK_FALSE(fs::exists(dest / "movie.mp4"));
+    CHECK(stage.kept() == std::vector<std::string>{"soundtrack.wav"});
+  }
+
   TEST_CASE("an output path that is a regular file is an error and stays untouched") {
     test::TempDir tmp;
     const std::string file = tmp.file("shot", "precious");
