@@ -137,7 +137,9 @@ TEST_SUITE("shared options") {
     const std::string help[] = {flat_help<ExportOptions>(parse_export_options),
                                 flat_help<PreviewOptions>(parse_preview_options)};
     REQUIRE(parse_scene(seed, "seed", {.strict = true}).scene);
-    for (const auto& [name, text] : extensions) {
+    for (const auto& extension : extensions) {
+      const std::string& name = extension.first;  // a plain name: clang cannot capture a binding
+      const std::string& text = extension.second;
       CAPTURE(name);
       const ParseResult plain = parse_scene(text, "extension");
       CHECK_MESSAGE(plain.scene, (plain.diagnostics.empty() ? "" : plain.diagnostics.front().message));

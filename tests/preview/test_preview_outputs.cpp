@@ -148,13 +148,15 @@ TEST_SUITE("preview outputs") {
     TempDir dir;
     const std::string scene = dir.file("cluster.scn", test::fixtures::cluster_scene());
     const std::string common = quoted(scene) + " --size 160x90 ";
-    for (const auto& [args, files] : std::vector<std::pair<std::string, std::vector<fs::path>>>{
+    for (const auto& run : std::vector<std::pair<std::string, std::vector<fs::path>>>{
              {"--at 0.5 --at 1.25 -o " + quoted((dir.path / "takes/take_%t.png").string()),
               {dir.path / "takes/take_0.500.png", dir.path / "takes/take_1.250.png"}},
              {"--at 0.5 -o " + quoted((dir.path / "one/deeper/still.png").string()),
               {dir.path / "one/deeper/still.png"}},
              {"--timeline -o " + quoted((dir.path / "lines/timeline.png").string()), {dir.path / "lines/timeline.png"}},
          }) {
+      const std::string& args = run.first;  // plain names: clang cannot capture a binding
+      const std::vector<fs::path>& files = run.second;
       CAPTURE(args);
       const test::CommandResult r = preview(common + args);
       REQUIRE_MESSAGE(r.exit_code == 0, r.err);

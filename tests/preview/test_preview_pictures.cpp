@@ -150,7 +150,8 @@ TEST_SUITE("preview pictures") {
     const ShotResult loaded = load_shot(test::require_file(scene), "numbering");
     REQUIRE(loaded.scripted());
     test::TempDir dir;
-    for (const auto& [w, h] : {std::pair{640, 360}, std::pair{320, 180}}) {
+    for (const auto& size : {std::pair{640, 360}, std::pair{320, 180}}) {
+      const int w = size.first, h = size.second;  // plain names: clang cannot capture a binding
       CAPTURE(w);
       // The labels alone, drawn as the snapshot draws them but with no status line.
       HeadlessCanvas canvas;
