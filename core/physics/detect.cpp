@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cushion_gaps.h"
 #include "roots.h"
 
 namespace bsim {
@@ -77,10 +78,7 @@ std::optional<double> next_ball_ball(const Path& a, const Path& b, double distan
   return circle_contact(b.p - a.p, b.v - a.v, 0.5 * (b.a - a.a), distance, horizon);
 }
 
-double cushion_reach(double ball_radius, double nose_height) {
-  const double lift = nose_height - ball_radius;
-  return std::sqrt(std::max(0.0, ball_radius * ball_radius - lift * lift));
-}
+double cushion_reach(double ball_radius, double nose_height) { return nose_reach(ball_radius, nose_height); }
 
 std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon) {
   const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);

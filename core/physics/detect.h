@@ -41,7 +41,8 @@ bool boxes_within(const SweptBox& a, const SweptBox& b, double margin);
 std::optional<double> next_ball_ball(const Path& a, const Path& b, double distance, double horizon);
 
 /// Horizontal distance between the ball's centre and a cushion's nose line at contact:
-/// sqrt(R^2 - (h - R)^2) for a nose at height h (the nose touches the ball off its equator).
+/// sqrt(R^2 - (h - R)^2) for a nose at height h (the nose touches the ball off its equator); the
+/// scene's nose_reach (cushion_gaps.h), the one formula the scene's gap check also uses.
 double cushion_reach(double ball_radius, double nose_height);
 
 /// First contact of the ball with the nose line of `rail` between its end points (from the playing side).

@@ -19,7 +19,8 @@
 
 namespace bsim {
 
-/// m, how close a ball's centre comes to a nose line at `nose_height` above the bed (0: it passes).
+/// m, how close a ball's centre comes to a nose line at `nose_height` above the bed (0: it passes):
+/// sqrt(R^2 - (h - R)^2), the physics' cushion contact distance too (detect.h's cushion_reach).
 double nose_reach(double ball_radius, double nose_height);
 
 struct CushionGap {
