@@ -6,28 +6,18 @@
 #include <limits>
 
 #include "motion.h"
+#include "roots.h"
 
 namespace bsim {
 
 namespace {
 
-/// The first t in [0, length] where c0 + c1 t + c2 t^2 > 0, if any.
+/// The first t in [0, length] where c0 + c1 t + c2 t^2 > 0, if any (the roots by roots.h).
 std::optional<double> first_positive(double c0, double c1, double c2, double length) {
   if (c0 > 0) return 0.0;
-  std::vector<double> roots;
-  if (std::abs(c2) < 1e-300) {
-    if (c1 != 0) roots.push_back(-c0 / c1);
-  } else {
-    const double disc = c1 * c1 - 4 * c2 * c0;
-    if (disc >= 0) {
-      const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-      roots.push_back(q / c2);
-      if (q != 0) roots.push_back(c0 / q);
-    }
-  }
-  std::sort(roots.begin(), roots.end());
-  for (double r : roots)
-    if (r >= 0 && r <= length && c1 + 2 * c2 * r > 0) return r;
+  const Roots roots = roots_in(Poly{{c0, c1, c2, 0, 0}}, 0.0, length);
+  for (int k = 0; k < roots.count; ++k)
+    if (c1 + 2 * c2 * roots.t[static_cast<std::size_t>(k)] > 0) return roots.t[static_cast<std::size_t>(k)];
   if (c0 + length * (c1 + length * c2) > 0) return length;
   return std::nullopt;
 }
