@@ -71,8 +71,8 @@ bool shadow_hull(const std::vector<BoundSphere>& casts, const RegionScene& scene
 Hull box_hull(const Vec3& min, const Vec3& max) {
   Hull hull;
   for (int corner = 0; corner < 8; ++corner)
-    hull.push_back({Vec3(corner & 1 ? max.x() : min.x(), corner & 2 ? max.y() : min.y(), corner & 4 ? max.z() : min.z()),
-                    0.0});
+    hull.push_back(
+        {Vec3(corner & 1 ? max.x() : min.x(), corner & 2 ? max.y() : min.y(), corner & 4 ? max.z() : min.z()), 0.0});
   return hull;
 }
 
@@ -271,7 +271,6 @@ bool changed_hulls(const FramePart& part, const RegionScene& scene, std::vector<
   return true;
 }
 
-
 PixelRect overlap_of(const PixelRect& a, const PixelRect& b) {
   return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
@@ -338,28 +337,32 @@ RegionScene region_scene(const Scene& scene) {
   r.bed = -0.001;                      // the cloth's top is z = 0
   r.cup_floor = -kPocketDepth - 0.02;  // the cup's floor and its leather, with room to spare
   r.floor = layout.floor - 0.01;
-  // Each pocket's opening through the cloth and the wood: its drop circle, its throat and its jaws,
-  // with the slate's rounded lip, as the include's PocketBound. Its cup is the opening's hole carried
-  // down to the cup's floor (the include's PocketLiner), so all the lamp lights below the cloth
-  // through it lies in the upright box round that disc.
+  // Where the lamp's light goes down through each pocket, and its cup below. A cut pocket's shelf is
+  // cloth like the bed, so only its hole in the slate opens (with the slate's rounded lip); the cup
+  // under it (the include's PocketLiner) lies within the hole and its liner. Any other pocket opens
+  // through its drop circle, its throat and its jaws, as the include's PocketBound, and its cup is
+  // that opening carried down. All the lamp lights below the cloth through an opening lies in the
+  // upright box round its cup's disc.
+  const PocketJaws& jaws = kStandardTable.jaws;
   for (const PocketMouth& p : layout.pockets) {
     double radius = std::max(p.drop_radius, (p.throat_centre - p.centre).norm() + p.throat_radius);
     if (p.jawed()) radius = std::max({radius, (p.nose[0] - p.centre).norm(), (p.nose[1] - p.centre).norm()});
-    const RegionScene::Opening opening{p.centre.x(), p.centre.y(), radius + 0.02};
-    r.pockets.push_back(opening);
-    r.cups.push_back(box_hull(Vec3(opening.x - opening.radius, opening.y - opening.radius, r.cup_floor),
-                              Vec3(opening.x + opening.radius, opening.y + opening.radius, r.bed)));
+    const double opening = p.cut ? p.drop_radius + jaws.lip_round + 0.01 : radius + 0.02;
+    const double cup = p.cut ? p.drop_radius + jaws.liner + 0.01 : opening;
+    r.pockets.push_back({p.centre.x(), p.centre.y(), opening});
+    r.cups.push_back(box_hull(Vec3(p.centre.x() - cup, p.centre.y() - cup, r.cup_floor),
+                              Vec3(p.centre.x() + cup, p.centre.y() + cup, r.bed)));
   }
   // Beyond the frame and below the cloth the lamp lights nothing when the walls (and what hangs on
   // them, within kWallDepth of them) lie outside its cone, seen from the nearest point of its light:
   // the floor is lit by the room's fills alone (room.inc), the frame's outer faces look away from
   // the lamp and the table's body is under its top.
   const double reach = std::tan(kRoom.lamp.falloff_deg * std::numbers::pi / 180) * (r.light_z - r.floor);
-  const double to_wall = std::min({r.light_x0 - (layout.wood_outer.x0 - kRoom.margin),
-                                   (layout.wood_outer.x1 + kRoom.margin) - r.light_x1,
-                                   r.light_y0 - (layout.wood_outer.y0 - kRoom.margin),
-                                   (layout.wood_outer.y1 + kRoom.margin) - r.light_y1}) -
-                         kWallDepth;
+  const double to_wall =
+      std::min({r.light_x0 - (layout.wood_outer.x0 - kRoom.margin), (layout.wood_outer.x1 + kRoom.margin) - r.light_x1,
+                r.light_y0 - (layout.wood_outer.y0 - kRoom.margin),
+                (layout.wood_outer.y1 + kRoom.margin) - r.light_y1}) -
+      kWallDepth;
   r.lamp_lights_room = to_wall <= reach;
   return r;
 }

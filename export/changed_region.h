@@ -70,17 +70,18 @@ struct RegionScene {
   double light_x0 = 0, light_y0 = 0, light_x1 = 0, light_y1 = 0;  ///< every light sample of the lamp lies in
   double light_z = 0;                                             ///< this rectangle at this height (m)
   double cone_deg = 90;  ///< the lamp lights nothing further than this from straight down from its centre
-  Vec3 shade_min{0, 0, 0}, shade_max{0, 0, 0};                    ///< the box round the lamp's lacquered shade
+  Vec3 shade_min{0, 0, 0}, shade_max{0, 0, 0};  ///< the box round the lamp's lacquered shade
   /// A plane mirror: its outward unit normal and a point of it.
   struct Mirror {
     Vec3 normal{0, 0, 1}, point{0, 0, 0};
   };
-  std::vector<Mirror> shade_faces;  ///< the shade's lacquered outer faces
+  std::vector<Mirror> shade_faces;                                ///< the shade's lacquered outer faces
   double frame_x0 = 0, frame_y0 = 0, frame_x1 = 0, frame_y1 = 0;  ///< the table's wooden frame, seen from above
   double bed = 0;                                                 ///< just below the cloth's top
   double cup_floor = 0;                                           ///< below the lowest point of the pockets' cups
   double floor = 0;                                               ///< the room's floor
-  /// A pocket's opening through the cloth and the wood, seen from above: a disc that holds it.
+  /// Where the lamp's light can go down through a pocket below the cloth, seen from above: a disc that
+  /// holds its hole (a cut pocket's shelf is cloth), or its whole opening for a pocket of another kind.
   struct Opening {
     double x = 0, y = 0, radius = 0;
   };

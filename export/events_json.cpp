@@ -31,6 +31,7 @@ std::string event_json(const Event& e, const Scene& scene) {
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
   out += ", \"balls\": " + list(e.balls);
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
+  if (e.type == EventType::ball_jaw) out += ", \"pocket\": " + std::to_string(e.pocket);
   out += ", \"speed\": " + format_number(e.speed);
   if (e.type == EventType::cue) out += cue_json(scene.cues[static_cast<std::size_t>(e.shot)]);
   if (e.grouped && !e.contacts.empty()) {

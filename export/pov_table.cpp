@@ -107,6 +107,16 @@ void write_pov_include(const Scene& scene, Quality quality, std::ostream& out) {
     write_array(out, "PocketC", scene.pockets, [](const Pocket& p) { return pov_vector2(p.center.x(), p.center.y()); });
     write_array(out, "PocketR", scene.pockets, [](const Pocket& p) { return pov_number(p.radius); });
     write_array(out, "PocketJawed", m, [](const PocketMouth& p) { return p.jawed() ? "1" : "0"; });
+    // A cut pocket's jaws are the physics' own: the shelf between the facings, the hole behind it and
+    // each jaw point's rounding (its centre and where it meets the nose and the facing).
+    write_array(out, "PocketCut", m, [](const PocketMouth& p) { return p.cut ? "1" : "0"; });
+    write_array(out, "JawRoundR", m, [](const PocketMouth& p) { return pov_number(p.round_radius); });
+    write_array(out, "JawRoundC0", m, [&](const PocketMouth& p) { return v2(p.round_centre[0]); });
+    write_array(out, "JawRoundC1", m, [&](const PocketMouth& p) { return v2(p.round_centre[1]); });
+    write_array(out, "JawNoseEnd0", m, [&](const PocketMouth& p) { return v2(p.nose_end[0]); });
+    write_array(out, "JawNoseEnd1", m, [&](const PocketMouth& p) { return v2(p.nose_end[1]); });
+    write_array(out, "JawFaceStart0", m, [&](const PocketMouth& p) { return v2(p.face_start[0]); });
+    write_array(out, "JawFaceStart1", m, [&](const PocketMouth& p) { return v2(p.face_start[1]); });
     write_array(out, "JawNose0", m, [&](const PocketMouth& p) { return v2(p.nose[0]); });
     write_array(out, "JawNose1", m, [&](const PocketMouth& p) { return v2(p.nose[1]); });
     write_array(out, "JawIn0", m, [&](const PocketMouth& p) { return v2(p.inward[0]); });

@@ -79,6 +79,7 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
   std::vector<NamedMoment> moments;
   std::map<std::tuple<int, int, int>, std::vector<Instant>> hits;  // by shot and the two balls
   std::map<std::pair<int, int>, std::vector<Instant>> cushions;    // by shot and ball
+  std::map<std::pair<int, int>, std::vector<Instant>> jaws;        // by shot and ball
   std::vector<int> cues_named;
   const int last = std::max(1, timeline.shot_count()) - 1;
   for (const Event& e : timeline.events()) {
@@ -101,6 +102,9 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
       case EventType::ball_rail:
         if (!e.balls.empty()) cushions[{e.shot, e.balls[0]}].push_back({e.time, e.index});
         break;
+      case EventType::ball_jaw:
+        if (!e.balls.empty()) jaws[{e.shot, e.balls[0]}].push_back({e.time, e.index});
+        break;
     }
   }
   for (int k = 1; k <= last; ++k)
@@ -115,11 +119,13 @@ std::vector<NamedMoment> nameable_moments(const Timeline& timeline) {
         moments.push_back(
             {shot_key_text(timeline, shot, CameraKeyKind::hit, a, b, *ordinal), found[k].time, found[k].event});
   }
-  for (const auto& [ball, found] : cushions)
-    for (std::size_t k = 0; k < found.size(); ++k)
-      if (const auto ordinal = key_ordinal(k + 1, found.size()))
-        moments.push_back({shot_key_text(timeline, ball.first, CameraKeyKind::cushion, ball.second, -1, *ordinal),
-                           found[k].time, found[k].event});
+  for (const auto& [kind, contacts] :
+       {std::pair{CameraKeyKind::cushion, &cushions}, std::pair{CameraKeyKind::jaw, &jaws}})
+    for (const auto& [ball, found] : *contacts)
+      for (std::size_t k = 0; k < found.size(); ++k)
+        if (const auto ordinal = key_ordinal(k + 1, found.size()))
+          moments.push_back(
+              {shot_key_text(timeline, ball.first, kind, ball.second, -1, *ordinal), found[k].time, found[k].event});
   std::vector<std::pair<int, int>> dropped;  // shot and ball: a key names a ball's first drop in a shot
   for (const PocketDrop& d : timeline.pocket_drops()) {
     const std::pair<int, int> which{timeline.shot_count() > 1 ? timeline.shot_at(d.time) : 0, d.ball};

@@ -33,7 +33,7 @@ std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& pa
 }
 
 std::string camera_key_label(const std::string& key, const std::vector<int>& painted) {
-  // The tokens after hit, cushion or drop (or its older spelling pocket) are ball indices; the rest stays
+  // The tokens after hit, cushion, jaw or drop (or its older spelling pocket) are ball indices; the rest stays
   // as written.
   std::string out;
   bool balls = false;
@@ -45,7 +45,7 @@ std::string camera_key_label(const std::string& key, const std::vector<int>& pai
     if (!out.empty()) out += ' ';
     const bool number = !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
     out += balls && number && word.size() < 6 ? ball_index_text(std::stoi(word), painted) : word;
-    if (word == "hit" || word == "cushion" || word == "drop" || word == "pocket") balls = true;
+    if (word == "hit" || word == "cushion" || word == "jaw" || word == "drop" || word == "pocket") balls = true;
     start = end + 1;
   }
   return out;
@@ -67,6 +67,7 @@ std::string event_label(const Event& event, const std::vector<int>& painted) {
       return out + " (group)";
     }
     case EventType::ball_rail: return "ball " + ball(0) + " \xE2\x80\x93 rail " + std::to_string(event.rail);
+    case EventType::ball_jaw: return "ball " + ball(0) + " \xE2\x80\x93 jaw of pocket " + std::to_string(event.pocket);
   }
   return "?";
 }
@@ -88,6 +89,7 @@ unsigned event_color(EventType type) {
     case EventType::cue: return IM_COL32(255, 236, 120, 255);
     case EventType::ball_ball: return IM_COL32(255, 142, 54, 255);
     case EventType::ball_rail: return IM_COL32(84, 188, 255, 255);
+    case EventType::ball_jaw: return IM_COL32(120, 230, 150, 255);
   }
   return IM_COL32_WHITE;
 }

@@ -267,6 +267,7 @@ std::vector<LegendKey> legend_keys(bool script_failed) {
                                  {event_color(EventType::cue), "cue", false},
                                  {event_color(EventType::ball_ball), "ball-ball", false},
                                  {event_color(EventType::ball_rail), "ball-rail", false},
+                                 {event_color(EventType::ball_jaw), "ball-jaw", false},
                                  {pocket_color(), "ball drops in a pocket (its key: drop I)", false},
                                  {camera_mode_color(CameraMode::follow), "follow", true},
                                  {camera_mode_color(CameraMode::look), "look", true},
@@ -631,6 +632,7 @@ class TimelinePainter {
       else
         list_.AddRectFilled(ImVec2(x + small / 2 - 1.5f, y + 1), ImVec2(x + small / 2 + 1.5f, y + small - 1), k.color);
       list_.AddText(fonts_.small, small, ImVec2(x + small + 4, y), kDim, k.name);
+      note({TimelineDrawn::Kind::legend_key, k.name, x, y, x + small + 4 + w, y + small});
       x += small + 4 + w + rows_.pad * 1.5f;
     }
     return y + (small + rows_.pad);
@@ -672,10 +674,10 @@ class TimelinePainter {
  private:
   struct EventList {
     std::vector<ListEntry> entries;
-    int count = 0;             ///< entries
-    int lines = 0;             ///< lines per column that fit below the list's top
-    int columns = 1;           ///< columns that fit across
-    int capacity = 0;          ///< lines * columns
+    int count = 0;               ///< entries
+    int lines = 0;               ///< lines per column that fit below the list's top
+    int columns = 1;             ///< columns that fit across
+    int capacity = 0;            ///< lines * columns
     float line = 0, column = 0;  ///< px
   };
 
@@ -820,9 +822,10 @@ class TimelinePainter {
   // As many label levels as the crowding needs, up to what the height allows.
   int label_levels_needed(float top, int lanes) const {
     const float spare = bottom_ - top - rows_.bands_height(lanes) - rows_.pad;
-    const int max_levels = layout_.compact   ? 1
-                           : layout_.fit_all ? kMaxLevels
-                                             : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, kMaxLevels);
+    const int max_levels = layout_.compact ? 1
+                           : layout_.fit_all
+                               ? kMaxLevels
+                               : std::clamp(static_cast<int>(spare * 0.3f / rows_.label_height), 1, kMaxLevels);
     for (int levels = 1; levels < max_levels; ++levels)
       if (event_numbers_fit(levels)) return levels;
     return max_levels;

@@ -80,11 +80,11 @@ TimelineData timeline_data(const Shot& shot);
 
 /// A piece of the picture drawn, as the tests check it: what and where.
 struct TimelineDrawn {
-  enum class Kind { shot_text, stroke, lane_label, list_line, list_more };
+  enum class Kind { shot_text, stroke, lane_label, list_line, list_more, legend_key };
   Kind kind = Kind::shot_text;
-  std::string text;                       ///< as drawn (elided text ends in "…"); empty for a stroke diagram
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;   ///< px
-  int shot = -1;                          ///< shot_text and stroke: the section's index
+  std::string text;                          ///< as drawn (elided text ends in "…"); empty for a stroke diagram
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;      ///< px
+  int shot = -1;                             ///< shot_text and stroke: the section's index
   const TimelineCameraSpan* span = nullptr;  ///< lane_label: the description it names
 };
 

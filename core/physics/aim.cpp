@@ -64,14 +64,61 @@ double first_touch(const Vec3& p, const Vec3& u, const Vec3& a, const Vec3& b, d
 /// shallow angle is narrowed by its near jaw. Sampled finely; the widest run of open directions is it.
 struct Window {
   double lo = 0, hi = 0;  ///< rad, offsets from `toward`
-  double toward = 0;      ///< rad, the direction from the target ball to the drop circle's centre
-  double distance = 0;    ///< m to the drop circle's centre
+  double toward =
+      0;  ///< rad, the direction from the target ball to the drop circle's centre (a cut pocket: its mouth's middle)
+  double distance = 0;  ///< m to that point
   bool open() const { return hi > lo; }
   double middle() const { return toward + (lo + hi) / 2; }
 };
 
+/// A cut pocket's window: the directions whose line crosses the mouth between the jaw points, passing
+/// each jaw's rounding by a ball's radius and reaching the mouth before it touches a cushion. Seen from
+/// straight in the window spans the mouth less a ball on each side; seen at a slant the near jaw closes it.
+Window cut_window(const Vec3& from, const PocketMouth& mouth, const std::vector<Rail>& rails, double R,
+                  bool clear_jaws = true) {
+  constexpr int kSamples = 400;
+  Window w;
+  const Vec3 middle = (mouth.nose[0] + mouth.nose[1]) / 2, to_middle = middle - from;
+  w.distance = to_middle.norm();
+  w.toward = angle_of(to_middle);
+  const double half = std::asin(std::min(1.0, 0.5 * mouth.mouth() / std::max(w.distance, 1e-9)));
+  int run = 0, best_run = 0, best_end = -1;
+  for (int k = 0; k <= kSamples; ++k) {
+    const double offset = -half + 2 * half * k / kSamples;
+    const Vec3 u = unit_at(w.toward + offset);
+    // Where the line crosses the mouth line, as a share from jaw 0 to jaw 1.
+    const Vec3 chord = mouth.nose[1] - mouth.nose[0], n(-chord.y(), chord.x(), 0);
+    const double facing = n.dot(u);
+    bool open = std::abs(facing) > 1e-12;
+    double crosses = 0;
+    if (open) {
+      crosses = n.dot(mouth.nose[0] - from) / facing;
+      const double share = chord.dot(from + crosses * u - mouth.nose[0]) / chord.squaredNorm();
+      open = crosses > 0 && share > 0 && share < 1;
+    }
+    for (int i = 0; open && clear_jaws && i < 2; ++i) {
+      const Vec3 c = flat(mouth.round_centre[i]) - from;
+      const double along = c.dot(u), miss = (c - along * u).norm();
+      open = along < 0 || miss > R + mouth.round_radius;
+    }
+    for (const Rail& rail : rails) open = open && first_touch(from, u, flat(rail.a), flat(rail.b), R) > crosses;
+    run = open ? run + 1 : 0;
+    if (run > best_run) {
+      best_run = run;
+      best_end = k;
+    }
+  }
+  // Seen at a steep slant no line clears both jaws, yet a ball may still go in off the far facing
+  // (TP 3.5): then every line through the mouth is tried, and the shots played decide.
+  if (best_run < 2) return clear_jaws ? cut_window(from, mouth, rails, R, false) : Window{0, 0, w.toward, w.distance};
+  w.hi = -half + 2 * half * best_end / kSamples;
+  w.lo = -half + 2 * half * (best_end - best_run + 1) / kSamples;
+  return w;
+}
+
 Window pocket_window(const Vec3& ball, const PocketMouth& mouth, const std::vector<Rail>& rails, double R) {
   constexpr int kSamples = 400;
+  if (mouth.cut) return cut_window(flat(ball), mouth, rails, R);
   Window w;
   const Vec3 from = flat(ball), to_centre = mouth.centre - from;
   w.distance = to_centre.norm();
@@ -105,6 +152,7 @@ struct Probe {
   bool hit = false;    ///< the target ball was struck by a ball
   double error = 0;    ///< rad, its departure direction less the wanted one (when hit)
   bool pots = false;   ///< it dropped into the wanted pocket
+  int jaws = 0;        ///< its contacts with the wanted pocket's jaws
   Vec3 target_rest{0, 0, 0};
   Vec3 struck_rest{0, 0, 0};
 };
@@ -162,9 +210,8 @@ class Solver {
   bool grazed_ = false;  ///< the secant wanted a thinner cut than the struck ball can make
 
   AimResult fail(std::string why) {
-    result_.failure =
-        "no heading pots " + ball_name(written_, target_) + " in " + pocket_name(written_.pockets, pocket_) + ": " +
-        std::move(why);
+    result_.failure = "no heading pots " + ball_name(written_, target_) + " in " +
+                      pocket_name(written_.pockets, pocket_) + ": " + std::move(why);
     result_.simulations = simulations_;
     return result_;
   }
@@ -219,6 +266,8 @@ class Solver {
       break;
     }
     for (const PocketDrop& d : shot.drops) p.pots = p.pots || (d.ball == target_ && d.pocket == pocket_);
+    for (const Event& e : shot.events)
+      if (e.type == EventType::ball_jaw && e.pocket == pocket_ && e.balls == std::vector<int>{target_}) ++p.jaws;
     p.target_rest = shot.segments[static_cast<std::size_t>(target_)].back().start.position;
     p.struck_rest = shot.segments[static_cast<std::size_t>(written_.cue().target)].back().start.position;
     return p;
@@ -302,9 +351,13 @@ class Solver {
     const Vec3 rest = flat(best.target_rest);
     const Vec3 from = flat(written_.ball(target_).position);
     const double travelled = (rest - from).dot(unit_at(want_));
-    const double needed = window_.distance - mouth_.drop_radius;
+    // How far it must roll to drop: to the drop circle, or a cut pocket's mouth and shelf.
+    const double needed = mouth_.cut ? window_.distance + mouth_.shelf() : window_.distance - mouth_.drop_radius;
+    if (best.jaws > 0)
+      return best.jaws > 1 ? "it rattles in the jaws of " + pocket_name(written_.pockets, pocket_) + " and stays out"
+                           : "it hits a jaw of " + pocket_name(written_.pockets, pocket_) + " and stays out";
     if (std::abs(best.error) < 1e-3 && travelled < needed)
-      return "it runs out of speed " + metres((rest - centre).norm() - mouth_.drop_radius) + " short";
+      return "it runs out of speed " + metres(needed - travelled) + " short";
     return "sent at the pocket, it stops " + metres((rest - centre).norm()) + " from the pocket's centre";
   }
 };

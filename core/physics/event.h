@@ -7,9 +7,9 @@
 
 namespace bsim {
 
-enum class EventType { start, cue, ball_ball, ball_rail, end };
+enum class EventType { start, cue, ball_ball, ball_rail, ball_jaw, end };
 
-/// The name used in events.json: "start", "cue", "ball-ball", "ball-rail", "end".
+/// The name used in events.json: "start", "cue", "ball-ball", "ball-rail", "ball-jaw", "end".
 std::string_view to_string(EventType type);
 
 /// One contact of a group collision (several balls in contact resolved together, group.h).
@@ -25,10 +25,12 @@ struct Event {
   int index = 0;    ///< position in Timeline::events(), 0 = start
   double time = 0;  ///< s
   EventType type = EventType::start;
-  std::vector<int> balls;  ///< file-order indices: cue [target], ball-ball [i, j, ...] ascending, ball-rail [i]
-  int rail = -1;           ///< ball-rail: index into Scene::rails
-  double speed = 0;        ///< m/s, closing speed along the contact normal (cue: the ball's speed)
-  Vec3 where{0, 0, 0};     ///< m, the contact point (cue: the struck ball's centre)
+  /// file-order indices: cue [target], ball-ball [i, j, ...] ascending, ball-rail and ball-jaw [i]
+  std::vector<int> balls;
+  int rail = -1;        ///< ball-rail: index into Scene::rails; ball-jaw: the rail whose end is the jaw
+  int pocket = -1;      ///< ball-jaw: index into Scene::pockets (a facing or a rounded jaw point of its jaws)
+  double speed = 0;     ///< m/s, closing speed along the contact normal (cue: the ball's speed)
+  Vec3 where{0, 0, 0};  ///< m, the contact point (cue: the struck ball's centre)
   std::vector<BallState> before, after;  ///< states of `balls` just before and after
   /// ball-ball: its contacts in the order they began: a pair resolved alone has one (the event's own
   /// time, speed and point), a group collision one per contact, `balls` then listing every ball of the

@@ -21,6 +21,7 @@ std::string_view to_string(EventType type) {
     case EventType::cue: return "cue";
     case EventType::ball_ball: return "ball-ball";
     case EventType::ball_rail: return "ball-rail";
+    case EventType::ball_jaw: return "ball-jaw";
     case EventType::end: return "end";
   }
   return "?";

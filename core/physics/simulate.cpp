@@ -1,6 +1,7 @@
 #include "simulate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -21,15 +22,15 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-enum class Kind { transition, ball_ball, cushion, cushion_end, pocket };
+enum class Kind { transition, ball_ball, cushion, cushion_end, jaw_face, jaw_round, pocket };
 
 /// A possible next event. It is stale once a ball it involves has changed since it was computed.
 struct Candidate {
   double time = 0;
   int rank = 0;  ///< at one instant: transitions, then contacts, then pocket entries
   int a = 0;     ///< the ball (ball-ball: the lower index)
-  int b = 0;     ///< the other ball, or ball count + rail index, or the pocket index
-  int end = 0;   ///< cushion_end: 0 for the rail's first end point, 1 for its second
+  int b = 0;     ///< the other ball, or ball count + rail index, or the pocket index (jaws: its pocket)
+  int end = 0;   ///< cushion_end: 0 for the rail's first end point, 1 for its second; jaws: the jaw
   Kind kind = Kind::transition;
   unsigned version_a = 0, version_b = 0;
 
@@ -70,6 +71,10 @@ class Simulator {
       reach_.push_back(cushion_reach(R, rail.a.z()));
       rail_boxes_.push_back({rail.a.cwiseMin(rail.b), rail.a.cwiseMax(rail.b)});
     }
+    contact_rails_ = scene.rails;
+    rail_end_is_jaw_.assign(scene.rails.size(), {0, 0});
+    for (int p = 0; p < static_cast<int>(scene.pockets.size()); ++p)
+      add_jaws(p, pocket_mouth(scene.pockets[static_cast<std::size_t>(p)], scene.rails));
   }
 
   SimulationResult run() {
@@ -126,6 +131,43 @@ class Simulator {
   }
   std::vector<double> reach_;
   std::vector<SweptBox> rail_boxes_;
+  /// The rails' nose lines as the physics meets them: a cut pocket's jaw end stops where its rounding begins.
+  std::vector<Rail> contact_rails_;
+  std::vector<std::array<char, 2>> rail_end_is_jaw_;  ///< a rail end that is a jaw point: its rounding stands for it
+
+  /// One jaw of a cut pocket (table.h, PocketMouth): its facing, a straight cushion from the rounding into
+  /// the pocket, and its rounded jaw point, a round one; both answered by the cushion model.
+  struct Jaw {
+    int pocket = -1;
+    int rail = -1;  ///< the rail whose end it is (its nose height, its reach)
+    Rail face;      ///< playing side on the right of a -> b, as a rail's
+    Vec3 round{0, 0, 0};
+    double round_radius = 0;
+    SweptBox box{};  ///< both, seen from above
+  };
+  std::vector<Jaw> jaws_;
+
+  void add_jaws(int pocket, const PocketMouth& m) {
+    if (!m.cut) return;
+    for (int i = 0; i < 2; ++i) {
+      const auto r = static_cast<std::size_t>(m.rail[i]);
+      const double h = scene_.rails[r].a.z();
+      Jaw jaw;
+      jaw.pocket = pocket;
+      jaw.rail = m.rail[i];
+      jaw.face = {Vec3(m.face_start[i].x(), m.face_start[i].y(), h), Vec3(m.tangent[i].x(), m.tangent[i].y(), h), {}};
+      const Vec3 dir = flat(jaw.face.b - jaw.face.a);
+      if (Vec3(dir.y(), -dir.x(), 0).dot(m.inward[i]) < 0) std::swap(jaw.face.a, jaw.face.b);
+      jaw.round = Vec3(m.round_centre[i].x(), m.round_centre[i].y(), h);
+      jaw.round_radius = m.round_radius;
+      const Vec3 grow(m.round_radius, m.round_radius, 0);
+      jaw.box = {jaw.face.a.cwiseMin(jaw.face.b).cwiseMin(jaw.round - grow),
+                 jaw.face.a.cwiseMax(jaw.face.b).cwiseMax(jaw.round + grow)};
+      jaws_.push_back(jaw);
+      (m.at_b[i] ? contact_rails_[r].b : contact_rails_[r].a) = Vec3(m.nose_end[i].x(), m.nose_end[i].y(), h);
+      rail_end_is_jaw_[r][m.at_b[i] ? 1 : 0] = 1;
+    }
+  }
   std::priority_queue<Candidate, std::vector<Candidate>, Later> queue_;
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
@@ -137,6 +179,7 @@ class Simulator {
   unsigned version(int i) const { return version_[static_cast<std::size_t>(i)]; }
   const MotionSegment& current(int i) const { return segments_[static_cast<std::size_t>(i)].back(); }
   const Rail& rail(int r) const { return scene_.rails[static_cast<std::size_t>(r)]; }
+  const Rail& contact_rail(int r) const { return contact_rails_[static_cast<std::size_t>(r)]; }
 
   BallState state_at(int i, double t) const {
     const MotionSegment& seg = current(i);
@@ -254,9 +297,18 @@ class Simulator {
       for (int r = 0; r < static_cast<int>(scene_.rails.size()); ++r) {
         const double reach = reach_[static_cast<std::size_t>(r)];
         if (!boxes_within(box, rail_boxes_[static_cast<std::size_t>(r)], reach)) continue;
-        consider(next_ball_cushion(path, rail(r), reach, horizon), Kind::cushion, 1, n_ + r, 0);
-        consider(next_ball_point(path, rail(r).a, reach, horizon), Kind::cushion_end, 1, n_ + r, 0);
-        consider(next_ball_point(path, rail(r).b, reach, horizon), Kind::cushion_end, 1, n_ + r, 1);
+        consider(next_ball_cushion(path, contact_rail(r), reach, horizon), Kind::cushion, 1, n_ + r, 0);
+        const auto& jawed = rail_end_is_jaw_[static_cast<std::size_t>(r)];
+        if (!jawed[0]) consider(next_ball_point(path, rail(r).a, reach, horizon), Kind::cushion_end, 1, n_ + r, 0);
+        if (!jawed[1]) consider(next_ball_point(path, rail(r).b, reach, horizon), Kind::cushion_end, 1, n_ + r, 1);
+      }
+      for (int j = 0; j < static_cast<int>(jaws_.size()); ++j) {
+        const Jaw& jaw = jaws_[static_cast<std::size_t>(j)];
+        const double reach = reach_[static_cast<std::size_t>(jaw.rail)];
+        if (!boxes_within(box, jaw.box, reach)) continue;
+        consider(next_ball_cushion(path, jaw.face, reach, horizon), Kind::jaw_face, 1, jaw.pocket, j);
+        consider(next_ball_point(path, jaw.round, reach + jaw.round_radius, horizon), Kind::jaw_round, 1, jaw.pocket,
+                 j);
       }
     }
     // Pockets even for a ball at rest: one left over a hole drops.
@@ -408,6 +460,8 @@ class Simulator {
       case Kind::ball_ball: handle_ball_ball(c); return;
       case Kind::cushion:
       case Kind::cushion_end: handle_cushion(c); return;
+      case Kind::jaw_face:
+      case Kind::jaw_round: handle_jaw(c); return;
       case Kind::pocket: handle_pocket(c); return;
     }
     BSIM_EXPECT(false, "an event candidate of no known kind");
@@ -445,31 +499,56 @@ class Simulator {
     const double t = c.time;
     const int r = c.b - n_;
     const Rail& cushion = rail(r);
-    BallState s = state_at(c.a, t);
-    const double h = cushion.a.z(), reach = reach_[static_cast<std::size_t>(r)];
-    Vec3 toward;
-    double overlap;
-    if (c.kind == Kind::cushion) {
-      const Vec3 dir = Vec3(cushion.b.x() - cushion.a.x(), cushion.b.y() - cushion.a.y(), 0).normalized();
-      toward = Vec3(-dir.y(), dir.x(), 0);
-      overlap = reach + toward.dot(Vec3(s.position.x() - cushion.a.x(), s.position.y() - cushion.a.y(), 0));
-    } else {
-      const Vec3& point = c.end == 0 ? cushion.a : cushion.b;
-      const Vec3 to(point.x() - s.position.x(), point.y() - s.position.y(), 0);
-      toward = to.normalized();
-      overlap = reach - to.norm();
-    }
+    const BallState s = state_at(c.a, t);
+    const double reach = reach_[static_cast<std::size_t>(r)];
+    const auto [toward, overlap] = c.kind == Kind::cushion
+                                       ? line_contact(s, cushion, reach)
+                                       : point_contact(s, c.end == 0 ? cushion.a : cushion.b, reach);
+    bounce(c.a, t, s, toward, overlap, cushion.a.z(), EventType::ball_rail, r, -1);
+  }
+
+  /// A ball meets a cut pocket's facing (Kind::jaw_face) or rounded jaw point (Kind::jaw_round): the
+  /// cushion model answers it as it answers a rail, and it is a ball-jaw event of that pocket.
+  void handle_jaw(const Candidate& c) {
+    const double t = c.time;
+    const Jaw& jaw = jaws_[static_cast<std::size_t>(c.end)];
+    const BallState s = state_at(c.a, t);
+    const double reach = reach_[static_cast<std::size_t>(jaw.rail)];
+    const auto [toward, overlap] = c.kind == Kind::jaw_face ? line_contact(s, jaw.face, reach)
+                                                            : point_contact(s, jaw.round, reach + jaw.round_radius);
+    bounce(c.a, t, s, toward, overlap, jaw.face.a.z(), EventType::ball_jaw, jaw.rail, jaw.pocket);
+  }
+
+  /// The unit normal from the ball's centre towards a nose line, and how far the ball overlaps it.
+  static std::pair<Vec3, double> line_contact(const BallState& s, const Rail& line, double reach) {
+    const Vec3 dir = Vec3(line.b.x() - line.a.x(), line.b.y() - line.a.y(), 0).normalized();
+    const Vec3 toward(-dir.y(), dir.x(), 0);
+    return {toward, reach + toward.dot(Vec3(s.position.x() - line.a.x(), s.position.y() - line.a.y(), 0))};
+  }
+
+  /// The same towards a point (a cushion's end, a jaw's rounding) whose surface is `reach` from the centre.
+  static std::pair<Vec3, double> point_contact(const BallState& s, const Vec3& point, double reach) {
+    const Vec3 to(point.x() - s.position.x(), point.y() - s.position.y(), 0);
+    return {to.normalized(), reach - to.norm()};
+  }
+
+  /// The ball touching a cushion (a rail or a jaw) bounces off it by the cushion model; a numbered event
+  /// when it closes fast enough to be heard.
+  void bounce(int i, double t, BallState s, const Vec3& toward, double overlap, double h, EventType type, int r,
+              int pocket) {
     const double speed = cushion_closing_speed(s, toward, h, params_);
     if (!(speed > 0)) {
-      schedule_own(c.a, t);
+      schedule_own(i, t);
       return;
     }
     if (overlap > 0) s.position -= overlap * toward;  // back to touching (see separate())
     const BallState ns = resolve_cushion(s, toward, h);
-    if (speed >= kMinEventSpeed)
-      add_event(EventType::ball_rail, t, {c.a}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
-    begin_segment(c.a, t, ns);
-    reschedule({c.a}, t);
+    if (speed >= kMinEventSpeed) {
+      add_event(type, t, {i}, r, speed, cushion_contact_point(s, toward, h, params_), {s}, {ns});
+      events_.back().pocket = pocket;
+    }
+    begin_segment(i, t, ns);
+    reschedule({i}, t);
   }
 
   /// A ball's centre crosses a pocket's drop circle: it falls and comes to rest in the pocket.

@@ -53,6 +53,12 @@ std::optional<Box> cushion_box(const Scene& scene) {
   return box;
 }
 
+/// Whether plan point p lies in one of the cut pockets' openings (between the facings or over the hole).
+bool on_a_shelf(const std::vector<PocketMouth>& mouths, const Vec3& p) {
+  return std::any_of(mouths.begin(), mouths.end(),
+                     [&](const PocketMouth& m) { return m.in_throat(p, kEscapeTolerance); });
+}
+
 bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
 
 }  // namespace
@@ -61,6 +67,9 @@ std::optional<TableEscape> first_escape(const Scene& scene, const SimulationResu
   const std::optional<Box> box = cushion_box(scene);
   if (!box) return std::nullopt;
   const PhysicsParams& params = scene.physics;
+  std::vector<PocketMouth> mouths;
+  for (const Pocket& pocket : scene.pockets)
+    if (const PocketMouth m = pocket_mouth(pocket, scene.rails); m.cut) mouths.push_back(m);
   std::optional<TableEscape> first;
   for (std::size_t i = 0; i < result.segments.size(); ++i) {
     const auto& list = result.segments[i];
@@ -74,9 +83,11 @@ std::optional<TableEscape> first_escape(const Scene& scene, const SimulationResu
         for (double side : {1.0, -1.0}) {
           // side * (p + v t + a t^2 / 2) beyond side * the box's edge, plus the tolerance.
           const double edge = side > 0 ? box->hi[axis] : box->lo[axis];
-          const std::optional<double> t = first_positive(side * (path.p[axis] - edge) - kEscapeTolerance,
-                                                         side * path.v[axis], side * 0.5 * path.a[axis],
-                                                         std::max(0.0, end - seg.t0));
+          const std::optional<double> t =
+              first_positive(side * (path.p[axis] - edge) - kEscapeTolerance, side * path.v[axis],
+                             side * 0.5 * path.a[axis], std::max(0.0, end - seg.t0));
+          // A ball on a cut pocket's shelf (between its facings, short of the hole) is on the table.
+          if (t && on_a_shelf(mouths, path.at(*t))) continue;
           if (t && (!first || seg.t0 + *t < first->time))
             first = TableEscape{static_cast<int>(i), seg.t0 + *t, path.at(*t)};
         }
@@ -95,8 +106,9 @@ std::string escape_message(const Scene& scene, const TableEscape& escape, double
   if (box)
     message += ": its centre is beyond the cushions (x from " + number(box->lo[0]) + " to " + number(box->hi[0]) +
                ", y from " + number(box->lo[1]) + " to " + number(box->hi[1]) + ")";
-  return message + "; nothing was written. The scene check lets no ball off a table whose cushions close round it, "
-                   "so this is a fault of the program: please report it with the scene";
+  return message +
+         "; nothing was written. The scene check lets no ball off a table whose cushions close round it, "
+         "so this is a fault of the program: please report it with the scene";
 }
 
 }  // namespace bsim

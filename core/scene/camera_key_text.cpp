@@ -16,15 +16,15 @@ struct KindWord {
 };
 
 /// The kinds in the order messages list them.
-constexpr KindWord kKindWords[] = {
-    {CameraKeyKind::start, "start"}, {CameraKeyKind::cue, "cue"},         {CameraKeyKind::end, "end"},
-    {CameraKeyKind::hit, "hit"},     {CameraKeyKind::cushion, "cushion"}, {CameraKeyKind::drop, "drop"},
-    {CameraKeyKind::at, "at"}};
+constexpr KindWord kKindWords[] = {{CameraKeyKind::start, "start"},     {CameraKeyKind::cue, "cue"},
+                                   {CameraKeyKind::end, "end"},         {CameraKeyKind::hit, "hit"},
+                                   {CameraKeyKind::cushion, "cushion"}, {CameraKeyKind::jaw, "jaw"},
+                                   {CameraKeyKind::drop, "drop"},       {CameraKeyKind::at, "at"}};
 
 /// The older spelling of `drop I`, read as it and never written: `pocket I` (a ball I, not a pocket).
 constexpr KindWord kOlderDropWord = {CameraKeyKind::drop, "pocket"};
 
-/// The ordinals that pick a later hit or cushion contact: `second` is 2, ..., `fifth` 5; `last` the last.
+/// The ordinals that pick a later hit, cushion or jaw contact: `second` is 2, ..., `fifth` 5; `last` the last.
 constexpr std::string_view kOrdinalWords[] = {"second", "third", "fourth", "fifth", "last"};
 
 template <class Number>
@@ -72,11 +72,27 @@ std::string_view camera_key_ordinal_word(int ordinal) {
   return "";
 }
 
-bool takes_ordinal(CameraKeyKind kind) { return kind == CameraKeyKind::hit || kind == CameraKeyKind::cushion; }
+bool takes_ordinal(CameraKeyKind kind) {
+  return kind == CameraKeyKind::hit || kind == CameraKeyKind::cushion || kind == CameraKeyKind::jaw;
+}
 
 int ball_operands(CameraKeyKind kind) {
   if (kind == CameraKeyKind::hit) return 2;
-  return kind == CameraKeyKind::cushion || kind == CameraKeyKind::drop ? 1 : 0;
+  return kind == CameraKeyKind::cushion || kind == CameraKeyKind::jaw || kind == CameraKeyKind::drop ? 1 : 0;
+}
+
+std::vector<std::string_view> camera_key_ordinal_kinds() {
+  std::vector<std::string_view> words;
+  for (const KindWord& k : kKindWords)
+    if (takes_ordinal(k.kind)) words.push_back(k.word);
+  return words;
+}
+
+std::string word_choice(const std::vector<std::string_view>& words, std::string_view quote) {
+  std::string out;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    out.append(i == 0 ? "" : (i + 1 == words.size() ? " or " : ", ")).append(quote).append(words[i]).append(quote);
+  return out;
 }
 
 bool takes_seconds(CameraKeyKind kind) { return kind == CameraKeyKind::at; }
@@ -93,8 +109,8 @@ std::vector<std::string_view> camera_key_first_words() {
 std::string camera_key_list() {
   std::string out;
   for (const KindWord& k : kKindWords) out.append(out.empty() ? "" : ", ").append(k.word);
-  return out + " ('pocket I' is the older spelling of 'drop I'), with second, third, fourth, fifth or last before "
-               "hit or cushion, and 'shot K' before any";
+  return out + " ('pocket I' is the older spelling of 'drop I'), with second, third, fourth, fifth or last before " +
+         word_choice(camera_key_ordinal_kinds(), "") + ", and 'shot K' before any";
 }
 
 std::string camera_key_text(const CameraKey& key, int event) {

@@ -21,14 +21,18 @@ std::optional<CameraKeyKind> camera_key_kind(std::string_view word);
 /// for CameraKeyKind::event.
 std::string_view camera_key_word(CameraKeyKind kind);
 
-/// The ordinal a word before `hit` or `cushion` names: 2 for "second" to 5 for "fifth",
+/// The ordinal a word before `hit`, `cushion` or `jaw` names: 2 for "second" to 5 for "fifth",
 /// CameraKey::kLast for "last"; none for any other word.
 std::optional<int> camera_key_ordinal(std::string_view word);
 /// The word of an ordinal: "" for 1 (the first, written without one), "second" to "fifth", "last".
 std::string_view camera_key_ordinal_word(int ordinal);
-/// Whether an ordinal word may stand before the kind: hit and cushion.
+/// Whether an ordinal word may stand before the kind: hit, cushion and jaw.
 bool takes_ordinal(CameraKeyKind kind);
-/// How many ball indices follow the kind's word: 2 for hit, 1 for cushion and drop, else 0.
+/// The words of the kinds an ordinal may stand before, in the order messages list them: hit, cushion, jaw.
+std::vector<std::string_view> camera_key_ordinal_kinds();
+/// "a, b or c" (each word between `quote`s: "'hit', 'cushion' or 'jaw'"), for messages.
+std::string word_choice(const std::vector<std::string_view>& words, std::string_view quote);
+/// How many ball indices follow the kind's word: 2 for hit, 1 for cushion, jaw and drop, else 0.
 int ball_operands(CameraKeyKind kind);
 /// Whether seconds follow the kind's word: at.
 bool takes_seconds(CameraKeyKind kind);
@@ -38,10 +42,10 @@ inline constexpr std::string_view kShotWord = "shot";
 
 /// Every word a key may start with: the kinds' words, the older "pocket", then the ordinals, then kShotWord.
 std::vector<std::string_view> camera_key_first_words();
-/// The keys for a message: "start, cue, end, hit, cushion, drop, at ('pocket I' is ...), with second, ...".
+/// The keys for a message: "start, cue, end, hit, cushion, jaw, drop, at ('pocket I' is ...), with second, ...".
 std::string camera_key_list();
 
-/// A key as it is written after `event`: "start", "second hit 0 5", "last cushion 3", "at 1.5" (its
+/// A key as it is written after `event`: "start", "second hit 0 5", "last cushion 3", "jaw 2", "at 1.5" (its
 /// seconds as the shortest text that reads back exactly), "shot 2 cue" (a key with a shot, its number
 /// from 1); an event number (kind event) as `event` ("7", "65535").
 std::string camera_key_text(const CameraKey& key, int event = 0);

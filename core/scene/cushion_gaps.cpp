@@ -32,14 +32,23 @@ bool covered(const Vec3& p, const Vec3& u, double t0, double t1, const std::vect
   return reached >= t1 - kGapTolerance;
 }
 
+/// Whether a cut pocket's jaws close the gap from a to b: its jaw points are the gap's two ends, and the
+/// facings behind them lead a ball to its hole.
+bool jaws_close(const Vec3& a, const Vec3& b, const std::vector<Pocket>& pockets) {
+  const auto at = [](const Vec3& p, const Vec3& q) { return (flat(p) - flat(q)).norm() <= kGapTolerance; };
+  return std::any_of(pockets.begin(), pockets.end(), [&](const Pocket& p) {
+    return p.cut && ((at(p.jaw[0], a) && at(p.jaw[1], b)) || (at(p.jaw[0], b) && at(p.jaw[1], a)));
+  });
+}
+
 /// next[i]: the rail whose first end follows rail i's second end, the closest pairs taken first.
 std::vector<int> pair_ends(const std::vector<Rail>& rails) {
   const int n = static_cast<int>(rails.size());
   std::vector<std::tuple<double, int, int>> pairs;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
-      pairs.emplace_back((flat(rails[static_cast<std::size_t>(i)].b) - flat(rails[static_cast<std::size_t>(j)].a)).norm(),
-                         i, j);
+      pairs.emplace_back(
+          (flat(rails[static_cast<std::size_t>(i)].b) - flat(rails[static_cast<std::size_t>(j)].a)).norm(), i, j);
   std::sort(pairs.begin(), pairs.end());
   std::vector<int> next(rails.size(), -1);
   std::vector<char> taken(rails.size(), 0);
@@ -98,12 +107,12 @@ std::vector<CushionGap> open_cushion_gaps(const std::vector<Rail>& rails, const 
       if (reach[u] == 0 || reach[v] == 0) continue;
       const Vec3 a = flat(from.b), b = flat(to.a);
       const double width = (b - a).norm();
-      if (width <= reach[u] + reach[v] + kGapTolerance) continue;
-      if (!covered(a, (b - a) / width, reach[u], width - reach[v], pockets))
-        gaps.push_back({i, next[u], a, b, false});
+      if (width <= reach[u] + reach[v] + kGapTolerance || jaws_close(a, b, pockets)) continue;
+      if (!covered(a, (b - a) / width, reach[u], width - reach[v], pockets)) gaps.push_back({i, next[u], a, b, false});
     }
   }
-  std::sort(gaps.begin(), gaps.end(), [](const CushionGap& x, const CushionGap& y) { return x.from_rail < y.from_rail; });
+  std::sort(gaps.begin(), gaps.end(),
+            [](const CushionGap& x, const CushionGap& y) { return x.from_rail < y.from_rail; });
   return gaps;
 }
 

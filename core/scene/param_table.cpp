@@ -27,6 +27,14 @@ const std::vector<ParamSpec> kSpecs = {
     {"e_tip", "", "tip-ball coefficient of restitution (stroke)", 0, false, 1},
     {"cue_end_mass", "kg", "the stick's effective end mass, which sets the squirt (stroke; 0: none)", 0, false,
      kNoLimit},
+    {"corner_mouth", "m", "the standard table's corner pockets: between the jaw points (WPA 4.5-4.625 in)", 0, true,
+     kNoLimit},
+    {"side_mouth", "m", "the standard table's side pockets: between the jaw points (WPA 5-5.125 in)", 0, true,
+     kNoLimit},
+    {"corner_shelf", "m", "the corner pockets' shelf, from the mouth line to the hole (BCA 1 5/8-1 7/8 in)", 0, false,
+     kNoLimit},
+    {"side_shelf", "m", "the side pockets' shelf, from the mouth line to the hole (BCA 0-3/8 in)", 0, false, kNoLimit},
+    {"jaw_radius", "m", "the rounding of the standard pockets' jaw points", 0, false, kNoLimit},
     {"table_speed", "", "the seed's table speed: sets mu_roll to 1/table_speed", 0, true, kNoLimit},
 };
 
@@ -89,6 +97,16 @@ void apply_param(PhysicsParams& p, std::string_view name, double value) {
     p.e_tip = value;
   else if (name == "cue_end_mass")
     p.cue_end_mass = value;
+  else if (name == "corner_mouth")
+    p.corner_mouth = value;
+  else if (name == "side_mouth")
+    p.side_mouth = value;
+  else if (name == "corner_shelf")
+    p.corner_shelf = value;
+  else if (name == "side_shelf")
+    p.side_shelf = value;
+  else if (name == "jaw_radius")
+    p.jaw_radius = value;
   else if (name == "table_speed")
     p.mu_roll = 1.0 / value;
 }

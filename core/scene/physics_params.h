@@ -28,6 +28,20 @@ struct PhysicsParams {
   /// (4/3) E* sqrt(R*) for phenolic resin (E = 5.84 GPa, nu = 0.34) and 57.15 mm balls.
   double k_hertz = 5.26e8;
 
+  // The standard table's pockets (table.h, pocket_mouth): a scene's own `pocket` lines have none of these.
+  // WPA equipment specifications: a corner mouth is 4.5 to 4.625 in between the jaw points, a side mouth
+  // 5 to 5.125 in; these are the mouths of Dr. Dave Alciatore's pocket models (TP 3.6 corner 4.5875 in,
+  // TP 3.5 side 5.0625 in), so the effective targets can be read against his tables.
+  double corner_mouth = 0.1165225;  ///< m between a corner pocket's jaw points (4.5875 in)
+  double side_mouth = 0.1285875;    ///< m between a side pocket's jaw points (5.0625 in)
+  /// m, the shelf: from the mouth line's middle to the slate's edge along the pocket's axis. BCA pocket
+  /// specifications: corner 1 5/8 to 1 7/8 in (the least of it here), side 0 to 3/8 in (TP 3.5's 3/16 in).
+  double corner_shelf = 0.041275;
+  double side_shelf = 0.0047625;
+  /// m, the rounding of each jaw point, where the cushion's nose turns into the facing: the cloth's wrap
+  /// over the cut rubber (pooltool's cushion nose radius, 5 mm; Dr. Dave's models take a sharp point).
+  double jaw_radius = 0.005;
+
   /// Ball-ball friction coefficient at a relative slip speed of the contact points (m/s): mu_ball when
   /// set, else Alciatore's fit to measured throw, TP A-14 ("Throw", billiards.colostate.edu; also
   /// pooltool's default ball-ball resolver): 9.951e-3 + 0.108 exp(-1.088 v).

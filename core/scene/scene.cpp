@@ -1,6 +1,8 @@
 #include "scene.h"
 
+#include <algorithm>
 #include <array>
+#include <numbers>
 
 namespace bsim {
 
@@ -34,18 +36,49 @@ const StandardPocketName* standard_name(const std::vector<Pocket>& pockets, int 
 
 }  // namespace
 
-std::vector<Rail> standard_rails() {
+std::vector<Rail> standard_rails(const PhysicsParams& params) {
   const TableSpec& t = kStandardTable;
-  const double h = t.nose_height, x = t.half_length, y = t.half_width, c = t.corner_pocket_radius,
-               s = t.side_pocket_radius;
+  // The rails end at the jaw points: a corner's two mouth / sqrt 2 from the noses' corner.
+  const double h = t.nose_height, x = t.half_length, y = t.half_width, c = params.corner_mouth / std::numbers::sqrt2,
+               s = params.side_mouth / 2;
   auto rail = [h](double ax, double ay, double bx, double by) { return Rail{Vec3(ax, ay, h), Vec3(bx, by, h), {}}; };
   return {rail(-x + c, y, -s, y), rail(s, y, x - c, y),     rail(x, y - c, x, -y + c),
           rail(x - c, -y, s, -y), rail(-s, -y, -x + c, -y), rail(-x, -y + c, -x, y - c)};
 }
 
-std::vector<Pocket> standard_pockets() {
+std::vector<Pocket> standard_pockets(const PhysicsParams& params) {
   const TableSpec& t = kStandardTable;
-  const double x = t.half_length, y = t.half_width, c = t.corner_pocket_radius, s = t.side_pocket_radius;
+  const double x = t.half_length, y = t.half_width, c = params.corner_mouth / std::numbers::sqrt2,
+               s = params.side_mouth / 2;
+  // The hole's centre lies on the axis, the shelf and the hole's radius behind the mouth line's middle.
+  auto cut = [&](PocketKind kind, Vec3 jaw0, Vec3 jaw1, Vec3 axis) {
+    const bool corner = kind == PocketKind::corner;
+    const double hole = corner ? t.jaws.corner_hole : t.jaws.side_hole;
+    const double shelf = corner ? params.corner_shelf : params.side_shelf;
+    Pocket p;
+    p.radius = hole;
+    p.center = (jaw0 + jaw1) / 2 + (shelf + hole) * axis;
+    p.cut = true;
+    p.kind = kind;
+    p.jaw[0] = jaw0;
+    p.jaw[1] = jaw1;
+    p.axis = axis;
+    p.jaw_radius = params.jaw_radius;
+    return p;
+  };
+  const double d = std::numbers::sqrt2 / 2;
+  const PocketKind corner = PocketKind::corner, side = PocketKind::side;
+  return {cut(corner, Vec3(-x + c, y, 0), Vec3(-x, y - c, 0), Vec3(-d, d, 0)),
+          cut(side, Vec3(s, y, 0), Vec3(-s, y, 0), Vec3(0, 1, 0)),
+          cut(corner, Vec3(x, y - c, 0), Vec3(x - c, y, 0), Vec3(d, d, 0)),
+          cut(corner, Vec3(x - c, -y, 0), Vec3(x, -y + c, 0), Vec3(d, -d, 0)),
+          cut(side, Vec3(-s, -y, 0), Vec3(s, -y, 0), Vec3(0, -1, 0)),
+          cut(corner, Vec3(-x, -y + c, 0), Vec3(-x + c, -y, 0), Vec3(-d, -d, 0))};
+}
+
+std::vector<Pocket> bare_standard_pockets() {
+  const TableSpec& t = kStandardTable;
+  const double x = t.half_length, y = t.half_width, c = t.jaws.bare_corner_radius, s = t.jaws.bare_side_radius;
   auto pocket = [](double px, double py, double r) { return Pocket{Vec3(px, py, 0), r, {}}; };
   return {pocket(-x, y, c), pocket(0, y, s), pocket(x, y, c), pocket(x, -y, c), pocket(0, -y, s), pocket(-x, -y, c)};
 }
@@ -67,12 +100,8 @@ std::optional<int> standard_pocket_number(std::string_view word) {
 }
 
 bool standard_pocket_set(const std::vector<Pocket>& pockets) {
-  const std::vector<Pocket> standard = standard_pockets();
-  if (pockets.size() != standard.size()) return false;
-  for (std::size_t k = 0; k < standard.size(); ++k)
-    if (pockets[k].loc.known() || pockets[k].center != standard[k].center || pockets[k].radius != standard[k].radius)
-      return false;
-  return true;
+  if (pockets.size() != kStandardPocketNames.size()) return false;
+  return std::none_of(pockets.begin(), pockets.end(), [](const Pocket& p) { return p.loc.known(); });
 }
 
 std::string pocket_name(const std::vector<Pocket>& pockets, int pocket) {

@@ -33,10 +33,18 @@ struct Rail {
   SourceLoc loc;
 };
 
+/// A pocket: the hole a ball drops through (its drop circle). The standard table's are cut as real ones
+/// (table.h, PocketMouth): two jaws on the cushions' ends and a shelf in front of the hole. A scene's own
+/// `pocket` line is a hole alone.
 struct Pocket {
-  Vec3 center{0, 0, 0};  ///< m, on the bed plane
-  double radius = 0;     ///< m
+  Vec3 center{0, 0, 0};  ///< m, on the bed plane: the hole's centre
+  double radius = 0;     ///< m, the hole's
   SourceLoc loc;
+  bool cut = false;                              ///< jaws and a shelf, as the standard table's
+  PocketKind kind = PocketKind::bare;            ///< cut: a corner or a side pocket
+  Vec3 jaw[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< cut: the jaw points, where rails end
+  Vec3 axis{1, 0, 0};                            ///< cut: unit, from the mouth into the pocket
+  double jaw_radius = 0;                         ///< cut: m, each jaw point's rounding
 };
 
 /// A `stroke` line (extension): how the stick meets the struck ball. The ball's velocity and spin
@@ -80,16 +88,16 @@ struct Cue {
 enum class CameraMode { hover, look, follow };
 
 /// What a camera description starts at: the seed's event number, or a key naming a moment of the
-/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, drop I (older spelling
-/// pocket I), at T, each
+/// shot (extensions): start, cue, end, [ordinal] hit I J, [ordinal] cushion I, [ordinal] jaw I (a
+/// pocket's jaw, not a rail), drop I (older spelling pocket I), at T, each
 /// optionally after `shot K` to count within the K-th shot.
-enum class CameraKeyKind { event, start, cue, end, hit, cushion, drop, at };
+enum class CameraKeyKind { event, start, cue, end, hit, cushion, drop, at, jaw };
 
 struct CameraKey {
   static constexpr int kLast = -1;  ///< ordinal of `last`
   CameraKeyKind kind = CameraKeyKind::event;
-  int ordinal = 1;         ///< hit/cushion: 1 (the first) to 5 (`fifth`), or kLast
-  int a = -1, b = -1;      ///< hit: the two balls as written; cushion/drop: the ball in a (file-order indices)
+  int ordinal = 1;         ///< hit/cushion/jaw: 1 (the first) to 5 (`fifth`), or kLast
+  int a = -1, b = -1;      ///< hit: the two balls as written; cushion/jaw/drop: the ball in a (file-order indices)
   double seconds = 0;      ///< at: s after the start of the shot (as text: camera_key_text.h)
   SourceLoc a_loc, b_loc;  ///< the ball index tokens
   /// `shot K` before the key (an extension): the 0-based shot it counts within (K - 1); -1 without
@@ -146,8 +154,10 @@ struct Scene {
 };
 
 /// The standard 9-foot table's (kStandardTable's) cushions and pockets, in the spec's numbering.
-std::vector<Rail> standard_rails();
-std::vector<Pocket> standard_pockets();
+std::vector<Rail> standard_rails(const PhysicsParams& params = {});
+std::vector<Pocket> standard_pockets(const PhysicsParams& params = {});
+/// The standard pockets' places as plain drop circles, for a table of the scene's own cushions.
+std::vector<Pocket> bare_standard_pockets();
 
 /// Pockets in words. The standard table's six have names by where they are (top is +y, right +x, as
 /// the table is seen from above); a scene's own `pocket` lines have only their numbers.

@@ -378,8 +378,9 @@ class Parser {
     // `ball N X Y` then a keyword (or the end of the file): at rest on the bed, upright.
     if (at_end() || is_top_keyword(peek().text)) {
       if (options_.strict)
-        fail(keyword.loc, "the short ball line ('ball N X Y', at rest on the bed) is an extension that --strict "
-                          "rejects; expected 'ball N X Y Z VX VY VZ W QX QY QZ'");
+        fail(keyword.loc,
+             "the short ball line ('ball N X Y', at rest on the bed) is an extension that --strict "
+             "rejects; expected 'ball N X Y Z VX VY VZ W QX QY QZ'");
       tokens.position_z = tokens.position_x;
       tokens.short_form = true;
       short_balls_.push_back(scene_.balls.size());
@@ -591,11 +592,13 @@ class Parser {
     if (word == kShotWord) word = shot_prefix(key);
     if (const std::optional<int> ordinal = camera_key_ordinal(word)) {
       key.ordinal = *ordinal;
-      const Token& what = take("'hit' or 'cushion' after '" + std::string(word) + "'");
+      const std::vector<std::string_view> kinds = camera_key_ordinal_kinds();
+      const std::string choice = word_choice(kinds, "'") + " after '" + std::string(word) + "'";
+      const Token& what = take(choice);
       const std::optional<CameraKeyKind> kind = camera_key_kind(what.text);
       if (!kind || !takes_ordinal(*kind))
-        fail_at_value(what, "expected 'hit' or 'cushion' after '" + std::string(word) + "', found " +
-                                quote_token(what.text) + did_you_mean(what.text, {"hit", "cushion"}));
+        fail_at_value(what,
+                      "expected " + choice + ", found " + quote_token(what.text) + did_you_mean(what.text, kinds));
       word = what.text;
     }
     key.kind = *camera_key_kind(word);
@@ -636,6 +639,7 @@ class Parser {
           fail(key.b_loc, "expected two different balls for 'hit', found ball " + std::to_string(key.a) + " twice");
         break;
       case CameraKeyKind::cushion: key.a = ball_index("the ball that meets the cushion", key.a_loc); break;
+      case CameraKeyKind::jaw: key.a = ball_index("the ball that meets a pocket's jaw", key.a_loc); break;
       case CameraKeyKind::drop: key.a = ball_index("the pocketed ball", key.a_loc); break;
       case CameraKeyKind::at: {
         SourceLoc loc;
@@ -667,14 +671,18 @@ class Parser {
       error(scene_.camera_loc, "the camera description has no 'endcamera'; expected 'endcamera', found end of file");
     for (const auto& [name, value] : params_) apply_param(scene_.physics, name, value);
     for (std::size_t i : short_balls_) scene_.balls[i].position.z() = scene_.physics.ball_radius;
-    if (scene_.rails.empty()) scene_.rails = standard_rails();
+    const bool own_rails = !scene_.rails.empty();
+    if (!own_rails) scene_.rails = standard_rails(scene_.physics);
     if (!scene_.pockets.empty())
       for (const SourceLoc& loc : named_pockets_)
-        error(loc, "pocket names name the standard table's six pockets, and this scene has its own 'pocket' lines "
-                   "(the first on line " +
-                       std::to_string(scene_.pockets.front().loc.line) + "): give the pocket's number, 0 to " +
-                       std::to_string(scene_.pockets.size() - 1) + " in file order");
-    if (scene_.pockets.empty()) scene_.pockets = standard_pockets();
+        error(loc,
+              "pocket names name the standard table's six pockets, and this scene has its own 'pocket' lines "
+              "(the first on line " +
+                  std::to_string(scene_.pockets.front().loc.line) + "): give the pocket's number, 0 to " +
+                  std::to_string(scene_.pockets.size() - 1) + " in file order");
+    // The standard pockets' jaws end the standard cushions; round a table of the scene's own cushions
+    // they are plain drop circles.
+    if (scene_.pockets.empty()) scene_.pockets = own_rails ? bare_standard_pockets() : standard_pockets(scene_.physics);
     if (rack_) add_rack();
     for (std::size_t i = 0; i < map_.spins.size(); ++i) {
       const auto index = static_cast<std::size_t>(map_.spins[i].ball);
@@ -689,7 +697,7 @@ class Parser {
     const RackLine& line = *rack_;
     RackSpec spec = line.spec;
     spec.radius = scene_.physics.ball_radius;
-    Scene alone;  // the rack by itself on the scene's table, checked as ball lines are
+    Scene alone;         // the rack by itself on the scene's table, checked as ball lines are
     alone.cues.clear();  // so only the balls' places are checked
     alone.physics = scene_.physics;
     alone.rails = scene_.rails;
@@ -730,7 +738,7 @@ class Parser {
   bool in_camera_ = false;
   bool camera_seen_ = false;
   bool too_many_errors_ = false;
-  bool broken_cue_ = false;                ///< the last `cue` line had an error
+  bool broken_cue_ = false;               ///< the last `cue` line had an error
   std::vector<std::size_t> short_balls_;  ///< `ball N X Y` lines: z is the ball radius, once params are read
   std::size_t error_count_ = 0;
   Scene scene_;

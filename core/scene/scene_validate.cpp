@@ -103,10 +103,12 @@ class Validator {
   void cue_ball_struck(const Cue& cue) {
     const Ball& struck = scene_.balls[static_cast<std::size_t>(cue.target)];
     if (struck.number == 0) return;
-    const auto white = std::find_if(scene_.balls.begin(), scene_.balls.end(), [](const Ball& b) { return b.number == 0; });
+    const auto white =
+        std::find_if(scene_.balls.begin(), scene_.balls.end(), [](const Ball& b) { return b.number == 0; });
     if (white == scene_.balls.end()) return;  // no cue ball: striking a numbered ball is the only way
     warning(cue.target_loc, "the cue strikes ball index " + std::to_string(cue.target) + ", the " +
-                                std::to_string(struck.number) + ", not the cue ball; the cue ball (painted 0) is ball index " +
+                                std::to_string(struck.number) +
+                                ", not the cue ball; the cue ball (painted 0) is ball index " +
                                 std::to_string(white - scene_.balls.begin()) +
                                 " (indices count the `ball` lines and a `rack` line's balls in file order)");
   }
@@ -194,6 +196,23 @@ class Validator {
     }
   }
 
+  /// Whether the ball's centre stands in a cut pocket's opening, clear of its jaws: past the mouth line
+  /// (on the shelf, or over the hole: over_pocket then warns), between the facings and their roundings.
+  bool in_pocket_opening(const Vec3& p) const {
+    for (const Pocket& pocket : scene_.pockets) {
+      const PocketMouth m = pocket_mouth(pocket, scene_.rails);
+      if (!m.cut) continue;
+      const double reach = nose_reach(radius_, scene_.rails[static_cast<std::size_t>(m.rail[0])].a.z());
+      const Vec3 q = flat(p);
+      bool clear = (q - (m.nose[0] + m.nose[1]) / 2).dot(m.axis) > 0 && m.in_throat(q);
+      for (int i = 0; clear && i < 2; ++i)
+        clear = (q - m.face_start[i]).dot(m.inward[i]) >= reach - kPlacementTolerance &&
+                (q - flat(m.round_centre[i])).norm() >= reach + m.round_radius - kPlacementTolerance;
+      if (clear) return true;
+    }
+    return false;
+  }
+
   /// Outside is: beyond the box the cushions span (a radius in from each side; exact for a
   /// rectangular table), behind the nearest cushion, or cutting into one. The nearest cushion decides
   /// because, on any table shape, the closest stretch of boundary tells which side a point is on.
@@ -211,6 +230,7 @@ class Validator {
     const double t = kPlacementTolerance;
     const double lo_x = min_x + radius_, hi_x = max_x - radius_, lo_y = min_y + radius_, hi_y = max_y - radius_;
     const bool encloses = lo_x < hi_x && lo_y < hi_y;  // a lone cushion or a wall spans no area
+    if (in_pocket_opening(p)) return true;
     if (encloses && (p.x() < lo_x - t || p.x() > hi_x + t || p.y() < lo_y - t || p.y() > hi_y + t)) {
       error(tokens.position_x, "expected the ball inside the cushions (centre x from " + fmt(lo_x) + " to " +
                                    fmt(hi_x) + ", y from " + fmt(lo_y) + " to " + fmt(hi_y) +
@@ -290,17 +310,17 @@ class Validator {
       return scene_.balls.empty() ? map_.end : scene_.balls.front().loc;
     };
     if (!enclosed && !scene_.rails.empty())
-      error(blame(0), "the cushions do not close round the bed: no run of `rail` lines goes round it clockwise, so a "
-                      "ball rolls off the table; give the table's edge as rails clockwise seen from above, with a "
-                      "`pocket` in each gap");
+      error(blame(0),
+            "the cushions do not close round the bed: no run of `rail` lines goes round it clockwise, so a "
+            "ball rolls off the table; give the table's edge as rails clockwise seen from above, with a "
+            "`pocket` in each gap");
     const std::string replaced =
         own_pockets && !own_rails ? " (the scene's own `pocket` lines replace all six of the standard table's)" : "";
     for (const CushionGap& gap : gaps) {
       const Rail& from = scene_.rails[static_cast<std::size_t>(gap.from_rail)];
       if (gap.under) {
-        error(blame(gap.from_rail), rail_name(from, static_cast<std::size_t>(gap.from_rail)) +
-                                        " has its nose at z = " + fmt(from.a.z()) +
-                                        ", so a ball (radius " + fmt(radius_) +
+        error(blame(gap.from_rail), rail_name(from, static_cast<std::size_t>(gap.from_rail)) + " has its nose at z = " +
+                                        fmt(from.a.z()) + ", so a ball (radius " + fmt(radius_) +
                                         ") rolls under it off the table; expected a nose above the bed and below "
                                         "the ball's diameter, " +
                                         fmt(2 * radius_) + " m");
@@ -308,8 +328,8 @@ class Validator {
       }
       const Vec3 middle = (gap.a + gap.b) / 2;
       const double half = (gap.b - gap.a).norm() / 2;
-      const std::string where = "from (" + fmt(gap.a.x()) + ", " + fmt(gap.a.y()) + ") to (" + fmt(gap.b.x()) +
-                                ", " + fmt(gap.b.y()) + ")";
+      const std::string where =
+          "from (" + fmt(gap.a.x()) + ", " + fmt(gap.a.y()) + ") to (" + fmt(gap.b.x()) + ", " + fmt(gap.b.y()) + ")";
       const std::string between = gap.from_rail == gap.to_rail
                                       ? "round the ends of " + rail_name(from, static_cast<std::size_t>(gap.from_rail))
                                       : "between rails " + std::to_string(gap.from_rail) + " and " +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "scene.h"
 
@@ -34,7 +35,69 @@ bool PocketMouth::in_throat(const Vec3& p, double grow) const {
   return true;
 }
 
+namespace {
+
+/// The rail end at plan point p (within round-off), as a jaw: its nose's direction into the pocket and
+/// the cushion's outward normal; none when no rail ends there.
+std::optional<JawEnd> rail_end_at(const Vec3& p, const std::vector<Rail>& rails) {
+  for (std::size_t i = 0; i < rails.size(); ++i) {
+    const Vec3 d = flat(rails[i].b - rails[i].a);
+    if (d.norm() < 1e-9) continue;
+    const Vec3 along = d.normalized();
+    const Vec3 out(-along.y(), along.x(), 0);  // the playing side is on the right of a -> b
+    for (bool at_b : {false, true})
+      if ((flat(at_b ? rails[i].b : rails[i].a) - flat(p)).norm() < 1e-9)
+        return JawEnd{static_cast<int>(i), at_b, flat(p), at_b ? along : Vec3(-along), out, 0};
+  }
+  return std::nullopt;
+}
+
+/// A cut pocket: the jaws at its own jaw points, each rounded and faced at the WPA angle, the facings
+/// running back to the hole. Bare (kind bare) when the rails do not end at its jaw points.
+PocketMouth cut_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
+  const PocketJaws& spec = kStandardTable.jaws;
+  PocketMouth m;
+  m.centre = flat(pocket.center);
+  m.drop_radius = pocket.radius;
+  m.throat_centre = m.centre;
+  m.throat_radius = pocket.radius;
+  std::optional<JawEnd> end[2] = {rail_end_at(pocket.jaw[0], rails), rail_end_at(pocket.jaw[1], rails)};
+  if (!end[0] || !end[1]) return m;
+  m.kind = pocket.kind;
+  m.cut = true;
+  m.facing_deg = m.kind == PocketKind::side ? spec.side_facing_deg : spec.corner_facing_deg;
+  m.axis = flat(pocket.axis).normalized();
+  m.round_radius = pocket.jaw_radius;
+  const double turn = m.turn(), half = radians(m.facing_deg) / 2;
+  const double tangent = m.round_radius / std::tan(half);  // from the jaw point to where the rounding ends
+  for (int i = 0; i < 2; ++i) {
+    const JawEnd& e = *end[i];
+    m.rail[i] = e.rail;
+    m.at_b[i] = e.at_b;
+    m.nose[i] = e.nose;
+    m.facing[i] = std::cos(turn) * e.along + std::sin(turn) * e.out;
+    Vec3 normal(-m.facing[i].y(), m.facing[i].x(), 0);
+    if (normal.dot(end[1 - i]->nose - e.nose) < 0) normal = -normal;  // towards the other jaw
+    m.inward[i] = normal;
+    // The rounding sits in the cushion, on the bisector of the facing angle between the nose (running
+    // back from the pocket) and the facing.
+    m.round_centre[i] = e.nose + m.round_radius / std::sin(half) * Vec3(m.facing[i] - e.along).normalized();
+    m.nose_end[i] = e.nose - tangent * e.along;
+    m.face_start[i] = e.nose + tangent * m.facing[i];
+    // The facing runs back until it meets the hole's edge (or, should it pass the hole, abreast of it).
+    const Vec3 to = m.centre - e.nose;
+    const double along = to.dot(m.facing[i]), miss2 = to.squaredNorm() - along * along;
+    const double r2 = m.drop_radius * m.drop_radius;
+    const double reach = miss2 < r2 ? along - std::sqrt(r2 - miss2) : along;
+    m.tangent[i] = e.nose + std::max(reach, 2 * tangent) * m.facing[i];
+  }
+  return m;
+}
+
+}  // namespace
+
 PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
+  if (pocket.cut) return cut_mouth(pocket, rails);
   const PocketJaws& spec = kStandardTable.jaws;
   PocketMouth m;
   m.centre = flat(pocket.center);

@@ -32,16 +32,24 @@ struct WoodRail {
   double top_rise = 0;  ///< m, the wood's top above the cushion nose
 };
 
-/// The pockets' jaws, throats and cups, after the WPA equipment specifications ("Pocket openings and
-/// measurement"): each cushion ends where its nose changes direction into the pocket, and is cut,
-/// with its wood backing, along a facing at a fixed horizontal angle to the nose.
+/// The pockets' jaws, shelves, holes and cups, after the WPA and BCA equipment specifications: each
+/// cushion ends at a jaw point, where its nose changes direction into the pocket, and is cut, with its
+/// wood backing, along a facing at a fixed horizontal angle to the nose. Behind the mouth (the line
+/// between the two jaw points) the bed goes on as a shelf to the slate's edge, where a round hole drops
+/// into the cup. The mouths, the shelves and the jaw points' rounding are `param`s (PhysicsParams).
 struct PocketJaws {
   double corner_facing_deg = 0;  ///< deg between a corner pocket's cushion nose and its facing
   double side_facing_deg = 0;    ///< and a side pocket's
-  double side_within_deg = 0;    ///< two jaws' noses this close to one line make a side pocket
-  double near_end = 0;           ///< m beyond the drop circle a nose end still counts as a jaw
-  double liner = 0;              ///< m, the leather liner lining the throat through the wood and the cup
-  double lip_round = 0;          ///< m, the radius of the slate's edge the cloth wraps over into the hole
+  double corner_hole = 0;        ///< m, the radius of the hole cut in the slate behind a corner's shelf
+  double side_hole = 0;          ///< and behind a side pocket's
+  /// m, the drop circles of the standard pockets on a table whose cushions are the scene's own (`rail`
+  /// lines): round holes centred on the noses' corners and middles, with no jaws of their own.
+  double bare_corner_radius = 0;
+  double bare_side_radius = 0;
+  double side_within_deg = 0;  ///< two jaws' noses this close to one line make a side pocket
+  double near_end = 0;         ///< m beyond a bare pocket's drop circle a nose end still counts as a jaw
+  double liner = 0;            ///< m, the leather liner lining the throat through the wood and the cup
+  double lip_round = 0;        ///< m, the radius of the slate's edge the cloth wraps over into the hole
 };
 
 /// The diamond sights inlaid in the wood's top.
@@ -54,12 +62,10 @@ struct Sights {
 };
 
 struct TableSpec {
-  double half_length = 0;           ///< m, half the bed from nose to nose along x
-  double half_width = 0;            ///< m, half the bed from nose to nose along y
-  double nose_height = 0;           ///< m, the cushion nose above the bed
-  double corner_pocket_radius = 0;  ///< m, the drop circle of a corner pocket, centred on the nose corner
-  double side_pocket_radius = 0;    ///< m, the drop circle of a side pocket
-  double bed_height = 0;            ///< m, the bed above the floor
+  double half_length = 0;  ///< m, half the bed from nose to nose along x
+  double half_width = 0;   ///< m, half the bed from nose to nose along y
+  double nose_height = 0;  ///< m, the cushion nose above the bed
+  double bed_height = 0;   ///< m, the bed above the floor
   CushionProfile cushion;
   WoodRail rail;
   Sights sights;
@@ -78,11 +84,6 @@ inline constexpr TableSpec kStandardTable{
     // WPA: the nose stands 62.5 % to 64.5 % of the ball's diameter above the bed; 63.5 % of
     // 57.15 mm is 36.3 mm (1 7/16 in).
     .nose_height = 0.0363,
-    // The drop circles the physics uses, centred on the nose corners and the side cushions' gap
-    // (16 cm and 13 cm across): a ball whose centre crosses one falls. A simplification of the
-    // WPA's mouths, 4.5 to 4.625 in between the corner jaws, side mouths about 1/2 in wider.
-    .corner_pocket_radius = 0.08,
-    .side_pocket_radius = 0.065,
     // WPA: the bed stands 29 1/4 to 31 in (0.743 to 0.787 m) above the floor.
     .bed_height = 0.76,
     .cushion =
@@ -126,6 +127,14 @@ inline constexpr TableSpec kStandardTable{
             // is narrower than its mouth.
             .corner_facing_deg = 142,
             .side_facing_deg = 104,
+            // The slate's holes of Dr. Dave Alciatore's pocket models (TP 3.6 corner 2.75 in, TP 3.5
+            // side 3 in in radius); the WPA and BCA give the shelf in front of the hole, not the hole.
+            .corner_hole = 0.06985,
+            .side_hole = 0.0762,
+            // A table of the scene's own cushions keeps simple drop circles at the standard places,
+            // 16 and 13 cm across.
+            .bare_corner_radius = 0.08,
+            .bare_side_radius = 0.065,
             .side_within_deg = 10,
             .near_end = 0.01,
             // Leather liners are 5 to 8 mm; BCA pocket specifications: the slate's drop point is
@@ -200,30 +209,42 @@ struct SightPlace {
 /// no two cushion ends meet (then its opening is its drop circle).
 enum class PocketKind { corner, side, bare };
 
-/// One pocket as both front ends build it, seen from above (z = 0): the physics' drop circle, and for a
-/// corner or side pocket its two jaws (the cushion ends), each cut along a facing, and the throat
-/// through the wood, whose sides go on along the facings and whose back is round. Below the bed a cup
-/// (a leather drop pocket) under the drop circle and the throat holds the pocketed balls.
+/// One pocket as the physics and both front ends build it, seen from above (z = 0). A standard pocket
+/// (corner or side, cut as the WPA's are): two jaws, each a jaw point on a cushion's nose rounded to
+/// `round_radius`, and a facing running from it into the pocket at the WPA angle; the shelf between the
+/// facings; the hole in the slate (its drop circle) behind it, which the throat through the wood ends in.
+/// The physics meets the facings and the rounded jaw points as cushions and drops a ball whose centre
+/// crosses the drop circle. A bare pocket (a scene's own `pocket` line) is its drop circle alone; the
+/// pictures still cut the cushion ends near it along facings, which the physics does not see. Below
+/// the bed a cup (a leather drop pocket) under the hole and the throat holds the pocketed balls.
 struct PocketMouth {
   PocketKind kind = PocketKind::bare;
-  Vec3 centre{0, 0, 0};                             ///< the drop circle's centre (the physics')
-  double drop_radius = 0;                           ///< m, the physics' drop circle
-  double facing_deg = 0;                            ///< the WPA facing angle of its kind (0 for a bare pocket)
-  int rail[2] = {-1, -1};                           ///< the scene's rails whose ends are the jaws
-  bool at_b[2] = {false, false};                    ///< the jaw is that rail's b end (else its a end)
-  Vec3 nose[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};    ///< the jaws' nose ends, where the nose turns into the pocket
-  Vec3 facing[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< unit, along each facing from its nose end into the rail
+  bool cut = false;               ///< a real pocket's jaws the physics meets (else: drawn only, or none)
+  Vec3 centre{0, 0, 0};           ///< the drop circle's centre: the hole in the slate
+  double drop_radius = 0;         ///< m, the drop circle
+  double facing_deg = 0;          ///< the WPA facing angle of its kind (0 for a bare pocket)
+  int rail[2] = {-1, -1};         ///< the scene's rails whose ends are the jaws
+  bool at_b[2] = {false, false};  ///< the jaw is that rail's b end (else its a end)
+  Vec3 nose[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};    ///< the jaw points, where the nose turns into the pocket
+  Vec3 facing[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< unit, along each facing from its jaw point into the rail
   Vec3 inward[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< unit, each facing's normal pointing into the opening
   Vec3 axis{1, 0, 0};                               ///< unit, from the mouth into the pocket
   Vec3 throat_centre{0, 0, 0};  ///< the round back of the throat (the drop circle's centre for a bare pocket)
   double throat_radius = 0;     ///< m
   Vec3 tangent[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< where each facing meets the round back
+  // A cut pocket's jaws as the physics meets them:
+  double round_radius = 0;                                ///< m, each jaw point's rounding
+  Vec3 round_centre[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};  ///< its centre, inside the cushion
+  Vec3 nose_end[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};      ///< where the rounding leaves the nose line
+  Vec3 face_start[2] = {Vec3(0, 0, 0), Vec3(0, 0, 0)};    ///< where it meets the facing
 
   bool jawed() const { return kind != PocketKind::bare; }
   /// rad the facing turns from the nose's direction into the pocket: 180 degrees less the facing angle.
   double turn() const { return radians(180 - facing_deg); }
   /// m between the jaws' nose ends (what the WPA calls the mouth).
   double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
+  /// m from the mouth line's middle to the slate's edge along the axis (a cut pocket's shelf).
+  double shelf() const { return (centre - (nose[0] + nose[1]) / 2).dot(axis) - drop_radius; }
   /// Whether plan point p (z ignored) lies in the opening the jaws and the throat leave, grown by `grow`
   /// m: between the facings behind the mouth, or in the round back.
   bool in_throat(const Vec3& p, double grow = 0) const;
@@ -254,7 +275,8 @@ struct TableLayout {
   std::vector<CushionEnd> ends_b;    ///< and its b end
 };
 
-/// The pocket's jaws, throat and cup around one drop circle, from the scene's nose lines.
+/// The pocket's jaws, throat and cup: a cut pocket's from its own jaw points and the rails that end at
+/// them; a bare pocket's drawn around its drop circle from the nose ends near it.
 PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails);
 
 TableLayout table_layout(const Scene& scene);

@@ -60,11 +60,11 @@ std::vector<KeyInstant> hits(const Timeline& timeline, const Scope& scope, int a
   return found;
 }
 
-std::vector<KeyInstant> cushions(const Timeline& timeline, const Scope& scope, int ball) {
+/// Every ball-rail (cushion) or ball-jaw (jaw) event of `ball`, in time order.
+std::vector<KeyInstant> contacts(const Timeline& timeline, const Scope& scope, EventType type, int ball) {
   std::vector<KeyInstant> found;
   for (const Event& e : timeline.events())
-    if (e.type == EventType::ball_rail && scope.holds(e) && !e.balls.empty() && e.balls[0] == ball)
-      found.push_back({e.time, e.index});
+    if (e.type == type && scope.holds(e) && !e.balls.empty() && e.balls[0] == ball) found.push_back({e.time, e.index});
   return found;
 }
 
@@ -130,12 +130,15 @@ void resolve_in(const CameraKey& key, const Timeline& timeline, const Scope& sco
         never((found.empty() ? balls + " never touch" : balls + " touch " + times(found.size())) + scope.where);
       return;
     }
-    case CameraKeyKind::cushion: {
-      const std::vector<KeyInstant> found = cushions(timeline, scope, key.a);
+    case CameraKeyKind::cushion:
+    case CameraKeyKind::jaw: {
+      const bool jaw = key.kind == CameraKeyKind::jaw;
+      const std::vector<KeyInstant> found =
+          contacts(timeline, scope, jaw ? EventType::ball_jaw : EventType::ball_rail, key.a);
       r.instant = pick(found, key.ordinal);
-      const std::string ball = "ball " + std::to_string(key.a);
+      const std::string ball = "ball " + std::to_string(key.a), what = jaw ? "pocket's jaw" : "cushion";
       if (!r.instant)
-        never((found.empty() ? ball + " meets no cushion" : ball + " meets a cushion " + times(found.size())) +
+        never((found.empty() ? ball + " meets no " + what : ball + " meets a " + what + " " + times(found.size())) +
               scope.where);
       return;
     }

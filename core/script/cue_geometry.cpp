@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "camera_view.h"
 #include "cue_pose.h"
@@ -23,7 +24,28 @@ double lowest_z(const Vec3& centre, const Vec3& axis, double radius) {
   return centre.z() - radius * std::sqrt(std::max(0.0, 1.0 - axis.z() * axis.z()));
 }
 
-double cushion_gap(const CuePose& stick, const Rail& rail) {
+/// Points on the lower half of the stick's round, at each sample of its axis, tested against the wood.
+constexpr int kUnderPoints = 9;
+
+/// What stands round the bed for the stick to clear, seen from above: the blocks behind the cushions'
+/// noses (cushion and wood), within the table's frame, less the pockets' openings.
+struct Blocks {
+  TableRect frame;                    ///< the table's outer edge
+  std::vector<PocketMouth> openings;  ///< each pocket's opening through the cushions and the wood
+
+  /// Whether plan point q of a block `length` m long (a rail from a, along `along`, its back `outward`)
+  /// is solid: behind the nose, within the cushion and wood, in the frame and in no pocket's opening.
+  bool solid(const Vec3& q, const Vec3& a, const Vec3& along, const Vec3& outward, double length) const {
+    const double reach = kStandardTable.rail_reach();
+    const double out = (q - a).dot(outward), at = (q - a).dot(along);
+    // Past the rail's ends the block reaches on round the table's corner (the frame bounds it).
+    if (out < 0 || out > reach || at < -2 * reach || at > length + 2 * reach) return false;
+    if (q.x() < frame.x0 || q.x() > frame.x1 || q.y() < frame.y0 || q.y() > frame.y1) return false;
+    return std::none_of(openings.begin(), openings.end(), [&](const PocketMouth& m) { return m.in_throat(q); });
+  }
+};
+
+double cushion_gap(const CuePose& stick, const Rail& rail, const Blocks& blocks) {
   const Vec3 a(rail.a.x(), rail.a.y(), 0), b(rail.b.x(), rail.b.y(), 0);
   const double length = (b - a).norm();
   if (!(length > 0)) return std::numeric_limits<double>::infinity();
@@ -32,15 +54,24 @@ double cushion_gap(const CuePose& stick, const Rail& rail) {
   // The block behind the nose: cushion and wood, up to the wood's top (above the cushion's).
   const double top = 0.5 * (rail.a.z() + rail.b.z()) + kStandardTable.rail.top_rise;
   const double reach = kStandardTable.rail_reach();
+  // Across the stick: level and square to it, and square to both, downwards.
+  Vec3 side = stick.axis.cross(Vec3::UnitZ());
+  side = side.norm() > 1e-9 ? Vec3(side.normalized()) : Vec3::UnitX();
+  Vec3 down = stick.axis.cross(side).normalized();
+  if (down.z() > 0) down = -down;
   double gap = std::numeric_limits<double>::infinity();
   for (double s = 0; s <= kCueLength + 1e-9; s += kAxisStep) {
     const Vec3 point = stick.tip + s * stick.axis;
     const double radius = stick_radius(s);
-    Vec3 flat = point - a;
-    flat.z() = 0;
-    const double out = flat.dot(outward), at = flat.dot(along);
-    if (out < -radius || out > reach || at < -reach || at > length + reach) continue;
-    gap = std::min(gap, lowest_z(point, stick.axis, radius) - top);
+    const double out = (flat(point) - a).dot(outward), at = (flat(point) - a).dot(along);
+    if (out < -radius || out > reach + radius || at < -2 * reach - radius || at > length + 2 * reach + radius) continue;
+    // The stick's underside, from one side round the bottom to the other: each of its points over the
+    // solid must clear the wood's top.
+    for (int k = 0; k < kUnderPoints; ++k) {
+      const double angle = std::numbers::pi * k / (kUnderPoints - 1);
+      const Vec3 p = point + radius * (std::cos(angle) * side + std::sin(angle) * down);
+      if (blocks.solid(flat(p), a, along, outward, length)) gap = std::min(gap, p.z() - top);
+    }
   }
   return gap;
 }
@@ -66,7 +97,9 @@ double stick_clearance(const CuePose& stick, const Scene& scene, const std::vect
                        double ball_radius, int skip) {
   const Vec3 butt = stick.tip + kCueLength * stick.axis;
   double gap = std::min(lowest_z(stick.tip, stick.axis, kCueTipRadius), lowest_z(butt, stick.axis, kCueButtRadius));
-  for (const Rail& rail : scene.rails) gap = std::min(gap, cushion_gap(stick, rail));
+  const TableLayout layout = table_layout(scene);
+  const Blocks blocks{layout.wood_outer, layout.pockets};
+  for (const Rail& rail : scene.rails) gap = std::min(gap, cushion_gap(stick, rail, blocks));
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (static_cast<int>(i) == skip || balls[i].motion == Motion::pocketed) continue;
     gap = std::min(gap, stick_ball_gap(stick, balls[i].position, ball_radius));

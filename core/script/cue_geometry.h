@@ -16,7 +16,9 @@ double stick_radius(double s);
 /// The smallest gap, m, between the stick and the bed, the cushions and the balls of `balls`
 /// (pocketed ones ignored), skipping the ball `skip` (-1 for none); negative where it cuts in.
 /// Each cushion is the block the table model puts behind its nose line: the cushion and the wood
-/// together (kStandardTable.rail_reach() wide, beyond the line's ends too), as high as the wood's top.
+/// together (kStandardTable.rail_reach() wide, beyond the line's ends round the table's corners, within
+/// its frame), as high as the wood's top, less the pockets' openings (table_layout's PocketMouth: the
+/// jaws' facings, the shelf and the hole), over which the stick may go lower.
 double stick_clearance(const CuePose& stick, const Scene& scene, const std::vector<BallState>& balls,
                        double ball_radius, int skip = -1);
 

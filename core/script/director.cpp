@@ -5,9 +5,11 @@
 //   1. the approach and the stroke from behind and above the cue ball, down the line of aim (the
 //      "shooter's view" of broadcast pool), held until the cue ball meets its first object ball;
 //   2. the ball that matters (the last object ball pocketed; else the cue ball if it is pocketed;
-//      else the fastest object ball) on its run to the pocket, with a `look` from a high place (or a
-//      `follow` when the ball is slow enough to walk beside), keyed at the contact that sets it going;
-//   3. a wide shot of the whole table as the balls settle, from the moment it drops.
+//      else the object ball that last met a pocket's jaw; else the fastest object ball) on its run to
+//      the pocket, with a `look` from a high place (or a `follow` when the ball is slow enough to walk
+//      beside), keyed at the contact that sets it going;
+//   3. a wide shot of the whole table as the balls settle, from the moment it drops (else from its
+//      last contact: a rattle in a pocket's jaws is watched to its last knock before the camera goes wide).
 // Film grammar it keeps:
 //   - the 180-degree rule: the camera stays on one side of the line of action (here the subject's
 //     path at each description's key) from one description to the next (D. Arijon, "Grammar of the
@@ -182,7 +184,8 @@ ShotSamples sample_shot(const Timeline& timeline, double radius) {
 }
 
 /// The ball that matters in shot `shot`: the last object ball pocketed, else the cue ball if it drops,
-/// else the fastest object ball, else the cue ball.
+/// else the object ball that last met a pocket's jaw (it rattled out, or glanced off a jaw point: the
+/// near miss is the shot's story), else the fastest object ball, else the cue ball.
 int ball_that_matters(const Timeline& timeline, const ShotSamples& samples, int shot, int cue_ball) {
   const std::vector<double>& drop_time = samples.drop_time[static_cast<std::size_t>(shot)];
   const std::vector<double>& peak_speed = samples.peak_speed[static_cast<std::size_t>(shot)];
@@ -194,6 +197,10 @@ int ball_that_matters(const Timeline& timeline, const ShotSamples& samples, int 
       subject = d.ball;
     }
   if (subject < 0 && std::isfinite(drop_time[static_cast<std::size_t>(cue_ball)])) subject = cue_ball;
+  if (subject < 0)
+    for (const Event& e : timeline.events())  // in time order: the last one's ball stays
+      if (e.type == EventType::ball_jaw && e.shot == shot && !e.balls.empty() && e.balls[0] != cue_ball)
+        subject = e.balls[0];
   if (subject < 0) {
     double fastest = 0.05;
     for (int b = 0; b < timeline.ball_count(); ++b)
@@ -359,7 +366,10 @@ class Director {
         layout_(table_layout(scene)),
         radius_(scene.physics.ball_radius),
         samples_(sample_shot(timeline, radius_)) {
-    for (int k = 0; k < std::max(1, timeline.shot_count()); ++k) judges_.emplace_back(scene, timeline, samples_, k);
+    for (int k = 0; k < std::max(1, timeline.shot_count()); ++k) {
+      const int cue_ball = scene.cues[std::min(static_cast<std::size_t>(k), scene.cues.size() - 1)].target;
+      judges_.emplace_back(scene, timeline, samples_, k, ball_that_matters(timeline, samples_, k, cue_ball));
+    }
   }
 
   DirectedCamera run();
@@ -407,6 +417,18 @@ class Director {
   }
   const Judge& judge(const Stroke& stroke) const { return judges_[static_cast<std::size_t>(stroke.shot)]; }
 
+  /// How `ball` last met a pocket's jaws in the stroke's shot, for a comment: " rattling in the jaws of
+  /// the top-right corner (pocket 2)" (two knocks or more there), " off a jaw of ..." (one); "" if never.
+  std::string jaw_story(int ball, const Stroke& stroke) const {
+    int pocket = -1, knocks = 0;
+    for (const Event& e : timeline_.events())
+      if (e.type == EventType::ball_jaw && e.shot == stroke.shot && !e.balls.empty() && e.balls[0] == ball) {
+        knocks = e.pocket == pocket ? knocks + 1 : 1;
+        pocket = e.pocket;
+      }
+    if (pocket < 0) return "";
+    return (knocks > 1 ? " rattling in the jaws of " : " off a jaw of ") + pocket_name(scene_.pockets, pocket);
+  }
   /// Shot `shot`'s stroke, over its stretch of the timeline.
   Stroke stroke_of(int shot) const;
   /// The keys of the stroke's beats.
@@ -484,19 +506,21 @@ std::optional<Moment> Director::set_going(int subject, const Stroke& stroke) con
 }
 
 std::optional<Moment> Director::settle(int subject, double after, const Stroke& stroke) const {
-  // From the subject's drop, else its last contact, else a time as it slows.
+  // From the subject's drop, else its last contact (a cushion, a pocket's jaw: a rattle is watched to
+  // its end), else a time as it slows.
   if (stroke.end - after < 2 * kMinDescriptionSeconds) return std::nullopt;
   const double earliest = after + kMinDescriptionSeconds, latest = stroke.end - kMinDescriptionSeconds;
   std::vector<CameraShot> options;
   if (std::isfinite(drop_time(subject, stroke))) options.push_back(key_in(stroke, CameraKeyKind::drop, subject));
   double last_contact = -1;
   CameraShot last_key;
-  for (const Event& e : timeline_.events())
-    if (e.type == EventType::ball_rail && e.shot == stroke.shot && !e.balls.empty() && e.balls[0] == subject &&
-        e.time > last_contact) {
+  for (const Event& e : timeline_.events()) {
+    const bool rail = e.type == EventType::ball_rail, jaw = e.type == EventType::ball_jaw;
+    if ((rail || jaw) && e.shot == stroke.shot && !e.balls.empty() && e.balls[0] == subject && e.time > last_contact) {
       last_contact = e.time;
-      last_key = key_in(stroke, CameraKeyKind::cushion, subject, -1, CameraKey::kLast);
+      last_key = key_in(stroke, jaw ? CameraKeyKind::jaw : CameraKeyKind::cushion, subject, -1, CameraKey::kLast);
     }
+  }
   const std::vector<Contact> subject_contacts = contacts(subject, stroke);
   if (!subject_contacts.empty() && subject_contacts.back().time > last_contact)
     last_key = key_in(stroke, CameraKeyKind::hit, subject_contacts.back().other, subject, CameraKey::kLast);
@@ -612,9 +636,13 @@ bool Director::place_ball(Draft& draft, std::size_t slot, const Stroke& stroke) 
   shots[slot] = *chosen;
   hold_after(shots, slot);
   const bool drops = std::isfinite(drop_time(subject, stroke));
-  const std::string what = drops ? "" : (subject == stroke.cue_ball ? "" : ", the fastest ball,");
+  const std::string jaws = drops ? "" : jaw_story(subject, stroke);
+  const std::string what = drops || !jaws.empty() ? "" : (subject == stroke.cue_ball ? "" : ", the fastest ball,");
   draft.camera.comments[slot] = (chosen->mode == CameraMode::follow ? "walk behind " : "watch ") +
-                                ball_name(scene_, subject) + what + (drops ? " into its pocket" : " on its run");
+                                ball_name(scene_, subject) + what +
+                                (drops          ? " into its pocket"
+                                 : jaws.empty() ? " on its run"
+                                                : jaws);
   return true;
 }
 

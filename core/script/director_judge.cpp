@@ -49,7 +49,7 @@ void hold_after(std::vector<CameraShot>& shots, std::size_t placed) {
   }
 }
 
-Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot)
+Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot, int subject)
     : scene_(scene),
       timeline_(timeline),
       samples_(samples),
@@ -62,6 +62,13 @@ Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& sa
     const bool pocketed = std::isfinite(samples.drop_time[k][static_cast<std::size_t>(b)]);
     if (pocketed || b == struck) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
   }
+  const auto watched = [&](int ball) {
+    return ball == subject ||
+           std::any_of(watched_.begin(), watched_.end(), [&](const Watched& w) { return w.ball == ball; });
+  };
+  for (const Event& e : timeline.events())
+    if (e.type == EventType::ball_jaw && e.shot == shot && !e.balls.empty() && watched(e.balls[0]))
+      knocks_.push_back({e.time, e.where});
 }
 
 std::optional<CameraScript> Judge::film(const std::vector<CameraShot>& shots) const {
@@ -89,6 +96,14 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
   Verdict v;
   const std::optional<CameraScript> script = film(shots);
   if (!script) return v;
+  for (const CameraWindow& w : script->windows()) {
+    const CameraShot& s = shots[static_cast<std::size_t>(w.shot)];
+    const bool cut = s.key.kind == CameraKeyKind::start && s.key.shot > 0 && s.pre == 0 && s.post == 0;
+    if (!cut && w.end > w.begin && w.end - w.begin < kMinBlendSeconds) {
+      v.hurried = true;
+      return v;
+    }
+  }
   for (const CameraWindow& w : script->windows()) {
     if (w.begin > limit || w.end < from_) continue;
     const LineOfAction& line = lines[static_cast<std::size_t>(w.shot)];
@@ -118,6 +133,14 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
   v.shortfall = 0;
   for (std::size_t k = 0; k < watched_.size(); ++k)
     if (moving[k] > 0) v.shortfall += std::max(0.0, watched_[k].target - double(seen[k]) / moving[k]);
+  // Every knock on a jaw in the picture, at its instant: the share missed.
+  int knocks = 0, missed = 0;
+  for (const Knock& k : knocks_) {
+    if (k.time < from_ || k.time > limit) continue;
+    ++knocks;
+    if (!CameraView(script->pose(k.time)).contains(k.where, kPlanMargin)) ++missed;
+  }
+  if (knocks > 0) v.shortfall += double(missed) / knocks;
   return v;
 }
 
@@ -136,7 +159,8 @@ std::optional<Judge::Choice> Judge::choose_with(std::vector<CameraShot> shots, c
       shots[slot] = shot;
       hold_after(shots, slot);
       const Verdict v = evaluate(shots, lines, limit);
-      if (!v.ok) break;  // another window will hardly make it clear
+      if (v.hurried) continue;  // a longer blend may do
+      if (!v.ok) break;         // another window will hardly make it clear
       if (v.good()) return Choice{shot, 0.0};
       if (v.usable() && (!best || v.shortfall < best->shortfall)) best = Choice{shot, v.shortfall};
     }

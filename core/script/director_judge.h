@@ -51,9 +51,13 @@ bool keeps_side(const LineOfAction& line, double wanted, const Vec3& p);
 /// post 0), until they are placed themselves.
 void hold_after(std::vector<CameraShot>& shots, std::size_t placed);
 
+/// s, the shortest blend between two descriptions of one shot: a quicker one reads as a jump.
+inline constexpr double kMinBlendSeconds = 0.3;
+
 /// What a candidate script does over the shot (up to a time limit).
 struct Verdict {
-  bool ok = false;  ///< clear of everything, on the right side of every line of action
+  bool ok = false;       ///< clear of everything, on the right side of every line of action
+  bool hurried = false;  ///< a blend within a shot shorter than kMinBlendSeconds (another timing may do)
   double max_speed = std::numeric_limits<double>::infinity();
   double shortfall = std::numeric_limits<double>::infinity();  ///< summed share below the targets
   bool good() const { return ok && max_speed <= kPlanSpeed && shortfall <= 0; }
@@ -74,8 +78,10 @@ struct Timings {
 class Judge {
  public:
   /// Judges the stretch of shot `shot` (from its start): watches the balls pocketed in it and its
-  /// struck ball. `scene`, `timeline` and `samples` must outlive it.
-  Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot);
+  /// struck ball, and keeps in the picture every knock on a pocket's jaw by one of them or by
+  /// `subject` (the ball that matters: a rattle is watched where it happens). `scene`, `timeline` and
+  /// `samples` must outlive it.
+  Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& samples, int shot, int subject = -1);
 
   /// Films `shots` (the real CameraScript) from the shot's start up to `limit` and judges it; `lines`
   /// are the descriptions' lines of action.
@@ -98,6 +104,11 @@ class Judge {
     int ball = 0;
     double target = 0;
   };
+  /// A knock on a pocket's jaw: when, and where the ball meets the jaw.
+  struct Knock {
+    double time = 0;
+    Vec3 where{0, 0, 0};
+  };
   struct Choice {
     CameraShot shot;
     double shortfall = 0;  ///< 0: it meets every target
@@ -117,6 +128,7 @@ class Judge {
   double radius_ = 0;
   double from_ = 0;  ///< s, the shot's start: what comes before it is judged already
   std::vector<Watched> watched_;
+  std::vector<Knock> knocks_;  ///< every one wanted in the picture
 };
 
 }  // namespace bsim::directing

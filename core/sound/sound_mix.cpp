@@ -54,6 +54,38 @@ void add_contact_clicks(const SoundSource& shot, const Event& e, std::vector<Sou
   }
 }
 
+/// A ball's rattle in a pocket's jaws so far: its last knock, and how loud that was heard.
+struct Rattle {
+  int pocket = -1;
+  double time = 0;  ///< s, its last knock
+  double peak = 0;  ///< that knock's peak, before placing
+};
+
+/// A knock on a pocket's jaw for each ball-jaw event, its modes the pocket's (jaw_seed). A ball's knocks
+/// on one pocket's jaws each within kRattleGap of the one before, with no other contact of the ball
+/// between them, make one rattle: each later knock peaks at most kRattleFollow of the one before
+/// (softer still when it is slower), so the rattle dies away.
+void add_jaw_knocks(const SoundSource& shot, std::vector<SoundCue>& cues) {
+  std::vector<Rattle> rattles(static_cast<std::size_t>(shot.timeline.ball_count()));
+  for (const Event& e : shot.timeline.events()) {
+    if (e.type != EventType::ball_jaw) {  // any other contact ends the ball's rattle
+      for (int ball : e.balls) rattles[static_cast<std::size_t>(ball)] = {};
+      continue;
+    }
+    if (e.balls.empty()) continue;
+    const int ball = e.balls.front();
+    Rattle& r = rattles[static_cast<std::size_t>(ball)];
+    const bool goes_on = r.pocket == e.pocket && e.time - r.time <= kRattleGap;
+    const double own = impact_gain(SoundKind::jaw_knock, e.speed);
+    const double peak = goes_on ? std::min(own, kRattleFollow * r.peak) : own;
+    SoundCue cue = event_cue(shot, SoundKind::jaw_knock, e.time, e.speed, e.where,
+                             jaw_seed(e.pocket, cue_seed(SoundKind::jaw_knock, e.index, ball)));
+    cue.level = peak / own;
+    cues.push_back(cue);
+    r = {e.pocket, e.time, peak};
+  }
+}
+
 /// s: how finely a pocket fall is searched for its knocks (the fall's own integration step).
 constexpr double kFallScan = 1.0 / 2000.0;
 /// m/s: a change of the falling ball's horizontal velocity bigger than this is a knock on the liner.
@@ -134,6 +166,7 @@ std::vector<SoundCue> sound_cues(const SoundSource& shot) {
     }
     cues.push_back(event_cue(shot, kind, e.time, speed, e.where, cue_seed(kind, e.index, ball)));
   }
+  add_jaw_knocks(shot, cues);
   const auto& drops = shot.timeline.pocket_drops();
   for (std::size_t i = 0; i < drops.size(); ++i) add_pocket_drop(shot, drops[i], static_cast<int>(i), cues);
   std::stable_sort(cues.begin(), cues.end(), [](const SoundCue& a, const SoundCue& b) { return a.time < b.time; });
@@ -144,7 +177,9 @@ void mix_cues(const std::vector<SoundCue>& cues, const PhysicsParams& physics, d
               std::vector<float>* send) {
   const auto length = static_cast<long long>(out.left.size());
   for (const SoundCue& cue : cues) {
-    const std::vector<float> sound = synth_impact(cue.kind, cue.speed, cue.seed, physics, out.sample_rate);
+    std::vector<float> sound = synth_impact(cue.kind, cue.speed, cue.seed, physics, out.sample_rate);
+    if (cue.level != 1)
+      for (float& s : sound) s *= static_cast<float>(cue.level);
     // Equal-power pan: the sum of the channels' powers is the same wherever the sound sits.
     const double angle = (std::clamp(cue.pan, -1.0, 1.0) + 1.0) * std::numbers::pi / 4.0;
     const auto gain_left = static_cast<float>(cue.gain * std::cos(angle));

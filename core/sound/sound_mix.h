@@ -1,8 +1,9 @@
 #pragma once
-// From the shot to sounds on the track: one cue per cue stroke, per contact of a ball-ball event and
-// per ball-rail event, and for each ball dropping into a pocket its fall, its knocks against the
-// pocket's liner and its roll away; each placed by where it happens in the camera's view at that
-// moment (pan) and how far from the camera (distance).
+// From the shot to sounds on the track: one cue per cue stroke, per contact of a ball-ball event, per
+// ball-rail event and per ball-jaw event (a rattle's knocks heard as one rattle), and for each ball
+// dropping into a pocket its fall, its knocks against the pocket's liner and its roll away; each
+// placed by where it happens in the camera's view at that moment (pan) and how far from the camera
+// (distance).
 #include <cstdint>
 #include <vector>
 
@@ -28,7 +29,16 @@ struct SoundCue {
   double pan = 0;          ///< -1 hard left .. +1 hard right
   std::uint64_t seed = 0;  ///< varies the modes from hit to hit, fixed per cue
   double gain = 1;         ///< the direct sound's gain for the distance from the camera
+  double level = 1;        ///< scales the sound itself, direct and in the room: a rattle's later knocks
 };
+
+/// s: a ball's knocks on one pocket's jaws, each within this of the one before and with nothing else
+/// touching the ball between them, make one rattle. Across a throat 5 to 8 cm wide between the facings a
+/// ball knocks again within it down to about 0.15 m/s; slower, it has all but come to rest in the jaws.
+inline constexpr double kRattleGap = 0.5;
+/// Each later knock of a rattle peaks at most this share of the one before it (about 3 dB softer): the
+/// rattle dies away as one sound, never a row of equal knocks.
+inline constexpr double kRattleFollow = 0.7;
 
 /// m: a sound this far from the camera is heard at its own level; nearer ones are louder (down to
 /// kNearestDistance), further ones quieter, as 1 / distance (the inverse-square law of power).

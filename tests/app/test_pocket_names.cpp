@@ -114,9 +114,10 @@ TEST_SUITE("pocket names") {
     test::CommandResult typo;
     const fs::path out = events_only(dir, "typo", pot_scene("top-rigth", ""), typo);
     CHECK(typo.exit_code == 1);
-    CHECK(has(typo.err, "typo.scn:1:13: error: expected the pocket to pot into, its number or its name (top-left, "
-                        "top-side, top-right, bottom-right, bottom-side, bottom-left), found 'top-rigth'; did you "
-                        "mean 'top-right'?"));
+    CHECK(has(typo.err,
+              "typo.scn:1:13: error: expected the pocket to pot into, its number or its name (top-left, "
+              "top-side, top-right, bottom-right, bottom-side, bottom-left), found 'top-rigth'; did you "
+              "mean 'top-right'?"));
     CHECK_FALSE(fs::exists(out));
     // The side pockets by the table numbering's word too.
     test::CommandResult middle, side;
@@ -133,9 +134,10 @@ TEST_SUITE("pocket names") {
     test::CommandResult mine;
     events_only(dir, "own", pot_scene("top-right", own), mine);
     CHECK(mine.exit_code == 1);
-    CHECK(has(mine.err, "own.scn:1:13: error: pocket names name the standard table's six pockets, and this scene has "
-                        "its own 'pocket' lines (the first on line 5): give the pocket's number, 0 to 5 in file "
-                        "order"));
+    CHECK(has(mine.err,
+              "own.scn:1:13: error: pocket names name the standard table's six pockets, and this scene has "
+              "its own 'pocket' lines (the first on line 5): give the pocket's number, 0 to 5 in file "
+              "order"));
     test::CommandResult numbered;
     events_only(dir, "own_number", pot_scene("2", own), numbered);
     INFO(numbered.err);
@@ -146,16 +148,18 @@ TEST_SUITE("pocket names") {
     test::TempDir dir;
     // The 9 starts over the top-right corner.
     test::CommandResult over;
-    events_only(dir, "over", pot_scene("top-right", "ball 9 1.24 0.6 0.028575 0 0 0 1 0 0 0\n"), over);
-    CHECK(has(over.err, "over.scn:5:8: warning: ball 9 starts over the top-right corner (pocket 2) and will drop into it"));
+    events_only(dir, "over", pot_scene("top-right", "ball 9 1.265 0.63 0.028575 0 0 0 1 0 0 0\n"), over);
+    CHECK(has(over.err,
+              "over.scn:5:8: warning: ball 9 starts over the top-right corner (pocket 2) and will drop into it"));
 
     // Pocket 5, the bottom-left corner, is behind the 3 as the cue ball sees it: no heading pots it there,
     // and the error names the pockets that do take it.
     test::CommandResult behind;
     events_only(dir, "behind", pot_scene("bottom-left", ""), behind);
     CHECK(behind.exit_code == 1);
-    CHECK(has(behind.err, "behind.scn:1:1: error: no heading pots ball index 1 (the 3) in the bottom-left corner "
-                          "(pocket 5): the cut is thinner than 89 degrees"));
+    CHECK(has(behind.err,
+              "behind.scn:1:1: error: no heading pots ball index 1 (the 3) in the bottom-left corner "
+              "(pocket 5): the cut is thinner than 89 degrees"));
     CHECK(has(behind.err, "\n  other pockets take it from here: "));
     CHECK(has(behind.err, "the top-right corner (pocket 2)\n"));
   }

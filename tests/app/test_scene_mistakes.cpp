@@ -63,7 +63,7 @@ TEST_SUITE("scene mistakes end to end") {
     for (const char* gap : {"rails 0 and 1", "rails 2 and 3", "rails 3 and 4", "rails 4 and 5", "rails 5 and 0"})
       CHECK_MESSAGE(r.err.find(gap) != std::string::npos, r.err);
     CHECK(r.err.find("rails 1 and 2") == std::string::npos);  // the pocket fills that one
-    CHECK(r.err.find("add a `pocket` line there, such as `pocket 0 0.635 0 0.065`") != std::string::npos);
+    CHECK(r.err.find("add a `pocket` line there, such as `pocket 0 0.635 0 0.0642937`") != std::string::npos);
   }
 
   TEST_CASE("a ball that still leaves the bed fails the run, naming the ball, the time and the place") {
@@ -121,7 +121,7 @@ TEST_SUITE("scene mistakes end to end") {
                                        "ball 1 0.3 -0.3 0.028575 0 0 0 1 0 0 0\n"
                                        "cue 0 0\nstroke 1 0 0 0\n"
                                        "cue 0 0\nstroke 1 0 0 0\n"
-                                       "place 0 1.22 0.59\n" +
+                                       "place 0 1.265 0.63\n" +
                                            kCamera);
     const test::CommandResult r = run_export(scene, tmp.path / "out");
     CHECK(r.exit_code == 0);
@@ -130,7 +130,7 @@ TEST_SUITE("scene mistakes end to end") {
         r.err);
     // The ball line's own words there.
     const std::string ball =
-        tmp.file("ball_pocket.scn", "ball 0 1.22 0.59 0.028575 0 0 0 1 0 0 0\ncue 0 0\n" + kCamera);
+        tmp.file("ball_pocket.scn", "ball 0 1.265 0.63 0.028575 0 0 0 1 0 0 0\ncue 0 0\n" + kCamera);
     const test::CommandResult b = run_export(ball, tmp.path / "out2");
     CHECK_MESSAGE(
         b.err.find(ball + ":1:8: warning: ball 0 starts over the top-right corner (pocket 2)") != std::string::npos,

@@ -1,5 +1,6 @@
-// break_stats: N seeded breaks of 9-ball and 8-ball racks (tests/support/break_stats.h), and what they
-// pocket beside the real figures; with --sweep, what moves the share (rack gaps, speed, pocket size).
+// break_stats: N seeded player's breaks of 9-ball and 8-ball racks (tests/support/break_stats.h), and the
+// share that is legal, makes a ball and does not foul beside the real figures, the share that makes a ball,
+// the scratch rate; with --sweep, what moves the share (rack gaps, speed, noise, corner mouths, jaws).
 // With --picture FILE it draws the three racks from above instead, their gaps exaggerated (README's picture).
 //   break_stats [--breaks N] [--sweep] [--picture FILE]
 #include <array>
@@ -17,16 +18,22 @@ namespace {
 using bsim::breaks::BreakSetup;
 using bsim::breaks::BreakStats;
 
-BreakStats report(const char* name, const BreakSetup& setup, int count, bool histogram) {
+BreakStats report(const char* name, const BreakSetup& setup, int count, bool detail) {
   const auto t0 = std::chrono::steady_clock::now();
   const BreakStats s = bsim::breaks::play_breaks(setup, count);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // The binomial standard error of the share, for reading differences between lines.
-  const double error = std::sqrt(s.share() * (1 - s.share()) / s.breaks);
-  std::printf("%-34s %5d breaks  %5.1f%% +- %4.1f pocket a ball  %4.2f down on average  %4.1f%% scratch  (%.1f s)\n",
-              name, s.breaks, 100 * s.share(), 100 * error, s.mean_down(), 100 * s.scratch_rate(), seconds);
-  if (histogram) {
-    std::printf("  %-32s", "object balls down:");
+  // The binomial standard error of a share, for reading differences between lines.
+  auto error = [&](double p) { return 100 * std::sqrt(p * (1 - p) / s.breaks); };
+  std::printf(
+      "%-30s %5d breaks  %5.1f%% +- %3.1f made a ball, legal, no foul  %5.1f%% made a ball  %4.1f%% scratch  "
+      "%4.2f down  (%.1f s)\n",
+      name, s.breaks, 100 * s.success_share(), error(s.success_share()), 100 * s.share(), 100 * s.scratch_rate(),
+      s.mean_down(), seconds);
+  if (detail) {
+    std::printf("  %-28s %5.1f%% legal (a ball made or four to a rail%s)", "", 100 * s.legal_share(),
+                setup.game == bsim::RackGame::nine_ball ? ", the 1 first" : "");
+    if (setup.game == bsim::RackGame::nine_ball) std::printf(", the 1 not hit first %d times", s.wrong_first);
+    std::printf("\n  %-28s", "object balls down:");
     for (std::size_t n = 0; n < s.histogram.size(); ++n)
       std::printf(" %zu: %4.1f%%", n, 100.0 * s.histogram[n] / s.breaks);
     std::printf("\n");
@@ -51,11 +58,23 @@ void sweep(bsim::RackGame game, int count) {
     v.speed = speed;
     report((g + " at " + std::to_string(speed).substr(0, 4) + " m/s").c_str(), v, count, false);
   }
-  for (double scale : {0.9, 1.1}) {
+  for (double noise : {0.0, 2.0}) {
     v = base;
-    v.pocket_scale = scale;
-    report((g + " pockets x" + std::to_string(scale).substr(0, 3)).c_str(), v, count, false);
+    v.heading_sd_deg *= noise;
+    v.elevation_sd_deg *= noise;
+    v.tip_sd *= noise;
+    v.stick_speed_sd *= noise;
+    report((g + " noise x" + std::to_string(noise).substr(0, 3)).c_str(), v, count, false);
   }
+  // Tighter and wider corners than the standard table's 4.5875 in (Dr. Dave's TP 3.6 mouth).
+  for (double inches : {4.0, 4.25, 4.625}) {
+    v = base;
+    v.physics.corner_mouth = inches * 0.0254;
+    report((g + " corners " + std::to_string(inches).substr(0, 5) + " in").c_str(), v, count, false);
+  }
+  v = base;
+  v.bare_pockets = true;
+  report((g + " bare drop circles").c_str(), v, count, false);
 }
 
 // ---- the picture: each rack from above, apex on the left, racked as rack.h racks it but with the balls'
@@ -179,18 +198,23 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  const BreakSetup setup;
   std::printf(
-      "Breaks: cue ball anywhere behind the head string, aimed at the apex +- 0.3 deg, 10.7 +- 0.8 m/s,\n"
-      "a rack seed per break (seeds 1 to %d).\n",
-      count);
+      "A player's break: the cue ball anywhere behind the head string, stroked (a `stroke`: strike.h) at the apex\n"
+      "ball's centre, level, centre ball, for %.1f m/s, with the Computational Pool Olympiad's noise (standard\n"
+      "deviations %.3f deg of heading, %.1f deg of elevation, %.1f mm of each tip offset, %.3f m/s of the stick's\n"
+      "speed); a rack seed per break (seeds 1 to %d).\n",
+      setup.speed, setup.heading_sd_deg, setup.elevation_sd_deg, setup.tip_sd * 1000, setup.stick_speed_sd, count);
   BreakSetup nine;
   nine.game = bsim::RackGame::nine_ball;
   report("9ball", nine, count, true);
-  std::printf("  real: %.0f%% (2016 WPA World 9-Ball, 105 breaks)\n", 100 * bsim::breaks::kRealShare9Ball);
+  std::printf("  real: %.0f%% made a ball, legal, no foul (2016 WPA World 9-Ball, 75 of 105 breaks)\n",
+              100 * bsim::breaks::kRealShare9Ball);
   BreakSetup eight;
   eight.game = bsim::RackGame::eight_ball;
   report("8ball", eight, count, true);
-  std::printf("  real: %.0f%% (an 8-ball event, AZBilliards' break statistics)\n", 100 * bsim::breaks::kRealShare8Ball);
+  std::printf("  real: %.0f%% made a ball, no foul (2024 Ultimate Pool Colorado Shootout, 82 of 124 breaks)\n",
+              100 * bsim::breaks::kRealShare8Ball);
   if (do_sweep) {
     std::printf("What moves the share:\n");
     sweep(bsim::RackGame::nine_ball, count);

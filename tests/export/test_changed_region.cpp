@@ -8,7 +8,9 @@
 #include "builtin_scene.h"
 #include "camera_view.h"
 #include "changed_region.h"
+#include "pocket_fall.h"
 #include "scene_parse.h"
+#include "table.h"
 
 using namespace bsim;
 
@@ -100,8 +102,8 @@ TEST_SUITE("changed region") {
     REQUIRE(rects);
     // The cup's floor right under the opening's edge, where light falling through it lands.
     for (double angle = 0; angle < 6.28; angle += 0.5) {
-      const Vec3 floor(pocket.x + 0.9 * pocket.radius * std::cos(angle), pocket.y + 0.9 * pocket.radius * std::sin(angle),
-                       room.cup_floor);
+      const Vec3 floor(pocket.x + 0.9 * pocket.radius * std::cos(angle),
+                       pocket.y + 0.9 * pocket.radius * std::sin(angle), room.cup_floor);
       const auto pixel = pixel_of(pose, floor);
       if (!pixel) continue;
       CAPTURE(angle);
@@ -113,6 +115,45 @@ TEST_SUITE("changed region") {
     const auto small = changed_region(b2, a2, room, kWidth, kHeight);
     REQUIRE(small);
     CHECK(total_area(*small) < kWidth * kHeight / 50);
+  }
+
+  TEST_CASE("the lamp's light reaches a corner's cup through its hole alone, not over its shelf or jaws") {
+    const RegionScene room = standard_room();
+    const ParseResult parsed = parse_scene(builtin_scene_text(), "break");
+    REQUIRE(parsed.scene);
+    const PocketMouth m = table_layout(*parsed.scene).pockets[2];  // the top-right corner
+    REQUIRE(m.cut);
+    // Looking straight down at the corner from below the shade's rim.
+    const CameraPose pose{Vec3(1.2, 0.6, 1.0), Vec3(1.2, 0.6, 0), false};
+    // The cup's floor at the back of the hole, under where the light through it can fall.
+    std::vector<Vec3> cup;
+    for (double a = -1; a <= 1; a += 0.5) {
+      const Vec3 side(-m.axis.y(), m.axis.x(), 0);
+      cup.push_back(m.centre + 0.8 * m.drop_radius * (std::cos(a) * m.axis + std::sin(a) * side) +
+                    Vec3(0, 0, -kPocketDepth));
+    }
+    const auto region_of = [&](const Vec3& ball) {
+      const BoundSphere s{ball, 0.03};
+      const auto [before, after] = one_change(pose, {{s, s}}, {{s, s}});
+      const auto rects = changed_region(before, after, room, kWidth, kHeight);
+      REQUIRE(rects);
+      return *rects;
+    };
+    // A ball on the shelf throws its shadow into the hole: the cup behind it is in the region.
+    const auto on_shelf = region_of((m.nose[0] + m.nose[1]) / 2 + m.axis * 0.015 + Vec3(0, 0, 0.028575));
+    for (const Vec3& p : cup) {
+      const auto pixel = pixel_of(pose, p);
+      REQUIRE(pixel);
+      CHECK(in_some(on_shelf, *pixel));
+    }
+    // A ball by the top cushion short of the jaw: its shadow may reach the mouth and the jaws but not
+    // the hole, so nothing in the cup changes and the region stays round the ball and its shadow.
+    const auto by_jaw = region_of(Vec3(1.05, 0.6, 0.028575));
+    for (const Vec3& p : cup) {
+      const auto pixel = pixel_of(pose, p);
+      REQUIRE(pixel);
+      CHECK(!in_some(by_jaw, *pixel));
+    }
   }
 
   TEST_CASE("a ball seen in the lamp shade's lacquer, from above its rim, is in the region") {

@@ -61,7 +61,8 @@ TEST_SUITE("events.json") {
         "  \"duration\": 3,\n"
         "  \"events\": [\n"
         "    {\"index\": 0, \"time\": 0, \"type\": \"start\", \"shot\": 1},\n"
-        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": 0, \"heading\": 0},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": 0, \"heading\": "
+        "0},\n"
         "    {\"index\": 2, \"time\": 3, \"type\": \"end\", \"shot\": 1}\n"
         "  ],\n"
         "  \"shots\": [\n"
@@ -75,10 +76,30 @@ TEST_SUITE("events.json") {
     CHECK(events_json(*shot_of(scene)) == expected);
   }
 
+  TEST_CASE("a ball meeting a pocket's jaw is a ball-jaw event naming the pocket") {
+    Scene scene = scenes::standard_table();
+    // Rolled at the top side pocket's jaw point, just inside it: it meets the jaw, not the rail.
+    scene.balls.push_back(scenes::ball_at(3, standard_rails()[1].a.x() - 0.002, 0.3, scene.physics, Vec3(0, 1, 0)));
+    const std::unique_ptr<Shot> owner = shot_of(scene);
+    const std::string json = events_json(*owner);
+    bool jaw = false;
+    for (const Event& e : owner->timeline.events()) {
+      if (e.type != EventType::ball_jaw) continue;
+      jaw = true;
+      CHECK(json.find("{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
+                      ", \"type\": \"ball-jaw\", \"shot\": 1, \"balls\": [0], \"pocket\": 1, \"speed\": " +
+                      format_number(e.speed) + "}") != std::string::npos);
+    }
+    CHECK(jaw);
+  }
+
   TEST_CASE("every event type, pocket drops and final states are written with numbers that read back exactly") {
     Scene scene = scenes::standard_table();
-    // Ball 0 sends ball 1 into the top-right corner pocket; ball 2 runs into the left cushion.
-    scene.balls.push_back(scenes::ball_at(0, 0.6, 0.2, scene.physics, Vec3(2.0, 1.15, 0)));
+    // Ball 0 sends ball 1 straight into the top-right corner pocket, at its mouth's middle; ball 2 runs
+    // into the left cushion.
+    const Vec3 toward = Vec3(0.2788, 0.1938, 0).normalized();
+    scene.balls.push_back(
+        scenes::ball_at(0, 0.95 - 0.4 * toward.x(), 0.4 - 0.4 * toward.y(), scene.physics, 2 * toward));
     scene.balls.push_back(scenes::ball_at(5, 0.95, 0.4, scene.physics));
     scene.balls.push_back(scenes::ball_at(12, -0.8, -0.3, scene.physics, Vec3(-1.0, 0, 0)));
     const std::unique_ptr<Shot> owner = shot_of(scene);
@@ -128,9 +149,10 @@ TEST_SUITE("events.json") {
     // The struck ball's speed just after the strike, squirt and bed included (strike.h).
     CHECK(cue.speed == doctest::Approx(strike(stroke, 12.5, scene.physics).velocity.norm()).epsilon(1e-15));
     CHECK(cue.speed > 2);
-    CHECK(events_json(*shot).find("\"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": " + format_number(cue.speed) +
-                                  ", \"heading\": 12.5, \"stroke\": {\"speed\": 2, \"side\": 0.1, \"height\": -0.25, "
-                                  "\"elevation\": 5}}") != std::string::npos);
+    CHECK(events_json(*shot).find(
+              "\"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": " + format_number(cue.speed) +
+              ", \"heading\": 12.5, \"stroke\": {\"speed\": 2, \"side\": 0.1, \"height\": -0.25, "
+              "\"elevation\": 5}}") != std::string::npos);
   }
 
   TEST_CASE("a group collision lists every ball and each contact with its time and speed") {
@@ -157,10 +179,10 @@ TEST_SUITE("events.json") {
       fastest = std::max(fastest, c.speed);
     }
     CHECK(hit.speed == fastest);
-    CHECK(events_json(*owner).find(
-              "{\"index\": 2, \"time\": " + format_number(hit.time) +
-              ", \"type\": \"ball-ball\", \"shot\": 1, \"balls\": [0, 1, 2, 3], \"speed\": " + format_number(hit.speed) +
-              ", \"contacts\": [" + contacts + "]}") != std::string::npos);
+    CHECK(events_json(*owner).find("{\"index\": 2, \"time\": " + format_number(hit.time) +
+                                   ", \"type\": \"ball-ball\", \"shot\": 1, \"balls\": [0, 1, 2, 3], \"speed\": " +
+                                   format_number(hit.speed) + ", \"contacts\": [" + contacts + "]}") !=
+          std::string::npos);
   }
 
   TEST_CASE("trajectory.csv: one row per ball per frame from 0 to the duration, exact states, named motions") {

@@ -1,8 +1,9 @@
 // Tracing only what changed (export/changed_region.h) makes the same pictures as tracing every pixel:
-// every frame of three scenes (one of several shots), rendered both ways by POV-Ray at final quality
-// (the preset whose adaptive antialiasing shares samples within a render block and whose area light
-// is sampled adaptively: what could make a partial render differ), compared pixel for pixel; and
-// rectangles of a larger frame where POV-Ray's shadow cache once made pixels differ.
+// every frame of four scenes (one of several shots, one of a ball falling into a pocket), rendered
+// both ways by POV-Ray at final quality (the preset whose adaptive antialiasing shares samples within
+// a render block and whose area light is sampled adaptively: what could make a partial render differ),
+// compared pixel for pixel; and rectangles of a larger frame where POV-Ray's shadow cache once made
+// pixels differ.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -149,6 +150,14 @@ TEST_SUITE("partial frames") {
     test::require_program("povray");
     test::require_program("ffmpeg");
     same_both_ways(quoted(test::source_path("tests/scene/three_shots.scn").string()), 1);
+  }
+
+  TEST_CASE("a ball knocked off a corner's shelf through the hole into the cup, traced only where it changed") {
+    // The shelf's cloth, the slate's rounded lip, the hole behind the mouth and the lamp's light in the
+    // cup, all in the picture, with the ball's shadow crossing them and the ball falling in.
+    test::require_program("povray");
+    test::require_program("ffmpeg");
+    same_both_ways(quoted(test::source_path("tests/export/shelf_drop.scn").string()), 5);
   }
 
   TEST_CASE("a rectangle traced alone is the whole frame's pixels where shadow rays graze a ball") {

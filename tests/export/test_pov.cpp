@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_view.h"
 #include "cue_pose.h"
 #include "files.h"
 #include "frames.h"
@@ -28,6 +30,7 @@
 #include "shots.h"
 #include "shutter_cover.h"
 #include "support.h"
+#include "table.h"
 
 using namespace bsim;
 using bsim::test::stick_cover;
@@ -62,6 +65,13 @@ const char* const kBoxScene =
     "rail -1.5 -0.8 0.04   -1.5 0.8 0.04\n"
     "pocket 0.2 -0.3 0 0.07\n"
     "camera\nevent 0 0 0 hover 0 0 3  0 0 0\nendcamera\n";
+
+// One ball far from the top-right corner, which a camera looks straight down at from 0.5 m.
+const char* const kCornerFromAbove =
+    "ball 0 -0.6 0 0.028575  0 0 0  1 0 0 0\n"
+    "cue 0 180\n"
+    "stroke 0.3 0 0 0\n"
+    "camera\nevent 0 0 0 hover  1.27 0.62 0.5  1.27 0.62 0\nendcamera\n";
 
 std::unique_ptr<Shot> load(const char* text) { return test::load_scene(text, "tiny"); }
 
@@ -467,5 +477,50 @@ TEST_SUITE("pov") {
       CHECK(test::read_file(dir.path / (frame_name(strike) + ".pov")).value_or("").find("CueSweep(") !=
             std::string::npos);
     }
+  }
+
+  TEST_CASE("from above, POV-Ray's corner pocket is open where the physics drops a ball and cloth on its shelf") {
+    test::require_program("povray");
+    const auto shot = load(kCornerFromAbove);
+    test::TempDir dir;
+    REQUIRE(test::write_file(dir.path / std::string(kPovIncludeName), include_text(*shot)));
+    REQUIRE(test::write_file(dir.path / (frame_name(0) + ".pov"), frame_text(*shot, 0)));
+    const int width = 320, height = 180;
+    const test::CommandResult r = test::run_command("cd '" + dir.path.string() + "' && povray -D +FP +WT1 +I" +
+                                                    frame_name(0) + ".pov +Ocorner.ppm +W320 +H180 +Q9 -A 2>&1");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.out);
+    // A binary PPM: its pixels are the last width x height x 3 bytes.
+    const std::string ppm = test::read_file(dir.path / "corner.ppm").value_or("");
+    REQUIRE(ppm.size() > static_cast<std::size_t>(width * height * 3));
+    const std::string rgb = ppm.substr(ppm.size() - static_cast<std::size_t>(width * height * 3));
+    const CameraView view(CameraPose{Vec3(1.27, 0.62, 0.5), Vec3(1.27, 0.62, 0), false}, kCameraFovDeg,
+                          static_cast<double>(width) / height);
+    const auto colour = [&](const Vec3& at) {
+      const auto p = view.project(at);
+      REQUIRE(p);
+      const int x = static_cast<int>(0.5 * width * (1 + p->x)), y = static_cast<int>(0.5 * height * (1 - p->y));
+      const auto* c = reinterpret_cast<const unsigned char*>(&rgb[3 * (static_cast<std::size_t>(y) * width + x)]);
+      return std::array<int, 3>{c[0], c[1], c[2]};
+    };
+    const auto cloth = [](const std::array<int, 3>& c) { return c[1] > c[0] + 25 && c[1] > c[2] + 10; };
+    const auto open = [](const std::array<int, 3>& c) { return std::max({c[0], c[1], c[2]}) < 90 && c[1] < c[0] + 15; };
+    const auto text = [](const std::array<int, 3>& c) {
+      return std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
+    };
+    const PocketMouth& m = table_layout(shot->scene).pockets[2];
+    REQUIRE(m.cut);
+    // The physics' hole, round: open 5 mm inside its edge all round, and in its middle.
+    CHECK_MESSAGE(open(colour(m.centre)), text(colour(m.centre)));
+    for (int k = 0; k < 16; ++k) {
+      const double a = 2 * std::numbers::pi * k / 16;
+      const Vec3 inside = m.centre + (m.drop_radius - 0.005) * Vec3(std::cos(a), std::sin(a), 0);
+      CAPTURE(k);
+      CHECK_MESSAGE(open(colour(inside)), text(colour(inside)));
+    }
+    // The shelf before the hole, between the facings: cloth, up to 5 mm from the hole's rounded lip.
+    const Vec3 middle = (m.nose[0] + m.nose[1]) / 2;
+    for (const Vec3& at : {Vec3(middle + m.axis * 0.01), Vec3(middle + m.axis * (m.shelf() / 2)),
+                           Vec3(m.centre - m.axis * (m.drop_radius + kStandardTable.jaws.lip_round + 0.005))})
+      CHECK_MESSAGE(cloth(colour(at)), text(colour(at)));
   }
 }

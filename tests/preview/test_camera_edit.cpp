@@ -359,6 +359,7 @@ TEST_SUITE("camera edit") {
     CHECK(camera_key_label("hit 0 3", painted) == "hit 0 3 (12)");
     CHECK(camera_key_label("fourth cushion 2", painted) == "fourth cushion 2 (9)");
     CHECK(camera_key_label("drop 3", painted) == "drop 3 (12)");
+    CHECK(camera_key_label("last jaw 3", painted) == "last jaw 3 (12)");
     CHECK(camera_key_label("pocket 3", painted) == "pocket 3 (12)");  // the older spelling
     CHECK(camera_key_label("at 3", painted) == "at 3");
     CHECK(camera_key_label("cue", painted) == "cue");
@@ -372,7 +373,7 @@ TEST_SUITE("camera edit") {
     REQUIRE(data.camera.size() == 5);
     CHECK(data.camera[2].label == "follow ball 3");
     CHECK(data.camera[3].label == "look ball 1");
-    CHECK(data.camera[4].key == "drop 1");
+    CHECK(data.camera[4].key == "cushion 0");
     CHECK(camera_key_label(data.camera[2].key, data.painted) == "third cushion 3");
     bool group_named = false;
     for (const TimelineEventMark& e : data.events)
@@ -384,7 +385,47 @@ TEST_SUITE("camera edit") {
       CHECK(name_moment(r.shot->timeline, d.time).key == "drop " + std::to_string(d.ball));
       CHECK(d.pocket_name == pocket_name(standard_pockets(), d.pocket));
     }
-    CHECK(data.drops[0].pocket_name.find(" (pocket " + std::to_string(data.drops[0].pocket) + ")") != std::string::npos);
+    CHECK(data.drops[0].pocket_name.find(" (pocket " + std::to_string(data.drops[0].pocket) + ")") !=
+          std::string::npos);
     CHECK(data.drops[0].pocket_name.rfind("the ", 0) == 0);
+  }
+}
+
+TEST_SUITE("camera edit: a pocket's jaws") {
+  /// The 1 rattles in the top-right corner's jaws, five knocks in 0.7 s, and stays out; the cue ball
+  /// then nudges it into the right-hand cushion.
+  const std::string kRattle =
+      "cue 0 45\n"
+      "ball 0 0.5176 -0.1683 0.028575 1.7678 1.7678 0 1 0 0 0\n"
+      "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n";
+
+  TEST_CASE("each knock on a jaw is named `jaw I` with its ordinal, written so, and resolves back") {
+    const auto shot = shot_of(kRattle + test::fixtures::kHoverCamera);
+    const char* expected[] = {"jaw 1", "second jaw 1", "third jaw 1", "fourth jaw 1", "fifth jaw 1"};
+    std::size_t k = 0;
+    for (const Event& e : shot->timeline.events()) {
+      if (e.type != EventType::ball_jaw) continue;
+      REQUIRE(k < 5);
+      const NamedMoment m = name_moment(shot->timeline, e.time);
+      CAPTURE(e.time);
+      CHECK(m.key == expected[k]);
+      CHECK(m.time == e.time);
+      CHECK(m.event == e.index);
+      ++k;
+    }
+    CHECK(k == 5);
+    // Pausing on the third knock and placing a camera writes that key; the file reads back to that moment.
+    double third = 0;
+    for (const Event& e : shot->timeline.events())
+      if (e.type == EventType::ball_jaw && name_moment(shot->timeline, e.time).key == "third jaw 1") third = e.time;
+    const std::string text = kRattle + test::fixtures::kHoverCamera;
+    const CameraEdit edit = place_camera(text, "rattle.scn", third + 0.01, hover_at({1, 1, 1}, {1.2, 0.6, 0}));
+    REQUIRE(edit.error.empty());
+    CHECK(edit.description.rfind("event third jaw 1 0.3 0 hover 1 1 1 1.2 0.6 0", 0) == 0);
+    CHECK(description_times(edit.text).back() == third);
+    // The rails keep `cushion`: the 1's one cushion contact, after the rattle.
+    for (const Event& e : shot->timeline.events())
+      if (e.type == EventType::ball_rail && e.balls[0] == 1)
+        CHECK(name_moment(shot->timeline, e.time).key == "cushion 1");
   }
 }

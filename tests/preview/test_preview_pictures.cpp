@@ -15,6 +15,7 @@
 #include <stb_image.h>
 
 #include "builtin_scene.h"
+#include "camera_view.h"
 #include "files.h"
 #include "fonts.h"
 #include "headless_canvas.h"
@@ -22,6 +23,7 @@
 #include "scene_renderer.h"
 #include "shot.h"
 #include "support.h"
+#include "table.h"
 #include "timeline_picture.h"
 
 using namespace bsim;
@@ -88,9 +90,61 @@ const char* const kTwoHalves =
     "stroke 0.35 0 0 0\n"
     "camera\nevent 0 0 0 hover  0 0 3.05  0 0 0\nendcamera\n";
 
+// One ball far from the top-right corner, which a camera looks straight down at from 0.5 m.
+const char* const kCornerFromAbove =
+    "ball 0 -0.6 0 0.028575  0 0 0  1 0 0 0\n"
+    "cue 0 180\n"
+    "stroke 0.3 0 0 0\n"
+    "camera\nevent 0 0 0 hover  1.27 0.62 0.5  1.27 0.62 0\nendcamera\n";
+
+/// The pixel of a width x height picture that plan point p (on the bed) lands on, seen from `pose`.
+std::pair<int, int> pixel_at(const CameraPose& pose, const Vec3& p, int width, int height) {
+  const CameraView view(pose, kCameraFovDeg, static_cast<double>(width) / height);
+  const auto at = view.project(p);
+  REQUIRE(at);
+  return {static_cast<int>(0.5 * width * (1 + at->x)), static_cast<int>(0.5 * height * (1 - at->y))};
+}
+
+/// Cloth: green well above red and blue. Open: dark, not green (the pocket's leather and its shadow).
+bool cloth(const unsigned char* c) { return c[1] > c[0] + 25 && c[1] > c[2] + 10; }
+bool open(const unsigned char* c) { return std::max({c[0], c[1], c[2]}) < 90 && c[1] < c[0] + 15; }
+
 }  // namespace
 
 TEST_SUITE("preview pictures") {
+  TEST_CASE("from above, a corner pocket is open where the physics drops a ball and cloth on its shelf") {
+    test::TempDir dir;
+    const std::string scene = dir.file("corner.scn", kCornerFromAbove);
+    const Picture p = preview(quoted(scene) + " --at 0 --size 640x360", (dir.path / "corner.png").string());
+    const auto loaded = load_shot(kCornerFromAbove, "corner");
+    REQUIRE(loaded.scripted());
+    const TableLayout layout = table_layout(loaded.shot->scene);
+    const PocketMouth& m = layout.pockets[2];
+    REQUIRE(m.cut);
+    const CameraPose pose{Vec3(1.27, 0.62, 0.5), Vec3(1.27, 0.62, 0), false};
+    const auto colour = [&](const Vec3& at) {
+      const auto [x, y] = pixel_at(pose, at, p.width, p.height);
+      return p.at(x, y);
+    };
+    const auto rgb = [](const unsigned char* c) {
+      return std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
+    };
+    // The physics' hole, round: open 4 mm inside its edge all round, and in its middle.
+    CHECK_MESSAGE(open(colour(m.centre)), rgb(colour(m.centre)));
+    for (int k = 0; k < 16; ++k) {
+      const double a = 2 * 3.14159265358979323846 * k / 16;
+      const Vec3 inside = m.centre + (m.drop_radius - 0.004) * Vec3(std::cos(a), std::sin(a), 0);
+      CAPTURE(k);
+      CHECK_MESSAGE(open(colour(inside)), rgb(colour(inside)));
+    }
+    // The shelf before the hole, between the facings, where a ball's centre stays on the table: cloth,
+    // up to 4 mm from the hole's rounded lip.
+    const Vec3 middle = (m.nose[0] + m.nose[1]) / 2;
+    for (const Vec3& at : {Vec3(middle + m.axis * 0.01), Vec3(middle + m.axis * (m.shelf() / 2)),
+                           Vec3(m.centre - m.axis * (m.drop_radius + kStandardTable.jaws.lip_round + 0.004))})
+      CHECK_MESSAGE(cloth(colour(at)), rgb(colour(at)));
+  }
+
   TEST_CASE("the timeline of scenes/runout.scn shows each of its seven shots' strokes") {
     test::TempDir dir;
     const Picture t =

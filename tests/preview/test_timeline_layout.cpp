@@ -134,8 +134,7 @@ TEST_SUITE("timeline picture layout") {
     REQUIRE(loaded.scripted());
     const Drawn d = draw(timeline_data(*loaded.shot), 1600, 0, 16);
     CHECK(count(d, TimelineDrawn::Kind::list_more) == 0);
-    CHECK(count(d, TimelineDrawn::Kind::list_line) ==
-          static_cast<int>(d.data.events.size() + d.data.drops.size()));
+    CHECK(count(d, TimelineDrawn::Kind::list_line) == static_cast<int>(d.data.events.size() + d.data.drops.size()));
   }
 
   TEST_CASE("a picture too short for the list ends it with \"… and N more\", N the ones left out") {
@@ -147,7 +146,33 @@ TEST_SUITE("timeline picture layout") {
     for (const TimelineDrawn& p : d.pieces)
       if (p.kind == TimelineDrawn::Kind::list_more)
         CHECK(p.text == kEllipsis + " and " +
-                            std::to_string(d.data.events.size() + d.data.drops.size() - std::size_t(listed)) +
-                            " more");
+                            std::to_string(d.data.events.size() + d.data.drops.size() - std::size_t(listed)) + " more");
+  }
+
+  TEST_CASE("the legend explains every kind of tick, a pocket's jaw among them, and the list names the jaw") {
+    // The 1 rattles in the top-right corner's jaws (pocket 2).
+    const ShotResult loaded = load_shot(
+        "cue 0 45\n"
+        "ball 0 0.5176 -0.1683 0.028575 1.7678 1.7678 0 1 0 0 0\n"
+        "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n",
+        "rattle");
+    REQUIRE(loaded.scripted());
+    const Drawn d = draw(timeline_data(*loaded.shot), 1600, 0, 16);
+    std::vector<std::string> legend;
+    for (const TimelineDrawn& p : d.pieces)
+      if (p.kind == TimelineDrawn::Kind::legend_key) legend.push_back(p.text);
+    const std::vector<std::string> expected = {"start / end", "cue", "ball-ball", "ball-rail", "ball-jaw"};
+    REQUIRE(legend.size() >= expected.size() + 1);
+    for (std::size_t k = 0; k < expected.size(); ++k) CHECK(legend[k] == expected[k]);
+    CHECK(legend.back() == "interpolation window (\xE2\x96\xB2 its event)");  // every key fits at 1600 px
+    int jaw_lines = 0;
+    for (const TimelineDrawn& p : d.pieces)
+      if (p.kind == TimelineDrawn::Kind::list_line &&
+          p.text.find("ball 1 \xE2\x80\x93 jaw of pocket 2") != std::string::npos)
+        ++jaw_lines;
+    CHECK(jaw_lines == 5);
+    // Its own colour, told apart from every other tick's.
+    for (EventType other : {EventType::start, EventType::cue, EventType::ball_ball, EventType::ball_rail})
+      CHECK(event_color(EventType::ball_jaw) != event_color(other));
   }
 }

@@ -38,6 +38,7 @@ std::vector<CameraKey> every_key() {
   for (int ordinal : {1, 2, 3, 4, 5, CameraKey::kLast}) {
     keys.push_back(key_of(CameraKeyKind::hit, 1, 0, ordinal));
     keys.push_back(key_of(CameraKeyKind::cushion, 0, -1, ordinal));
+    keys.push_back(key_of(CameraKeyKind::jaw, 1, -1, ordinal));
   }
   return keys;
 }
@@ -82,6 +83,12 @@ TEST_SUITE("camera key text") {
     CHECK(camera_key_text(key_of(CameraKeyKind::hit, 3, 8, 2)) == "second hit 3 8");
     CHECK(camera_key_text(key_of(CameraKeyKind::cushion, 3, -1, CameraKey::kLast)) == "last cushion 3");
     CHECK(camera_key_text(key_of(CameraKeyKind::drop, 5)) == "drop 5");
+    // A pocket's jaw, not a rail: a kind of its own beside `cushion`, with the same ordinals.
+    CHECK(camera_key_text(key_of(CameraKeyKind::jaw, 2)) == "jaw 2");
+    CHECK(camera_key_text(key_of(CameraKeyKind::jaw, 2, -1, 3)) == "third jaw 2");
+    CHECK(camera_key_kind("jaw") == CameraKeyKind::jaw);
+    CHECK(camera_key_ordinal_kinds() == std::vector<std::string_view>{"hit", "cushion", "jaw"});
+    CHECK(camera_key_list().find("before hit, cushion or jaw,") != std::string::npos);
     // `pocket I`, the older spelling of `drop I` (I a ball, not a pocket), is read as it, and written as it.
     CHECK(camera_key_kind("drop") == CameraKeyKind::drop);
     CHECK(camera_key_kind("pocket") == CameraKeyKind::drop);
@@ -93,13 +100,15 @@ TEST_SUITE("camera key text") {
     CHECK(camera_key_ordinal("third") == 3);
     CHECK(camera_key_ordinal("first") == std::nullopt);
     CHECK(camera_key_kind("event") == std::nullopt);
-    CHECK(camera_key_first_words().size() == 14);  // 7 kinds, `pocket` (drop's older spelling), 5 ordinals, `shot`
+    CHECK(camera_key_first_words().size() == 15);  // 8 kinds, `pocket` (drop's older spelling), 5 ordinals, `shot`
   }
 
   TEST_CASE("text that is no key is refused") {
     for (const char* text :
-         {"", "hit 0", "second pocket 3", "second drop 3", "drop", "last", "at", "at x", "hit 0 1 2", "pocket", "70000", "-1", "start 3",
-          "second  hit 0 1", "shot 0 cue", "shot cue", "shot 2", "shot 2 shot 1 cue", "shot x cue", "cue shot 2"}) {
+         {"",           "hit 0",     "second pocket 3", "second drop 3", "drop",     "last",    "at",
+          "at x",       "hit 0 1 2", "pocket",          "70000",         "-1",       "start 3", "second  hit 0 1",
+          "jaw",        "jaw 1 2",   "second jaw",      "shot 0 cue",    "shot cue", "shot 2",  "shot 2 shot 1 cue",
+          "shot x cue", "cue shot 2"}) {
       CAPTURE(text);
       CHECK_FALSE(parse_camera_key(text));
     }

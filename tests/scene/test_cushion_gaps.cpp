@@ -50,15 +50,27 @@ TEST_SUITE("the table's edge") {
       CHECK(open[static_cast<std::size_t>(i)].from_rail == i);
       CHECK(open[static_cast<std::size_t>(i)].to_rail == (i + 1) % 6);
     }
-    // The top side gap runs between the noses' ends at x = -0.065 and 0.065.
-    CHECK(open[0].a.isApprox(Vec3(-0.065, 0.635, 0)));
-    CHECK(open[0].b.isApprox(Vec3(0.065, 0.635, 0)));
+    // The top side gap runs between the jaw points, a side mouth apart.
+    const double half = PhysicsParams{}.side_mouth / 2;
+    CHECK(open[0].a.isApprox(Vec3(-half, 0.635, 0)));
+    CHECK(open[0].b.isApprox(Vec3(half, 0.635, 0)));
   }
 
-  TEST_CASE("a pocket fills a gap only when its circle covers all of the ball's passage") {
+  TEST_CASE("a cut pocket's jaws close its gap; moved off the rails' ends they no longer do") {
     bool enclosed = false;
     std::vector<Pocket> pockets = standard_pockets();
-    // The side pocket's circle shrunk below the passage's half width (0.065 less a reach, 0.0376 m):
+    CHECK(gaps(standard_rails(), pockets, enclosed).empty());
+    pockets[1].jaw[0].x() += 0.01;
+    const std::vector<CushionGap> open = gaps(standard_rails(), pockets, enclosed);
+    REQUIRE(open.size() == 1);
+    CHECK(open[0].from_rail == 0);
+  }
+
+  TEST_CASE("a bare pocket fills a gap only when its circle covers all of the ball's passage") {
+    bool enclosed = false;
+    std::vector<Pocket> pockets = bare_standard_pockets();
+    CHECK(gaps(standard_rails(), pockets, enclosed).empty());
+    // The side pocket's circle shrunk below the passage's half width (0.0643 less a reach, 0.0368 m):
     // a ball rolls past its edge.
     pockets[1].radius = 0.03;
     std::vector<CushionGap> open = gaps(standard_rails(), pockets, enclosed);
@@ -121,10 +133,11 @@ TEST_SUITE("the table's edge") {
       CHECK(d.message.find("of the standard table") != std::string::npos);
       CHECK(d.message.find("replace all six of the standard table's") != std::string::npos);
     }
-    expect_error("cue 0 0\n" + kBall0 + "pocket 1.27 0.635 0 0.08\n", 3, 1,
-                 {"the gap between rails 0 and 1 of the standard table, from (-0.065, 0.635) to (0.065, 0.635), "
-                  "has no pocket: a ball (radius 0.028575) passes through it off the table",
-                  "add a `pocket` line there, such as `pocket 0 0.635 0 0.065`"});
+    expect_error(
+        "cue 0 0\n" + kBall0 + "pocket 1.27 0.635 0 0.08\n", 3, 1,
+        {"the gap between rails 0 and 1 of the standard table, from (-0.0642937, 0.635) to (0.0642937, 0.635), "
+         "has no pocket: a ball (radius 0.028575) passes through it off the table",
+         "add a `pocket` line there, such as `pocket 0 0.635 0 0.0642937`"});
   }
 
   TEST_CASE("a scene's own rails: the error is at the rail whose end opens the gap") {
@@ -191,8 +204,8 @@ TEST_SUITE("a place over a pocket") {
   TEST_CASE("the same warning at the place line as at a ball line") {
     const std::string shots =
         "ball 0 -0.6 0 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n";
-    const ParseResult placed = parse_scene(shots + "place 0 1.22 0.59\n", "t");
-    const ParseResult ball = parse_scene("ball 0 1.22 0.59 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n", "t");
+    const ParseResult placed = parse_scene(shots + "place 0 1.265 0.63\n", "t");
+    const ParseResult ball = parse_scene("ball 0 1.265 0.63 0.028575 0 0 0 1 0 0 0\ncue 0 0\nstroke 1 0 0 0\n", "t");
     REQUIRE(placed.diagnostics.size() == 1);
     REQUIRE(ball.diagnostics.size() == 1);
     CHECK(placed.diagnostics[0].severity == Severity::warning);

@@ -2,6 +2,8 @@
 // describes, with defaults filled in and every reference keeping its source location.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include <filesystem>
 
 #include "files.h"
@@ -160,9 +162,13 @@ TEST_SUITE("scene_parse") {
       CHECK(s.rails[i].b == rails[i].b);
       CHECK_FALSE(s.rails[i].loc.known());
     }
-    check_vec(s.rails[0].a, -1.19, 0.635, kStandardNoseHeight);
-    check_vec(s.pockets[3].center, 1.27, -0.635, 0);
-    CHECK(s.pockets[1].radius == 0.065);
+    // Rail 0 ends at the top-left corner's jaw point, a corner mouth (4.5875 in) over sqrt 2 from the corner.
+    check_vec(s.rails[0].a, -1.27 + 0.1165225 / std::sqrt(2.0), 0.635, kStandardNoseHeight);
+    // The bottom-right corner's hole lies behind its mouth, on the diagonal through the corner.
+    CHECK(s.pockets[3].center.x() - 1.27 == doctest::Approx(-(s.pockets[3].center.y() + 0.635)));
+    CHECK(s.pockets[3].center.x() > 1.27);
+    CHECK(s.pockets[3].cut);
+    CHECK(s.pockets[1].radius == kStandardTable.jaws.side_hole);
     CHECK(s.camera.empty());
   }
 
@@ -172,6 +178,24 @@ TEST_SUITE("scene_parse") {
         "rail 2 -1 0.03 -2 -1 0.03\nrail -2 -1 0.03 -2 1 0.03\n");
     CHECK(s.rails.size() == 4);
     CHECK(s.pockets.size() == 6);
+    // Round cushions of its own the standard pockets are plain drop circles: no jaws.
+    for (const Pocket& p : s.pockets) CHECK_FALSE(p.cut);
+    CHECK(s.pockets[1].radius == kStandardTable.jaws.bare_side_radius);
+  }
+
+  TEST_CASE("param names the standard pockets' mouths, shelves and jaw points' radius") {
+    const Scene s = parse_ok(
+        "cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\nparam corner_mouth 0.108\nparam side_mouth 0.125\n"
+        "param corner_shelf 0.03\nparam side_shelf 0.002\nparam jaw_radius 0.002\n");
+    CHECK((s.rails[0].a - s.rails[5].b).norm() == doctest::Approx(0.108));  // a 4.25 in "pro-cut" corner
+    CHECK((s.rails[1].a - s.rails[0].b).norm() == doctest::Approx(0.125));
+    const PocketMouth corner = pocket_mouth(s.pockets[0], s.rails), side = pocket_mouth(s.pockets[1], s.rails);
+    REQUIRE(corner.cut);
+    REQUIRE(side.cut);
+    CHECK(corner.mouth() == doctest::Approx(0.108));
+    CHECK(corner.shelf() == doctest::Approx(0.03));
+    CHECK(side.shelf() == doctest::Approx(0.002));
+    CHECK(corner.round_radius == 0.002);
   }
 
   TEST_CASE("default physical constants") {
@@ -208,9 +232,9 @@ TEST_SUITE("scene_parse extensions") {
   }
 
   TEST_CASE("pocket lines replace the standard pockets") {
-    const Scene s =
-        parse_ok("cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n"
-                 "pocket 0 0.635 0 0.065  pocket 1.27 -0.635 0 0.08  pocket 0 -0.635 0 0.065  pocket -1.27 -0.635 0 0.08\n");
+    const Scene s = parse_ok(
+        "cue 0 0\nball 0 0 0 0.028575 1 0 0 1 0 0 0\npocket 1.27 0.635 0 0.08\npocket -1.27 0.635 0 0.07\n"
+        "pocket 0 0.635 0 0.065  pocket 1.27 -0.635 0 0.08  pocket 0 -0.635 0 0.065  pocket -1.27 -0.635 0 0.08\n");
     REQUIRE(s.pockets.size() == 6);
     check_vec(s.pockets[1].center, -1.27, 0.635, 0);
     CHECK(s.pockets[1].radius == 0.07);

@@ -5,13 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cue_geometry.h"
+#include "pocket_fall.h"
 #include "pov_format.h"
 #include "pov_table.h"
 #include "scene.h"
+#include "shots.h"
 #include "table.h"
 #include "table_model.h"
 
@@ -88,6 +92,75 @@ bool in_hole(const PocketMouth& m, const Vec3& p) {
   return (Vec3(p.x(), p.y(), 0) - m.centre).norm() <= m.drop_radius || m.in_throat(p);
 }
 
+/// The items of `#declare NAME = array[N] { ... }` in a POV-Ray include, each as written (a number,
+/// or a vector `<u, v>`).
+std::vector<std::string> array_items(const std::string& text, const std::string& name) {
+  std::string body = declared(text, name);
+  std::vector<std::string> items;
+  const auto open = body.find('{'), close = body.find('}');
+  if (open == std::string::npos || close == std::string::npos) return items;
+  body = body.substr(open + 1, close - open - 1);
+  for (std::size_t at = 0; at < body.size();) {
+    while (at < body.size() && (body[at] == ' ' || body[at] == ',')) ++at;
+    if (at >= body.size()) break;
+    const std::size_t end = body[at] == '<' ? body.find('>', at) + 1 : body.find(',', at);
+    std::string item = body.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    while (!item.empty() && item.back() == ' ') item.pop_back();
+    items.push_back(item);
+    at = end == std::string::npos ? body.size() : end;
+  }
+  return items;
+}
+
+/// A point written as `<u, v>` in the include.
+Vec3 point_of(const std::string& item) {
+  double u = 0, v = 0;
+  REQUIRE(std::sscanf(item.c_str(), "<%lf, %lf>", &u, &v) == 2);
+  return Vec3(u, v, 0);
+}
+
+/// m from plan point p to the segment a-b.
+double to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double t = std::clamp((flat(p) - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+  return (flat(p) - (a + t * (b - a))).norm();
+}
+
+/// One cut pocket as the POV-Ray include draws it, read back from its arrays.
+struct DrawnPocket {
+  Vec3 hole{0, 0, 0};
+  double hole_radius = 0, round_radius = 0;
+  Vec3 round_centre[2], face_start[2], tangent[2];
+
+  /// m from plan point p to the drawn jaw i: its rounding's arc or its facing, from the rounding to the hole.
+  double to_jaw(const Vec3& p, int i) const {
+    return std::min(std::abs((flat(p) - round_centre[i]).norm() - round_radius),
+                    to_segment(p, face_start[i], tangent[i]));
+  }
+};
+
+std::vector<DrawnPocket> drawn_pockets(const std::string& text) {
+  const auto c = array_items(text, "PocketC"), r = array_items(text, "PocketR"), rr = array_items(text, "JawRoundR");
+  for (const char* name :
+       {"PocketR", "JawRoundR", "JawRoundC0", "JawRoundC1", "JawFaceStart0", "JawFaceStart1", "ThroatT0", "ThroatT1"}) {
+    CAPTURE(name);
+    REQUIRE(array_items(text, name).size() == c.size());
+  }
+  std::vector<DrawnPocket> pockets(c.size());
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    DrawnPocket& p = pockets[k];
+    p.hole = point_of(c[k]);
+    p.hole_radius = std::stod(r[k]);
+    p.round_radius = std::stod(rr[k]);
+    for (int i = 0; i < 2; ++i) {
+      const std::string n = std::to_string(i);
+      p.round_centre[i] = point_of(array_items(text, "JawRoundC" + n)[k]);
+      p.face_start[i] = point_of(array_items(text, "JawFaceStart" + n)[k]);
+      p.tangent[i] = point_of(array_items(text, "ThroatT" + n)[k]);
+    }
+  }
+  return pockets;
+}
+
 }  // namespace
 
 TEST_SUITE("table model") {
@@ -103,9 +176,18 @@ TEST_SUITE("table model") {
     }
     CHECK(rails[2].a.x() == t.half_length);
     CHECK(rails[0].a.y() == t.half_width);
-    CHECK(rails[0].a.x() == -t.half_length + t.corner_pocket_radius);
-    CHECK(pockets[0].radius == t.corner_pocket_radius);
-    CHECK(pockets[1].radius == t.side_pocket_radius);
+    // The rails end at the jaw points: the WPA mouths between them, 4.5 to 4.625 in at a corner, 5 to
+    // 5.125 in at a side.
+    const PhysicsParams params;
+    CHECK(rails[0].a.x() == doctest::Approx(-t.half_length + params.corner_mouth / std::sqrt(2.0)));
+    CHECK((rails[0].a - rails[5].b).norm() == doctest::Approx(params.corner_mouth));
+    CHECK((rails[1].a - rails[0].b).norm() == doctest::Approx(params.side_mouth));
+    CHECK(params.corner_mouth >= 4.5 * 0.0254);
+    CHECK(params.corner_mouth <= 4.625 * 0.0254);
+    CHECK(params.side_mouth >= 5 * 0.0254);
+    CHECK(params.side_mouth <= 5.125 * 0.0254);
+    CHECK(pockets[0].radius == t.jaws.corner_hole);
+    CHECK(pockets[1].radius == t.jaws.side_hole);
     CHECK(kStandardNoseHeight == t.nose_height);
   }
 
@@ -212,9 +294,14 @@ TEST_SUITE("table model") {
     };
     // Over the wood's outer edge: the block the model draws is the one the stick must clear.
     CHECK(stick_clearance(stick_at(t.rail_reach() - 0.005), scene, {}, 0.028575) == doctest::Approx(0.002));
-    // Just beyond the table's outer edge only the bed's plane is left to clear.
-    CHECK(stick_clearance(stick_at(t.rail_reach() + 0.005), scene, {}, 0.028575) ==
+    // Beyond the table's outer edge by more than the stick is thick only the bed's plane is left to clear.
+    CHECK(stick_clearance(stick_at(t.rail_reach() + kCueButtRadius + 0.001), scene, {}, 0.028575) ==
           doctest::Approx(z - kCueButtRadius));
+    // Beside the edge by less, the stick's round overhangs the wood: what lies over it clears it by
+    // less than the stick's lowest line clears the bed, but more than that line would clear the wood.
+    const double overhang = stick_clearance(stick_at(t.rail_reach() + 0.005), scene, {}, 0.028575);
+    CHECK(overhang > 0.002);
+    CHECK(overhang < z - kCueButtRadius);
   }
 
   TEST_CASE("pockets: corner and side jaws from the nose lines, cut along facings at the WPA's 142 and 104 degrees") {
@@ -311,16 +398,172 @@ TEST_SUITE("table model") {
         corner.throat_centre.x() - (corner.throat_radius + kStandardTable.jaws.liner) * std::sqrt(0.5);
     CHECK(holes.x0 < back_x + 1e-3);
     CHECK(holes.x0 > corner.throat_centre.x() - corner.throat_radius - kStandardTable.jaws.liner - 1e-3);
-    // The preview's cushion reaches past the nose end along the facing, to where it meets the wood.
-    // (Of the top-left corner's jaws, the top cushion's: its back is the cushion's width along +y.)
-    const int top = std::abs(corner.nose[0].y() - kStandardTable.half_width) < 1e-9 ? 0 : 1;
-    REQUIRE(corner.nose[top].y() == doctest::Approx(kStandardTable.half_width));
-    bool facing_corner = false;
-    const Vec3 at_wood =
-        corner.nose[top] + corner.facing[top] * (kStandardTable.cushion.width / corner.facing[top].y());
-    for (const Vertex& v : model.body.vertices)
-      if (std::abs(v.position[0] - at_wood.x()) < 1e-5 && std::abs(v.position[1] - at_wood.y()) < 1e-5)
-        facing_corner = true;
-    CHECK(facing_corner);
+    // The preview's cushion ends where the physics' jaw is: from the rounding's start on the nose,
+    // through its end on the facing, along the facing to the hole's edge.
+    const TableModel drawn = build_table_model(scene);
+    for (const PocketMouth& m : layout.pockets)
+      for (int i = 0; i < 2; ++i)
+        for (const Vec3& p : {m.nose_end[i], m.face_start[i], m.tangent[i]}) {
+          CAPTURE(p.x());
+          CAPTURE(p.y());
+          CHECK(std::any_of(drawn.body.vertices.begin(), drawn.body.vertices.end(), [&](const Vertex& v) {
+            return std::hypot(v.position[0] - p.x(), v.position[1] - p.y()) < 1e-5;
+          }));
+        }
+  }
+  TEST_CASE("pockets: the include declares each cut pocket as the physics builds it, to the micrometre") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const std::string text = include_text(scene);
+    const auto v2 = [](const Vec3& p) { return pov_vector2(p.x(), p.y()); };
+    for (std::size_t k = 0; k < scene.pockets.size(); ++k) {
+      CAPTURE(k);
+      // The physics' own jaws, hole and shelf (what simulate.cpp's jaws are built from).
+      const PocketMouth m = pocket_mouth(scene.pockets[k], scene.rails);
+      REQUIRE(m.cut);
+      CHECK(array_items(text, "PocketCut")[k] == "1");
+      CHECK(array_items(text, "PocketC")[k] == v2(m.centre));
+      CHECK(array_items(text, "PocketR")[k] == pov_number(m.drop_radius));
+      CHECK(array_items(text, "PocketAxis")[k] == v2(m.axis));
+      CHECK(array_items(text, "JawRoundR")[k] == pov_number(m.round_radius));
+      for (int i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i);
+        CHECK(array_items(text, "JawNose" + n)[k] == v2(m.nose[i]));
+        CHECK(array_items(text, "JawIn" + n)[k] == v2(m.inward[i]));
+        CHECK(array_items(text, "JawRoundC" + n)[k] == v2(m.round_centre[i]));
+        CHECK(array_items(text, "JawNoseEnd" + n)[k] == v2(m.nose_end[i]));
+        CHECK(array_items(text, "JawFaceStart" + n)[k] == v2(m.face_start[i]));
+        CHECK(array_items(text, "ThroatT" + n)[k] == v2(m.tangent[i]));
+      }
+      // The layout every front end draws from is that same mouth.
+      CHECK((layout.pockets[k].centre - m.centre).norm() == 0);
+      CHECK((layout.pockets[k].tangent[1] - m.tangent[1]).norm() == 0);
+    }
+    // A scene's own pockets are not cut: drawn as before, the physics' drop circle alone.
+    Scene own = standard_scene();
+    own.pockets = bare_standard_pockets();
+    CHECK(array_items(include_text(own), "PocketCut") == std::vector<std::string>(6, "0"));
+  }
+
+  TEST_CASE("pockets: balls bounce off the drawn jaws and drop through the drawn hole") {
+    const std::vector<DrawnPocket> drawn = drawn_pockets(include_text(standard_scene()));
+    REQUIRE(drawn.size() == 6);
+    const double R = 0.028575, rise = kStandardTable.nose_height - R, reach = std::sqrt(R * R - rise * rise);
+    int jaw_contacts = 0, drops = 0;
+    // Lone balls rolled at the top-right corner and the top side pocket across the mouth, straight in
+    // and at an angle, from the middle of each jaw to the other.
+    struct Aim {
+      Vec3 from, to;
+    };
+    std::vector<Aim> aims;
+    for (int k = -12; k <= 12; ++k) {
+      aims.push_back({Vec3(0.85, 0.2 + 0.01 * k, 0), Vec3(1.2288 + 0.004 * k, 0.5938 - 0.004 * k, 0)});
+      aims.push_back({Vec3(-0.35 + 0.02 * k, 0.1, 0), Vec3(0.006 * k, 0.62, 0)});
+    }
+    for (const Aim& aim : aims) {
+      const Vec3 v = (aim.to - aim.from).normalized() * 1.2;
+      char text[160];
+      std::snprintf(text, sizeof text, "cue 0 %.6f\nball 0 %.6f %.6f 0.028575  %.6f %.6f 0  1 0 0 0\n",
+                    std::atan2(v.y(), v.x()) * 180 / 3.14159265358979323846, aim.from.x(), aim.from.y(), v.x(), v.y());
+      const auto shot = test::load_scene(text, "aim");
+      CAPTURE(text);
+      for (const Event& e : shot->timeline.events()) {
+        if (e.type != EventType::ball_jaw) continue;
+        ++jaw_contacts;
+        const DrawnPocket& p = drawn[static_cast<std::size_t>(e.pocket)];
+        // The contact is on a drawn jaw, at the nose's height, the ball's centre as far from it as from
+        // any cushion's nose (its radius, seen from above at the height the nose stands above the centre).
+        CHECK(std::min(p.to_jaw(e.where, 0), p.to_jaw(e.where, 1)) < 3e-6);
+        CHECK(e.where.z() == doctest::Approx(kStandardTable.nose_height));
+        CHECK((flat(e.before.front().position) - flat(e.where)).norm() == doctest::Approx(reach).epsilon(1e-6));
+      }
+      for (const PocketDrop& d : shot->timeline.pocket_drops()) {
+        ++drops;
+        // The ball drops as its centre crosses the edge of the drawn hole.
+        const DrawnPocket& p = drawn[static_cast<std::size_t>(d.pocket)];
+        const Vec3 centre = shot->timeline.state(d.ball, d.time).position;
+        CHECK((flat(centre) - p.hole).norm() == doctest::Approx(p.hole_radius).epsilon(3e-6 / p.hole_radius));
+      }
+    }
+    CHECK(jaw_contacts >= 10);
+    CHECK(drops >= 10);
+  }
+
+  TEST_CASE("pockets: the preview draws each cut pocket where the physics has it") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const TableModel model = build_table_model(scene);
+    const double lip = kStandardTable.jaws.lip_round;
+    for (const PocketMouth& m : layout.pockets) {
+      CAPTURE(m.centre.x());
+      CAPTURE(m.centre.y());
+      // The bed is cut at the physics' hole (grown by the slate's rounded lip), not across the shelf.
+      int hole_points = 0;
+      for (const Vertex& v : model.bed_holes.vertices) {
+        const double d = std::hypot(v.position[0] - m.centre.x(), v.position[1] - m.centre.y());
+        if (d > 0.3) continue;
+        ++hole_points;
+        CHECK(d == doctest::Approx(m.drop_radius + lip).epsilon(1e-5));
+      }
+      CHECK(hole_points >= 48);
+      // The wood's top is cut by that opening and its liner alone: every point of the mask lies in it.
+      const MeshData& mask = model.top_holes;
+      for (std::size_t t = 0; t + 2 < mask.indices.size(); t += 3) {
+        Vec3 corner[3];
+        for (int c = 0; c < 3; ++c) {
+          const Vertex& v = mask.vertices[mask.indices[t + static_cast<std::size_t>(c)]];
+          corner[c] = Vec3(v.position[0], v.position[1], 0);
+        }
+        if ((corner[0] - m.centre).norm() > 0.3) continue;
+        for (double u : {0.05, 0.33, 0.6})
+          for (double w : {0.05, 0.33, 0.6})
+            if (u + w < 1)
+              CHECK(m.in_throat(corner[0] + u * (corner[1] - corner[0]) + w * (corner[2] - corner[0]),
+                                kStandardTable.jaws.liner + 1e-5));
+      }
+      // Nothing stands where the physics leaves the opening clear: no cushion or wood over the shelf
+      // or the hole.
+      for (const Vertex& v : model.body.vertices)
+        if (v.position[2] > 1e-4) CHECK(!m.in_throat(Vec3(v.position[0], v.position[1], 0), -1e-5));
+      // The pocket's wall below the bed is the hole's edge, and the cup's floor is where the physics
+      // leaves a pocketed ball (its bottom kPocketDepth below the bed).
+      double floor = 0;
+      for (const Vertex& v : model.pockets.vertices) {
+        const double d = std::hypot(v.position[0] - m.centre.x(), v.position[1] - m.centre.y());
+        if (d > 0.3) continue;
+        floor = std::min<double>(floor, v.position[2]);
+        if (v.position[2] < -lip - 1e-6) CHECK(d <= m.drop_radius + 1e-5);
+      }
+      CHECK(floor == doctest::Approx(-kPocketDepth).epsilon(0.01));
+    }
+  }
+
+  TEST_CASE("the stick may go low over a pocket's opening, not over the wood round its hole") {
+    const Scene scene = standard_scene();
+    const TableLayout layout = table_layout(scene);
+    const PocketMouth& corner = layout.pockets[2];  // the top-right corner
+    REQUIRE(corner.cut);
+    // The tip 1 cm over the middle of the hole, the stick rising outwards at 45 degrees along the
+    // pocket's axis: it clears the wood behind the hole, so only the bed's plane is close.
+    CuePose over_hole;
+    over_hole.tip = corner.centre + Vec3(0, 0, 0.01 + kCueTipRadius);
+    over_hole.axis = Vec3(corner.axis + Vec3(0, 0, 1)).normalized();
+    over_hole.visible = true;
+    const double tip_low = over_hole.tip.z() - kCueTipRadius * std::sqrt(1 - over_hole.axis.z() * over_hole.axis.z());
+    CHECK(stick_clearance(over_hole, scene, {}, 0.028575) == doctest::Approx(tip_low));
+    CHECK(tip_low > 0.01);
+    // A level stick low over the table's outer corner, behind the hole, meets the wood there.
+    CuePose over_corner;
+    const double top = layout.rail_top;
+    over_corner.tip = Vec3(layout.wood_outer.x1 - 0.04, layout.wood_outer.y1 - 0.04, top - 0.005 + kCueTipRadius);
+    over_corner.axis = Vec3(std::sqrt(0.5), std::sqrt(0.5), 0);
+    over_corner.visible = true;
+    const double wood_gap = stick_clearance(over_corner, scene, {}, 0.028575);
+    CHECK(wood_gap < -0.004);
+    CHECK(wood_gap > -0.006);
+    // Over a facing, below the wood's top, the stick meets the cushion.
+    CuePose at_facing = over_hole;
+    at_facing.tip = corner.nose[0] + corner.facing[0] * 0.03 - corner.inward[0] * 0.004 + Vec3(0, 0, 0.03);
+    CHECK(stick_clearance(at_facing, scene, {}, 0.028575) < 0);
   }
 }

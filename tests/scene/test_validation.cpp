@@ -76,7 +76,8 @@ TEST_SUITE("validation: tokens") {
 
   TEST_CASE("missing tokens at the end of the file point just past the last token") {
     expect_error("cue 0 0\nball 0 0\n", 2, 9, {"expected a number for the ball's y position, found end of file"});
-    expect_error("cue 0 0\nball 0 0 0 0.028575\n", 2, 20, {"expected a number for the ball's x velocity, found end of file"});
+    expect_error("cue 0 0\nball 0 0 0 0.028575\n", 2, 20,
+                 {"expected a number for the ball's x velocity, found end of file"});
     expect_error("cue 0 0\n" + kBall0 + "param", 3, 6, {"expected a parameter name", "found end of file"});
     expect_error("cue", 1, 4, {"expected an integer for the cue's target ball, found end of file"});
   }
@@ -179,8 +180,16 @@ TEST_SUITE("validation: balls") {
 
   TEST_CASE("a ball starting over a pocket is a warning") {
     // On the standard table the pocket is named in words.
-    expect_warning("cue 0 180\nball 0 1.22 0.59 0.028575 -1 0 0 1 0 0 0\n", 2, 8,
+    expect_warning("cue 0 180\nball 0 1.265 0.63 0.028575 -1 0 0 1 0 0 0\n", 2, 8,
                    "ball 0 starts over the top-right corner (pocket 2) and will drop into it");
+  }
+
+  TEST_CASE("a ball on a cut pocket's shelf is on the table; one cutting into a jaw is not") {
+    // Past the top-right corner's mouth (its middle at 1.2288, 0.5938), short of the hole: on the shelf.
+    expect_clean("cue 0 180\nball 0 1.245 0.61 0.028575 -1 0 0 1 0 0 0\n");
+    // Off the pocket's axis by 4 cm there, it stands in the facing: outside the cushions.
+    expect_error("cue 0 180\nball 0 1.273 0.582 0.028575 -1 0 0 1 0 0 0\n", 2, 8,
+                 {"expected the ball inside the cushions"});
   }
 }
 

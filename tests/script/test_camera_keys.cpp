@@ -277,7 +277,11 @@ TEST_SUITE("camera_keys") {
     const ParseResult ordinal = parse_scene(two_balls({"event second hti 0 1 0 0 hover 0 -3 2 0 0 0"}), "t");
     REQUIRE(ordinal.diagnostics.size() == 1);
     CHECK(ordinal.diagnostics[0].message ==
-          "expected 'hit' or 'cushion' after 'second', found 'hti'; did you mean 'hit'?");
+          "expected 'hit', 'cushion' or 'jaw' after 'second', found 'hti'; did you mean 'hit'?");
+    const ParseResult jaw = parse_scene(two_balls({"event last jwa 1 0 0 hover 0 -3 2 0 0 0"}), "t");
+    REQUIRE(jaw.diagnostics.size() == 1);
+    CHECK(jaw.diagnostics[0].message ==
+          "expected 'hit', 'cushion' or 'jaw' after 'last', found 'jwa'; did you mean 'jaw'?");
     CHECK(ordinal.diagnostics[0].loc.column == 14);
     // Numbers stay numbers: a fraction is still "an integer for the event number".
     const ParseResult fraction = parse_scene(two_balls({"event 1.5 0 0 hover 0 -3 2 0 0 0"}), "t");
@@ -553,5 +557,113 @@ TEST_SUITE("camera_keys") {
                              "found 4") != std::string::npos,
                   r.err);
     CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
+
+TEST_SUITE("camera_keys: a pocket's jaws") {
+  /// The 1 sent by the cue ball into the top-right corner 36 mm off its middle: it rattles in the jaws,
+  /// five knocks in 0.7 s, and stays out; the cue ball then nudges it into the right-hand cushion.
+  const std::string kRattle =
+      "cue 0 45\n"
+      "ball 0 0.5176 -0.1683 0.028575 1.7678 1.7678 0 1 0 0 0\n"
+      "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n";
+
+  std::vector<double> jaw_times(const Timeline& timeline, int ball) {
+    std::vector<double> out;
+    for (const Event& e : timeline.events())
+      if (e.type == EventType::ball_jaw && e.balls.at(0) == ball) out.push_back(e.time);
+    return out;
+  }
+
+  TEST_CASE("jaw and its ordinals: a ball's contacts with pockets' jaws; cushion keeps meaning the rails") {
+    const Timeline timeline = simulate(*parse_scene(kRattle, "rattle").scene);
+    const std::vector<double> jaws = jaw_times(timeline, 1), rails = cushion_times(timeline, 1);
+    REQUIRE(jaws.size() == 5);
+    REQUIRE(rails.size() == 1);
+    REQUIRE(rails[0] > jaws.back());
+    CHECK(instant(kRattle, "jaw 1") == jaws[0]);
+    CHECK(instant(kRattle, "second jaw 1") == jaws[1]);
+    CHECK(instant(kRattle, "fifth jaw 1") == jaws[4]);
+    CHECK(instant(kRattle, "last jaw 1") == jaws.back());
+    // The rails alone: the first cushion of the 1 is the one after its rattle.
+    CHECK(instant(kRattle, "cushion 1") == rails[0]);
+    CHECK(instant(kRattle, "last cushion 1") == rails[0]);
+    // As written and read back.
+    const ParseResult parsed = parse_scene(
+        kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event third  jaw 1 0.2 0 look 0 -2 1 1"}),
+        "rattle");
+    REQUIRE(parsed.scene);
+    const CameraKey& key = parsed.scene->camera.at(1).key;
+    CHECK(key.kind == CameraKeyKind::jaw);
+    CHECK(key.ordinal == 3);
+    CHECK(key.a == 1);
+    CHECK(key.a_loc.column == 18);
+    CHECK(camera_key_text(key) == "third jaw 1");
+    // In the camera script: blends on the third knock as on its event's number.
+    const std::string numbered =
+        kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event 5 0.2 0 look 0 -2 1 1"});
+    REQUIRE(timeline.events().at(5).time == jaws[2]);
+    const ShotResult keyed = load_shot(
+        kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event third jaw 1 0.2 0 look 0 -2 1 1"}), "keyed");
+    const ShotResult by_number = load_shot(numbered, "numbered");
+    REQUIRE(keyed.scripted());
+    REQUIRE(by_number.scripted());
+    for (double t = 2.5; t < 4.5; t += 0.05) {
+      CAPTURE(t);
+      CHECK((keyed.shot->camera->pose(t).location - by_number.shot->camera->pose(t).location).norm() < 1e-12);
+    }
+  }
+
+  TEST_CASE("a jaw key the shot never reaches: an error after simulating, at the key, as for cushions") {
+    const auto line = [](const std::string& balls, const std::string& key) {
+      return balls + fx::camera({"event 0 0 0 hover 0 -3 2 0 0 0", "event " + key + " 0 0 hover 1 -3 2 0 0 0"});
+    };
+    const int lines = static_cast<int>(std::count(kRattle.begin(), kRattle.end(), '\n'));
+    Diagnostic d = only_error(line(fx::kTwoBalls, "jaw 0"));
+    CHECK(d.message == "jaw 0 never happens: ball 0 meets no pocket's jaw");
+    CHECK(format_diagnostic(d, "bad.scn") == "bad.scn:6:7: error: jaw 0 never happens: ball 0 meets no pocket's jaw");
+    d = only_error(line(kRattle, "last jaw 0"));
+    CHECK(d.message == "last jaw 0 never happens: ball 0 meets no pocket's jaw");
+    CHECK(d.loc.line == lines + 3);
+    // Slower, the 1 knocks twice and drops.
+    const std::string slower =
+        "cue 0 45\n"
+        "ball 0 0.5176 -0.1683 0.028575 1.2728 1.2728 0 1 0 0 0\n"
+        "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n";
+    d = only_error(line(slower, "third jaw 1"));
+    CHECK(d.message == "third jaw 1 never happens: ball 1 meets a pocket's jaw twice");
+    CHECK(d.loc.column == 7);
+    d = only_error(line(slower, "jaw 4"));
+    CHECK(d.message == "ball 4 does not exist: the scene has 2 balls (0 to 1)");
+    CHECK(d.loc.column == 11);
+  }
+
+  TEST_CASE("billiards-export: a jaw key films the knock it names; one the shot never reaches is an error at the key") {
+    test::TempDir dir;
+    const std::string keyed =
+        dir.file("keyed.scn",
+                 kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event third jaw 1 0.3 0 look 0 -2 1 1"}));
+    const std::string numbered = dir.file(
+        "numbered.scn", kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event 5 0.3 0 look 0 -2 1 1"}));
+    std::string csv[2];
+    const std::string scenes[2] = {keyed, numbered};
+    for (int k = 0; k < 2; ++k) {
+      const auto out = dir.path / ("out" + std::to_string(k));
+      const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scenes[k] +
+                                                      "' --events-only --fps 30 -o '" + out.string() + "'");
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      csv[k] = test::require_file(out / "camera.csv");
+      if (k == 0) CHECK(test::require_file(out / "events.json").find("\"type\": \"ball-jaw\"") != std::string::npos);
+    }
+    CHECK(csv[0].size() > 100);
+    CHECK(csv[0] == csv[1]);
+    const std::string missing = dir.file(
+        "missing.scn", kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event jaw 0 0.3 0 look 0 -2 1 1"}));
+    const auto out = dir.path / "missing";
+    const test::CommandResult r =
+        test::run_command(test::bin("billiards-export") + " '" + missing + "' --events-only -o '" + out.string() + "'");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("missing.scn:6:7: error: jaw 0 never happens: ball 0 meets no pocket's jaw") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out / "camera.csv"));
   }
 }

@@ -259,10 +259,10 @@ TEST_SUITE("director") {
     CHECK((stroke.location - cue).dot(aim) < -0.5);
     CHECK(stroke.location.z() > cue.z() + 0.3);
     CHECK((stroke.target - stroke.location).dot(aim) > 0);
-    // The 1 (ball 1), the last ball down, watched from the contact that sets it going; then wide as it drops.
-    CHECK(script.shots[1].ball == 1);
+    // The 10 (ball 10), the last ball down, watched from the contact that sets it going; then wide as it drops.
+    CHECK(script.shots[1].ball == 10);
     CHECK(script.shots[1].mode != CameraMode::hover);
-    CHECK(camera_key_text(script.shots[2].key) == "drop 1");
+    CHECK(camera_key_text(script.shots[2].key) == "drop 10");
     CHECK(script.shots[2].mode == CameraMode::hover);
   }
 
@@ -448,5 +448,108 @@ TEST_SUITE("director") {
     const std::string plain = (tmp.path / "scene").string();
     CHECK(test::run_command(exporter + " --events-only -o " + quoted(plain)).exit_code == 0);
     CHECK(test::require_file(fs::path(dir) / "camera.csv") != test::require_file(fs::path(plain) / "camera.csv"));
+  }
+}
+
+TEST_SUITE("director: a pocket's jaws") {
+  /// The 1, sent along the table, comes off the top cushion into the top-right corner and rattles in
+  /// its jaws, three knocks in 0.43 s, and stays out.
+  const std::string kBankRattle =
+      "cue 0 25\n"
+      "ball 0 -0.9625 -0.3690 0.028575 1.8126 0.8452 0 1 0 0 0\n"
+      "ball 1 -0.6000 -0.2000 0.028575 0 0 0 1 0 0 0\n";
+
+  std::vector<const Event*> jaw_events(const Timeline& timeline, int ball) {
+    std::vector<const Event*> out;
+    for (const Event& e : timeline.events())
+      if (e.type == EventType::ball_jaw && e.balls.at(0) == ball) out.push_back(&e);
+    return out;
+  }
+
+  TEST_CASE("a ball rattling in a pocket's jaws is watched to its last knock, and only then the camera goes wide") {
+    const ParseResult parsed = parse_scene(kBankRattle, "bank rattle");
+    REQUIRE(parsed.scene);
+    DirectedCamera script;
+    const std::unique_ptr<Shot> shot = directed(*parsed.scene, &script);
+    const std::vector<const Event*> jaws = jaw_events(shot->timeline, 1);
+    REQUIRE(jaws.size() == 3);
+    REQUIRE(shot->timeline.pocket_drops().empty());
+    // Its cushion comes first, over a second after the hit that sets it going: a moment the wide shot
+    // could start at, with the rattle still to come.
+    double cushion = -1;
+    for (const Event& e : shot->timeline.events())
+      if (e.type == EventType::ball_rail && e.balls[0] == 1) cushion = e.time;
+    REQUIRE(cushion > shot->timeline.events().at(2).time + kMinDescriptionSeconds);
+    REQUIRE(cushion < jaws.front()->time);
+
+    REQUIRE(script.shots.size() == 3);
+    CHECK(script.shots[1].ball == 1);
+    CHECK(script.shots[1].mode != CameraMode::hover);
+    CHECK(script.comments[1].find("the 1 (ball 1) rattling in the jaws of the top-right corner (pocket 2)") !=
+          std::string::npos);
+    CHECK(camera_key_text(script.shots[2].key) == "last jaw 1");
+    // Up to the last knock the camera is the one on the 1 (holding it, or still arriving at it), never
+    // on its way to the wide shot, which leaves only from the last knock; every knock's jaw is in the picture.
+    for (const Event* e : jaws) {
+      CAPTURE(e->time);
+      int in_charge = shot->camera->shot_at(e->time);
+      for (const CameraWindow& w : shot->camera->windows())
+        if (e->time >= w.begin && e->time < w.end) in_charge = w.shot;
+      if (e != jaws.back()) CHECK(in_charge == 1);
+      CHECK(in_frame(*shot, e->time, e->where));
+    }
+    for (const CameraWindow& w : shot->camera->windows())
+      if (w.shot == 2) CHECK(w.begin >= jaws.back()->time);
+    check_shot("bank rattle", *parsed.scene);
+  }
+
+  TEST_CASE("with no ball pocketed, the ball that met a pocket's jaw matters more than a faster one") {
+    // The 1 rattles in the top-right corner's jaws and stays out; the 2, rolling across the table on its
+    // own, is the fastest object ball.
+    const ParseResult parsed = parse_scene(
+        "cue 0 45\n"
+        "ball 0 0.5176 -0.1683 0.028575 1.7678 1.7678 0 1 0 0 0\n"
+        "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n"
+        "ball 2 -1.0 -0.45 0.028575 2.6 0 0 1 0 0 0\n",
+        "rattle and a runner");
+    REQUIRE(parsed.scene);
+    DirectedCamera script;
+    const std::unique_ptr<Shot> shot = directed(*parsed.scene, &script);
+    REQUIRE(shot->timeline.pocket_drops().empty());
+    REQUIRE(jaw_events(shot->timeline, 1).size() >= 3);
+    REQUIRE(jaw_events(shot->timeline, 2).empty());
+    double fastest[3] = {0, 0, 0};
+    for (double t = 0; t < shot->timeline.duration(); t += 0.01)
+      for (int b = 1; b <= 2; ++b) {
+        const Vec3 v = shot->timeline.motion_state(b, t).velocity;
+        fastest[b] = std::max(fastest[b], std::hypot(v.x(), v.y()));
+      }
+    REQUIRE(fastest[2] > fastest[1]);
+    REQUIRE(script.shots.size() >= 2);
+    CHECK(script.subjects[1] == 1);
+    CHECK(script.shots[1].ball == 1);
+    check_shot("rattle and a runner", *parsed.scene);
+  }
+
+  TEST_CASE("in 50 random breaks every knock on a jaw by the ball the camera is on is in the picture") {
+    int followed = 0;
+    for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+      CAPTURE(seed);
+      DirectedCamera script;
+      const std::unique_ptr<Shot> shot = directed(scenes::random_break(seed), &script);
+      for (const Event& e : shot->timeline.events()) {
+        if (e.type != EventType::ball_jaw) continue;
+        // The description in charge: the one being blended into, else the one that holds.
+        int in_charge = shot->camera->shot_at(e.time);
+        for (const CameraWindow& w : shot->camera->windows())
+          if (e.time >= w.begin && e.time < w.end) in_charge = w.shot;
+        const auto k = static_cast<std::size_t>(in_charge);
+        if (script.subjects[k] != e.balls[0] || script.shots[k].mode == CameraMode::hover) continue;
+        ++followed;
+        CAPTURE(e.time);
+        CHECK(in_frame(*shot, e.time, e.where));
+      }
+    }
+    CHECK(followed >= 10);
   }
 }

@@ -153,7 +153,7 @@ TEST_SUITE("sound") {
   TEST_CASE("every kind of sound gets louder with speed, and its peak is its gain") {
     const PhysicsParams physics;
     for (SoundKind kind : {SoundKind::ball_ball, SoundKind::ball_rail, SoundKind::cue, SoundKind::pocket_fall,
-                           SoundKind::pocket_knock, SoundKind::pocket_roll}) {
+                           SoundKind::pocket_knock, SoundKind::pocket_roll, SoundKind::jaw_knock}) {
       CAPTURE(static_cast<int>(kind));
       double previous = 0;
       for (double speed : {0.05, 0.3, 1.0, 3.0, 8.0}) {
@@ -170,14 +170,13 @@ TEST_SUITE("sound") {
 
   TEST_CASE("a sound starts at its cue's time, or that much earlier with a lead") {
     const PhysicsParams physics;
-    const std::vector<SoundCue> cues = {{SoundKind::cue, 0.3, 2.0, 0, 1},
-                                        {SoundKind::ball_ball, 0.61, 1.0, 0, 2},
-                                        {SoundKind::ball_rail, 1.02, 0.5, 0, 3},
-                                        {SoundKind::pocket_fall, 1.5, 0.8, 0, 4},
-                                        {SoundKind::pocket_knock, 2.2, 0.8, 0, 5}};
+    const std::vector<SoundCue> cues = {
+        {SoundKind::cue, 0.3, 2.0, 0, 1},          {SoundKind::ball_ball, 0.61, 1.0, 0, 2},
+        {SoundKind::ball_rail, 1.02, 0.5, 0, 3},   {SoundKind::pocket_fall, 1.5, 0.8, 0, 4},
+        {SoundKind::pocket_knock, 2.2, 0.8, 0, 5}, {SoundKind::jaw_knock, 2.5, 0.8, 0, jaw_seed(2, 6)}};
     for (double lead : {0.0, 0.005, 0.03}) {
       CAPTURE(lead);
-      AudioBuffer audio = silence(2.6);
+      AudioBuffer audio = silence(2.9);
       mix_cues(cues, physics, lead, audio);
       for (const SoundCue& cue : cues) {
         CAPTURE(cue.time);
@@ -667,5 +666,182 @@ TEST_SUITE("sound: a scene of several shots") {
       CHECK(peak(audio, span.cue + 0.001, span.cue + 0.006) > 4 * peak(audio, span.cue - 0.012, span.cue - 0.003));
     }
     CHECK(test::quietest_window_db(audio, 0.1) > -70.0);
+  }
+}
+
+TEST_SUITE("sound: a pocket's jaws") {
+  /// The 1 sent by the cue ball into the top-right corner (pocket 2) 36 mm off its middle: it knocks on
+  /// the near jaw and the far one and back, five times in 0.7 s (a rattle), and stays out.
+  const std::string kRattle = std::string(
+                                  "cue 0 45\n"
+                                  "ball 0 0.5176 -0.1683 0.028575 1.7678 1.7678 0 1 0 0 0\n"
+                                  "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n") +
+                              test::fixtures::kHoverCamera;
+  /// The same slower: the 1 knocks twice and drops; the cue ball follows it and knocks twice on the
+  /// same jaws, slowly, 0.77 s apart.
+  const std::string kTwoRattles = std::string(
+                                      "cue 0 45\n"
+                                      "ball 0 0.5176 -0.1683 0.028575 1.2728 1.2728 0 1 0 0 0\n"
+                                      "ball 1 0.9419 0.2560 0.028575 0 0 0 1 0 0 0\n") +
+                                  test::fixtures::kHoverCamera;
+
+  /// Hz, the spectral centroid of `wave` (its first 8192 samples, 171 ms): the mean frequency of its
+  /// energy's spectrum, each bin weighted by its power (Goertzel's recurrence, bin by bin), so the
+  /// modes that carry the sound set it rather than a faint noise floor spread up to 24 kHz.
+  double spectral_centroid(const std::vector<float>& wave) {
+    const std::size_t n = std::min<std::size_t>(wave.size(), 8192);
+    double weighted = 0, total = 0;
+    for (std::size_t k = 1; k < n / 2; ++k) {
+      const double w = 2 * M_PI * static_cast<double>(k) / static_cast<double>(n), c = 2 * std::cos(w);
+      double s1 = 0, s2 = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double s0 = wave[i] + c * s1 - s2;
+        s2 = s1;
+        s1 = s0;
+      }
+      const double power = std::max(0.0, s1 * s1 + s2 * s2 - c * s1 * s2);
+      weighted += power * static_cast<double>(k) * kSampleRate / static_cast<double>(n);
+      total += power;
+    }
+    return weighted / total;
+  }
+
+  /// s until all but 5 % of the sound's energy has arrived.
+  double energy_duration(const std::vector<float>& wave) {
+    double total = 0;
+    for (float s : wave) total += static_cast<double>(s) * s;
+    double sum = 0;
+    for (std::size_t i = 0; i < wave.size(); ++i) {
+      sum += static_cast<double>(wave[i]) * wave[i];
+      if (sum >= 0.95 * total) return static_cast<double>(i) / kSampleRate;
+    }
+    return static_cast<double>(wave.size()) / kSampleRate;
+  }
+
+  /// The correlation of two sounds from `from` s on (where the modes ring on alone).
+  double correlation(const std::vector<float>& a, const std::vector<float>& b, double from) {
+    double ab = 0, aa = 0, bb = 0;
+    for (std::size_t i = sample_at(from); i < a.size() && i < b.size(); ++i) {
+      ab += static_cast<double>(a[i]) * b[i];
+      aa += static_cast<double>(a[i]) * a[i];
+      bb += static_cast<double>(b[i]) * b[i];
+    }
+    return ab / std::sqrt(aa * bb);
+  }
+
+  std::vector<SoundCue> cues_of(const Shot& shot, SoundKind kind) {
+    std::vector<SoundCue> out;
+    for (const SoundCue& c : sound_cues({shot.scene, shot.timeline, *shot.camera}))
+      if (c.kind == kind) out.push_back(c);
+    return out;
+  }
+
+  TEST_CASE("a jaw's knock is shorter and brighter than a cushion's thud, at every speed") {
+    const PhysicsParams physics;
+    for (double speed : {0.1, 0.5, 1.5, 4.0})
+      for (std::uint64_t seed : {std::uint64_t{3}, jaw_seed(2, 77)}) {
+        CAPTURE(speed);
+        const std::vector<float> jaw = synth_impact(SoundKind::jaw_knock, speed, seed, physics, kSampleRate);
+        const std::vector<float> cushion = synth_impact(SoundKind::ball_rail, speed, seed, physics, kSampleRate);
+        CAPTURE(spectral_centroid(jaw));
+        CAPTURE(spectral_centroid(cushion));
+        CAPTURE(energy_duration(jaw));
+        CAPTURE(energy_duration(cushion));
+        CHECK(spectral_centroid(jaw) > 3 * spectral_centroid(cushion));
+        CHECK(energy_duration(jaw) < 0.6 * energy_duration(cushion));
+      }
+    // The facing's contact: a fifth of the cushion's, shorter when faster.
+    CHECK(jaw_contact_time(1.0) == doctest::Approx(0.0007));
+    CHECK(jaw_contact_time(3.0) < jaw_contact_time(0.5));
+  }
+
+  TEST_CASE("one pocket's jaws ring alike; each knock's own tick differs") {
+    const PhysicsParams physics;
+    CHECK((jaw_seed(2, 1) >> 32) == (jaw_seed(2, 99) >> 32));
+    CHECK(jaw_seed(2, 1) != jaw_seed(2, 99));
+    CHECK((jaw_seed(2, 1) >> 32) != (jaw_seed(3, 1) >> 32));
+    const auto knock = [&](std::uint64_t seed) {
+      return synth_impact(SoundKind::jaw_knock, 1.0, seed, physics, kSampleRate);
+    };
+    const std::vector<float> a = knock(jaw_seed(2, 1)), b = knock(jaw_seed(2, 99)), other = knock(jaw_seed(3, 1));
+    CHECK(a != b);  // not one sample copied: the tick's noise is the knock's own
+    // After the tick (3 ms) the pocket's modes ring on alone: the same modes in both knocks of one
+    // pocket; another pocket's are a few per cent off and drift out of phase.
+    CAPTURE(correlation(a, b, 0.015));
+    CAPTURE(correlation(a, other, 0.015));
+    CHECK(correlation(a, b, 0.015) > 0.99);
+    CHECK(correlation(a, other, 0.015) < 0.97);
+  }
+
+  TEST_CASE("a ball-jaw event knocks on the track at its time, on the jaw's side, louder when faster") {
+    const auto shot = test::load_clean(kRattle, "rattle");
+    std::vector<const Event*> jaws;
+    for (const Event& e : shot->timeline.events())
+      if (e.type == EventType::ball_jaw) jaws.push_back(&e);
+    REQUIRE(jaws.size() >= 3);
+    const std::vector<SoundCue> knocks = cues_of(*shot, SoundKind::jaw_knock);
+    REQUIRE(knocks.size() == jaws.size());
+    for (std::size_t k = 0; k < jaws.size(); ++k) {
+      CHECK(knocks[k].time == jaws[k]->time);
+      CHECK(knocks[k].speed == jaws[k]->speed);
+      CHECK(knocks[k].pan > 0.3);  // the top-right corner, on the right of the hover camera's picture
+    }
+    const AudioBuffer audio = track_of(*shot);
+    const double t = jaws.front()->time;
+    CHECK(std::abs(onset_near(audio, t) - t) <= 0.002);
+    CHECK(energy(audio.right, t, t + 0.03) > 2 * energy(audio.left, t, t + 0.03));
+    CHECK(impact_gain(SoundKind::jaw_knock, 2.0) > impact_gain(SoundKind::jaw_knock, 0.5));
+  }
+
+  TEST_CASE("a rattle is heard as one: its knocks die away, each softer than the one before") {
+    const auto shot = test::load_clean(kRattle, "rattle");
+    const std::vector<SoundCue> knocks = cues_of(*shot, SoundKind::jaw_knock);
+    REQUIRE(knocks.size() >= 4);
+    // One rattle: each knock within kRattleGap of the one before, on the same pocket's jaws.
+    for (std::size_t k = 1; k < knocks.size(); ++k) REQUIRE(knocks[k].time - knocks[k - 1].time <= kRattleGap);
+    // The physics' second knock is harder than its first; the rattle's is still softer.
+    REQUIRE(knocks[1].speed > knocks[0].speed);
+    const auto peak_of = [](const SoundCue& c) { return c.level * impact_gain(SoundKind::jaw_knock, c.speed); };
+    CHECK(knocks[0].level == 1.0);
+    for (std::size_t k = 1; k < knocks.size(); ++k) {
+      CAPTURE(k);
+      CHECK(peak_of(knocks[k]) <= kRattleFollow * peak_of(knocks[k - 1]) * (1 + 1e-12));
+      CHECK(knocks[k].level <= 1.0);
+      CHECK((knocks[k].seed >> 32) == (knocks[0].seed >> 32));  // one pocket's modes
+      CHECK(knocks[k].seed != knocks[k - 1].seed);              // each its own tick
+    }
+    // Mixed as they come, before the room and the level stage: each knock's peak on the track under
+    // the one before it, though the second is the harder hit.
+    AudioBuffer audio = silence(shot->timeline.duration());
+    std::vector<SoundCue> placed = knocks;
+    for (SoundCue& c : placed) c.pan = 0, c.gain = 1;
+    mix_cues(placed, shot->scene.physics, 0, audio);
+    double previous = 1e9;
+    for (const SoundCue& c : placed) {
+      const double p = peak(audio, c.time, c.time + 0.003);
+      CAPTURE(c.time);
+      CHECK(p < previous);
+      previous = p;
+    }
+  }
+
+  TEST_CASE("each ball's rattle is its own, and a knock long after the last starts afresh") {
+    const auto shot = test::load_clean(kTwoRattles, "two rattles");
+    std::vector<const Event*> jaws;
+    for (const Event& e : shot->timeline.events())
+      if (e.type == EventType::ball_jaw) jaws.push_back(&e);
+    // The 1's two knocks, then the cue ball's two, the second 0.77 s after the first.
+    REQUIRE(jaws.size() == 4);
+    REQUIRE(jaws[0]->balls[0] == 1);
+    REQUIRE(jaws[1]->balls[0] == 1);
+    REQUIRE(jaws[2]->balls[0] == 0);
+    REQUIRE(jaws[3]->balls[0] == 0);
+    REQUIRE(jaws[3]->time - jaws[2]->time > kRattleGap);
+    const std::vector<SoundCue> knocks = cues_of(*shot, SoundKind::jaw_knock);
+    REQUIRE(knocks.size() == 4);
+    CHECK(knocks[0].level == 1.0);
+    CHECK(knocks[1].level < 1.0);   // the 1's rattle goes on
+    CHECK(knocks[2].level == 1.0);  // the cue ball's first knock: its own
+    CHECK(knocks[3].level == 1.0);  // 0.77 s later: a knock of its own, not the rattle's tail
   }
 }

@@ -3,6 +3,7 @@
 // consecutive breakpoints (events and state transitions), where each ball's path is one quadratic.
 // Used by the soak mode of the bench and by the property tests.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "motion.h"
 #include "roots.h"
 #include "scene.h"
+#include "table.h"
 #include "timeline.h"
 
 namespace bsim::checks {
@@ -84,7 +86,7 @@ inline void check_events(const Timeline& timeline, Faults& faults) {
     for (const auto* list : {&e.before, &e.after})
       for (const BallState& s : *list)
         if (!finite(s)) ++faults.nans;
-    if (e.type == EventType::ball_ball || e.type == EventType::ball_rail) {
+    if (e.type == EventType::ball_ball || e.type == EventType::ball_rail || e.type == EventType::ball_jaw) {
       double before = 0, after = 0;
       for (const BallState& s : e.before) before += kinetic_energy(s, params);
       for (const BallState& s : e.after) after += kinetic_energy(s, params);
@@ -103,19 +105,62 @@ inline void check_events(const Timeline& timeline, Faults& faults) {
   }
 }
 
+/// What a ball on the bed must stay clear of, as the physics has it: each rail's nose line (ending, at a
+/// cut pocket's jaw, where the jaw point's rounding begins), the facings of the cut pockets' jaws, and
+/// the points: the rails' square ends and the jaws' roundings.
+struct Cushions {
+  struct Line {
+    Rail rail;  ///< playing side on the right of a -> b
+    double reach = 0;
+  };
+  struct Point {
+    Vec3 at{0, 0, 0};
+    double reach = 0;  ///< m from `at` the ball's centre stays
+  };
+  std::vector<Line> lines;
+  std::vector<Point> points;
+};
+
+inline Cushions cushions_of(const Scene& scene) {
+  Cushions c;
+  const double R = scene.physics.ball_radius;
+  for (const Rail& r : scene.rails) c.lines.push_back({r, cushion_reach(R, r.a.z())});
+  std::vector<std::array<bool, 2>> jaw_end(scene.rails.size(), {false, false});
+  for (const Pocket& pocket : scene.pockets) {
+    const PocketMouth m = pocket_mouth(pocket, scene.rails);
+    if (!m.cut) continue;
+    for (int i = 0; i < 2; ++i) {
+      const auto r = static_cast<std::size_t>(m.rail[i]);
+      const double h = scene.rails[r].a.z(), reach = c.lines[r].reach;
+      Rail face{Vec3(m.face_start[i].x(), m.face_start[i].y(), h), Vec3(m.tangent[i].x(), m.tangent[i].y(), h), {}};
+      const Vec3 dir = face.b - face.a;
+      if (Vec3(dir.y(), -dir.x(), 0).dot(m.inward[i]) < 0) std::swap(face.a, face.b);
+      c.lines.push_back({face, reach});
+      c.points.push_back({m.round_centre[i], reach + m.round_radius});
+      (m.at_b[i] ? c.lines[r].rail.b : c.lines[r].rail.a) = Vec3(m.nose_end[i].x(), m.nose_end[i].y(), h);
+      jaw_end[r][m.at_b[i] ? 1 : 0] = true;
+    }
+  }
+  for (std::size_t r = 0; r < scene.rails.size(); ++r)
+    for (int e = 0; e < 2; ++e)
+      if (!jaw_end[r][static_cast<std::size_t>(e)])
+        c.points.push_back({e ? scene.rails[r].b : scene.rails[r].a, c.lines[r].reach});
+  return c;
+}
+
 /// A ball moving along `p` for `length` seconds stays behind every cushion's nose (`reach` m from
-/// each rail's line) and clear of the rails' ends.
-inline void check_rails(const Scene& scene, const Path& p, double length, const std::vector<double>& reach,
-                        Faults& faults) {
+/// each line) and clear of the points.
+inline void check_rails(const Cushions& cushions, const Path& p, double length, Faults& faults) {
   const double tol = kFaultTolerance;
-  for (std::size_t r = 0; r < scene.rails.size(); ++r) {
-    const Rail& rail = scene.rails[r];
+  for (const Cushions::Line& line : cushions.lines) {
+    const Rail& rail = line.rail;
+    const double reach = line.reach;
     const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);
     const double len = along.norm();
     const Vec3 dir = along / len, inward(dir.y(), -dir.x(), 0);
     const Vec3 rel(p.p.x() - rail.a.x(), p.p.y() - rail.a.y(), 0);
-    const Poly s{{inward.dot(rel) - reach[r], inward.dot(p.v), 0.5 * inward.dot(p.a), 0, 0}};
-    if (s.c[0] < -reach[r]) continue;  // behind this cushion (another part of the table)
+    const Poly s{{inward.dot(rel) - reach, inward.dot(p.v), 0.5 * inward.dot(p.a), 0, 0}};
+    if (s.c[0] < -reach) continue;  // behind this cushion (another part of the table)
     const Roots crit = roots_in(s.derivative(), 0, length);
     for (double tau : {0.0, length, crit.count ? crit.t[0] : 0.0}) {
       const Vec3 at = p.at(tau);
@@ -126,19 +171,18 @@ inline void check_rails(const Scene& scene, const Path& p, double length, const 
         break;
       }
     }
-    for (const Vec3* end : {&rail.a, &rail.b}) {
-      const Poly g = distance_poly(p.p - *end, p.v, 0.5 * p.a, reach[r]);
-      const double low = minimum(g, length);
-      faults.deepest = std::max(faults.deepest, reach[r] - std::sqrt(std::max(0.0, low + reach[r] * reach[r])));
-      if (low < -2 * reach[r] * tol) ++faults.escapes;
-    }
+  }
+  for (const Cushions::Point& point : cushions.points) {
+    const Poly g = distance_poly(p.p - point.at, p.v, 0.5 * p.a, point.reach);
+    const double low = minimum(g, length);
+    faults.deepest = std::max(faults.deepest, point.reach - std::sqrt(std::max(0.0, low + point.reach * point.reach)));
+    if (low < -2 * point.reach * tol) ++faults.escapes;
   }
 }
 
 /// Over the stretch from `t` to `t + length`, where each ball's path is one quadratic: no two balls
 /// on the bed pass through each other, and no moving ball passes a cushion.
-inline void check_stretch(const Scene& scene, const Timeline& timeline, double t, double length,
-                          const std::vector<double>& reach, Faults& faults) {
+inline void check_stretch(const Cushions& cushions, const Timeline& timeline, double t, double length, Faults& faults) {
   const PhysicsParams& params = timeline.physics();
   const double R = params.ball_radius;
   const int n = timeline.ball_count();
@@ -162,7 +206,7 @@ inline void check_stretch(const Scene& scene, const Timeline& timeline, double t
       faults.deepest = std::max(faults.deepest, 2 * R - std::sqrt(std::max(0.0, low + 4 * R * R)));
       if (low < -4 * R * kFaultTolerance) ++faults.missed;
     }
-    if (p.moves()) check_rails(scene, p, length, reach, faults);
+    if (p.moves()) check_rails(cushions, p, length, faults);
   }
 }
 
@@ -173,10 +217,9 @@ inline Faults find_faults(const Scene& scene, const Timeline& timeline) {
   Faults faults;
   const std::vector<double> times = breakpoints(timeline, faults);
   check_events(timeline, faults);
-  std::vector<double> reach;
-  for (const Rail& r : scene.rails) reach.push_back(cushion_reach(timeline.physics().ball_radius, r.a.z()));
+  const Cushions cushions = cushions_of(scene);
   for (std::size_t k = 0; k + 1 < times.size(); ++k)
-    check_stretch(scene, timeline, times[k], times[k + 1] - times[k], reach, faults);
+    check_stretch(cushions, timeline, times[k], times[k + 1] - times[k], faults);
   return faults;
 }
 
