@@ -186,7 +186,7 @@ TEST_SUITE("simulate") {
     CHECK(rest.motion == Motion::pocketed);
     CHECK(rest.position.z() == doctest::Approx(kR - kPocketDepth));
     // In the cup, under the hole behind the mouth.
-    const Pocket& hole = standard_pockets()[2];
+    const Pocket hole = standard_pockets()[2];
     CHECK(std::hypot(rest.position.x() - hole.center.x(), rest.position.y() - hole.center.y()) < hole.radius);
     for (const Event& e : timeline.events())
       if (e.type != EventType::start && e.type != EventType::end && e.type != EventType::cue) CHECK(e.time < drop.time);
