@@ -507,7 +507,7 @@ TEST_SUITE("pov") {
     const auto text = [](const std::array<int, 3>& c) {
       return std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]);
     };
-    const PocketMouth& m = table_layout(shot->scene).pockets[2];
+    const PocketMouth m = table_layout(shot->scene).pockets[2];
     REQUIRE(m.cut);
     // The physics' hole, round: open 5 mm inside its edge all round, and in its middle.
     CHECK_MESSAGE(open(colour(m.centre)), text(colour(m.centre)));
