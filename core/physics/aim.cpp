@@ -82,12 +82,12 @@ Window cut_window(const Vec3& from, const PocketMouth& mouth, const std::vector<
   w.distance = to_middle.norm();
   w.toward = angle_of(to_middle);
   const double half = std::asin(std::min(1.0, 0.5 * mouth.mouth() / std::max(w.distance, 1e-9)));
+  const Vec3 chord = mouth.nose[1] - mouth.nose[0], n(-chord.y(), chord.x(), 0);
   int run = 0, best_run = 0, best_end = -1;
   for (int k = 0; k <= kSamples; ++k) {
     const double offset = -half + 2 * half * k / kSamples;
     const Vec3 u = unit_at(w.toward + offset);
     // Where the line crosses the mouth line, as a share from jaw 0 to jaw 1.
-    const Vec3 chord = mouth.nose[1] - mouth.nose[0], n(-chord.y(), chord.x(), 0);
     const double facing = n.dot(u);
     bool open = std::abs(facing) > 1e-12;
     double crosses = 0;

@@ -155,9 +155,7 @@ class Simulator {
       Jaw jaw;
       jaw.pocket = pocket;
       jaw.rail = m.rail[i];
-      jaw.face = {Vec3(m.face_start[i].x(), m.face_start[i].y(), h), Vec3(m.tangent[i].x(), m.tangent[i].y(), h), {}};
-      const Vec3 dir = flat(jaw.face.b - jaw.face.a);
-      if (Vec3(dir.y(), -dir.x(), 0).dot(m.inward[i]) < 0) std::swap(jaw.face.a, jaw.face.b);
+      jaw.face = m.facing_line(i, h);
       jaw.round = Vec3(m.round_centre[i].x(), m.round_centre[i].y(), h);
       jaw.round_radius = m.round_radius;
       const Vec3 grow(m.round_radius, m.round_radius, 0);

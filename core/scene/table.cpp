@@ -24,6 +24,15 @@ struct JawEnd {
 
 }  // namespace
 
+Rail PocketMouth::facing_line(int i, double nose_height) const {
+  const auto k = static_cast<std::size_t>(i);
+  Rail face{
+      Vec3(face_start[k].x(), face_start[k].y(), nose_height), Vec3(tangent[k].x(), tangent[k].y(), nose_height), {}};
+  const Vec3 dir = face.b - face.a;
+  if (Vec3(dir.y(), -dir.x(), 0).dot(inward[k]) < 0) std::swap(face.a, face.b);
+  return face;
+}
+
 bool PocketMouth::in_throat(const Vec3& p, double grow) const {
   const Vec3 q = flat(p);
   if ((q - throat_centre).norm() <= throat_radius + grow) return true;
@@ -37,30 +46,45 @@ bool PocketMouth::in_throat(const Vec3& p, double grow) const {
 
 namespace {
 
-/// The rail end at plan point p (within round-off), as a jaw: its nose's direction into the pocket and
-/// the cushion's outward normal; none when no rail ends there.
-std::optional<JawEnd> rail_end_at(const Vec3& p, const std::vector<Rail>& rails) {
+/// Every rail end as a jaw might use it, with its distance from `from`: its nose's direction into the
+/// gap beyond it and the cushion's outward normal.
+std::vector<JawEnd> rail_ends(const std::vector<Rail>& rails, const Vec3& from) {
+  std::vector<JawEnd> ends;
   for (std::size_t i = 0; i < rails.size(); ++i) {
     const Vec3 d = flat(rails[i].b - rails[i].a);
     if (d.norm() < 1e-9) continue;
     const Vec3 along = d.normalized();
     const Vec3 out(-along.y(), along.x(), 0);  // the playing side is on the right of a -> b
-    for (bool at_b : {false, true})
-      if ((flat(at_b ? rails[i].b : rails[i].a) - flat(p)).norm() < 1e-9)
-        return JawEnd{static_cast<int>(i), at_b, flat(p), at_b ? along : Vec3(-along), out, 0};
+    for (bool at_b : {false, true}) {
+      const Vec3 nose = flat(at_b ? rails[i].b : rails[i].a);
+      ends.push_back({static_cast<int>(i), at_b, nose, at_b ? along : Vec3(-along), out, (nose - flat(from)).norm()});
+    }
   }
+  return ends;
+}
+
+/// The rail end at plan point p (within round-off); none when no rail ends there.
+std::optional<JawEnd> rail_end_at(const Vec3& p, const std::vector<Rail>& rails) {
+  for (const JawEnd& e : rail_ends(rails, p))
+    if (e.distance < 1e-9) return e;
   return std::nullopt;
+}
+
+/// A pocket as its drop circle alone, the throat the circle itself: where every mouth starts.
+PocketMouth plain_mouth(const Pocket& pocket) {
+  PocketMouth m;
+  m.centre = flat(pocket.center);
+  m.drop_radius = pocket.radius;
+  m.throat_centre = m.centre;
+  m.throat_radius = pocket.radius;
+  return m;
 }
 
 /// A cut pocket: the jaws at its own jaw points, each rounded and faced at the WPA angle, the facings
 /// running back to the hole. Bare (kind bare) when the rails do not end at its jaw points.
 PocketMouth cut_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
   const PocketJaws& spec = kStandardTable.jaws;
-  PocketMouth m;
-  m.centre = flat(pocket.center);
-  m.drop_radius = pocket.radius;
-  m.throat_centre = m.centre;
-  m.throat_radius = pocket.radius;
+  PocketMouth m = plain_mouth(pocket);
   std::optional<JawEnd> end[2] = {rail_end_at(pocket.jaw[0], rails), rail_end_at(pocket.jaw[1], rails)};
   if (!end[0] || !end[1]) return m;
   m.kind = pocket.kind;
@@ -99,26 +123,11 @@ PocketMouth cut_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
 PocketMouth pocket_mouth(const Pocket& pocket, const std::vector<Rail>& rails) {
   if (pocket.cut) return cut_mouth(pocket, rails);
   const PocketJaws& spec = kStandardTable.jaws;
-  PocketMouth m;
-  m.centre = flat(pocket.center);
-  m.drop_radius = pocket.radius;
-  m.throat_centre = m.centre;
-  m.throat_radius = pocket.radius;
+  PocketMouth m = plain_mouth(pocket);
 
   // The cushion ends on or near the drop circle, nearest first: the two nearest are the jaws.
-  std::vector<JawEnd> ends;
-  for (std::size_t i = 0; i < rails.size(); ++i) {
-    const Vec3 d = flat(rails[i].b - rails[i].a);
-    if (d.norm() < 1e-9) continue;
-    const Vec3 along = d.normalized();
-    const Vec3 out(-along.y(), along.x(), 0);  // the playing side is on the right of a -> b
-    for (bool at_b : {false, true}) {
-      const Vec3 nose = flat(at_b ? rails[i].b : rails[i].a);
-      const double distance = (nose - m.centre).norm();
-      if (distance <= pocket.radius + spec.near_end)
-        ends.push_back({static_cast<int>(i), at_b, nose, at_b ? along : Vec3(-along), out, distance});
-    }
-  }
+  std::vector<JawEnd> ends = rail_ends(rails, m.centre);
+  std::erase_if(ends, [&](const JawEnd& e) { return e.distance > pocket.radius + spec.near_end; });
   std::stable_sort(ends.begin(), ends.end(), [](const JawEnd& a, const JawEnd& b) { return a.distance < b.distance; });
   if (ends.size() < 2) return m;
   const JawEnd& j0 = ends[0];

@@ -245,6 +245,10 @@ struct PocketMouth {
   double mouth() const { return jawed() ? (nose[1] - nose[0]).norm() : 2 * drop_radius; }
   /// m from the mouth line's middle to the slate's edge along the axis (a cut pocket's shelf).
   double shelf() const { return (centre - (nose[0] + nose[1]) / 2).dot(axis) - drop_radius; }
+  /// A cut pocket's facing `i` as the physics meets it: a nose line at `nose_height` from where the
+  /// rounding meets it back to the hole, its playing side (the opening) on the right of a -> b, as a
+  /// rail's.
+  Rail facing_line(int i, double nose_height) const;
   /// Whether plan point p (z ignored) lies in the opening the jaws and the throat leave, grown by `grow`
   /// m: between the facings behind the mouth, or in the round back.
   bool in_throat(const Vec3& p, double grow = 0) const;

@@ -23,6 +23,15 @@ namespace fx = bsim::test::fixtures;
 
 namespace {
 
+/// `billiards-export --events-only --fps 30` of `scene` into DIR/out; the named file it wrote.
+std::string exported(const test::TempDir& dir, const std::string& scene, const std::string& out, const char* file) {
+  const auto to = dir.path / out;
+  const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scene +
+                                                  "' --events-only --fps 30 -o '" + to.string() + "'");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  return test::require_file(to / file);
+}
+
 /// kTwoBalls with a camera of `descriptions` (lines 4 on; the first description on line 5).
 std::string two_balls(std::initializer_list<std::string_view> descriptions) {
   return std::string(fx::kTwoBalls) + fx::camera(descriptions);
@@ -341,15 +350,8 @@ TEST_SUITE("camera_keys") {
     const std::string numbered =
         dir.file("numbered.scn", two_balls({"event 0 0 0 hover 0 -3 2 0 0 0", "event 1 0.5 0.5 follow 0 -0.6 0 0.3",
                                             "event 2 0.3 0.2 look 0 -2 1 1", "event 65535 0.4 0 hover 1 1 2 0 0 0"}));
-    std::string csv[2];
-    const std::string scenes[2] = {keyed, numbered};
-    for (int k = 0; k < 2; ++k) {
-      const auto out = dir.path / ("out" + std::to_string(k));
-      const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scenes[k] +
-                                                      "' --events-only --fps 30 -o '" + out.string() + "'");
-      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-      csv[k] = test::require_file(out / "camera.csv");
-    }
+    const std::string csv[2] = {exported(dir, keyed, "out0", "camera.csv"),
+                                exported(dir, numbered, "out1", "camera.csv")};
     CHECK(csv[0].size() > 100);
     CHECK(csv[0] == csv[1]);
     // --strict refuses the keyed scene with the key's location.
@@ -645,16 +647,9 @@ TEST_SUITE("camera_keys: a pocket's jaws") {
                  kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event third jaw 1 0.3 0 look 0 -2 1 1"}));
     const std::string numbered = dir.file(
         "numbered.scn", kRattle + fx::camera({"event start 0 0 hover 0 -3 2 0 0 0", "event 5 0.3 0 look 0 -2 1 1"}));
-    std::string csv[2];
-    const std::string scenes[2] = {keyed, numbered};
-    for (int k = 0; k < 2; ++k) {
-      const auto out = dir.path / ("out" + std::to_string(k));
-      const test::CommandResult r = test::run_command(test::bin("billiards-export") + " '" + scenes[k] +
-                                                      "' --events-only --fps 30 -o '" + out.string() + "'");
-      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-      csv[k] = test::require_file(out / "camera.csv");
-      if (k == 0) CHECK(test::require_file(out / "events.json").find("\"type\": \"ball-jaw\"") != std::string::npos);
-    }
+    const std::string csv[2] = {exported(dir, keyed, "out0", "camera.csv"),
+                                exported(dir, numbered, "out1", "camera.csv")};
+    CHECK(test::require_file(dir.path / "out0" / "events.json").find("\"type\": \"ball-jaw\"") != std::string::npos);
     CHECK(csv[0].size() > 100);
     CHECK(csv[0] == csv[1]);
     const std::string missing = dir.file(

@@ -132,10 +132,7 @@ inline Cushions cushions_of(const Scene& scene) {
     for (int i = 0; i < 2; ++i) {
       const auto r = static_cast<std::size_t>(m.rail[i]);
       const double h = scene.rails[r].a.z(), reach = c.lines[r].reach;
-      Rail face{Vec3(m.face_start[i].x(), m.face_start[i].y(), h), Vec3(m.tangent[i].x(), m.tangent[i].y(), h), {}};
-      const Vec3 dir = face.b - face.a;
-      if (Vec3(dir.y(), -dir.x(), 0).dot(m.inward[i]) < 0) std::swap(face.a, face.b);
-      c.lines.push_back({face, reach});
+      c.lines.push_back({m.facing_line(i, h), reach});
       c.points.push_back({m.round_centre[i], reach + m.round_radius});
       (m.at_b[i] ? c.lines[r].rail.b : c.lines[r].rail.a) = Vec3(m.nose_end[i].x(), m.nose_end[i].y(), h);
       jaw_end[r][m.at_b[i] ? 1 : 0] = true;
