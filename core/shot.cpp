@@ -17,12 +17,30 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   shot->scene = std::move(*parsed.scene);
   // Every shot in turn from where the one before left the balls, each `cue I pot B P` at the heading
   // that pots B from there (play.h), or fail at the line to blame.
-  PlayResult played = play(shot->scene);
-  if (played.failure) {
-    result.diagnostics.push_back({Severity::error, played.failure->loc, played.failure->message});
+  std::optional<PlayFailure> failure;
+  if (shot->scene.game) {
+    // A game: its written shots, then the players', judged by the rules; filmed as the explicit scene.
+    GameResult game = play_game(shot->scene);
+    failure = std::move(game.failure);
+    shot->scene = std::move(game.scene);
+    shot->timeline = std::move(game.timeline);
+    shot->game = std::move(game.record);
+    if (shot->game->shot_limit) {
+      const GameLine& line = *shot->scene.game;
+      result.diagnostics.push_back({Severity::warning, line.shots_loc.known() ? line.shots_loc : line.loc,
+                                    "the game stopped at its limit of " + std::to_string(line.shots) +
+                                        " shots with no winner; give it more ('game ... shots N') to play it out"});
+    }
+  } else {
+    PlayResult played = play(shot->scene);
+    write_found(shot->scene, played.found);  // filmed as played: the headings found, the first ball as struck
+    failure = std::move(played.failure);
+    shot->timeline = std::move(played.timeline);
+  }
+  if (failure) {
+    result.diagnostics.push_back({Severity::error, failure->loc, failure->message});
     return result;
   }
-  shot->timeline = std::move(played.timeline);
   if (camera == CameraChoice::automatic) {
     shot->directed = direct_camera(shot->scene, shot->timeline);
     shot->scene.camera = shot->directed->shots;

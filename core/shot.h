@@ -10,6 +10,7 @@
 #include "cue_script.h"
 #include "diagnostics.h"
 #include "director.h"
+#include "game.h"
 #include "scene.h"
 #include "scene_parse.h"
 #include "timeline.h"
@@ -34,6 +35,9 @@ struct Shot {
   /// The automatic director's script (its text, comments and lines of action too) when it films the
   /// shot (CameraChoice::automatic); its shots are then scene.camera.
   std::optional<DirectedCamera> directed;
+  /// A scene with a `game` line: the rules' record of the game played (`scene` is then the game as an
+  /// explicit scene, one `cue` per shot).
+  std::optional<GameRecord> game;
 };
 
 struct ShotResult {

@@ -1,4 +1,5 @@
 // events.json: the numbered events, the pocket drops and every ball's final state (format in README).
+#include <cstdio>
 #include <ostream>
 #include <string>
 
@@ -25,7 +26,23 @@ std::string cue_json(const Cue& cue) {
          ", \"height\": " + format_number(s.height) + ", \"elevation\": " + format_number(s.elevation_deg) + "}";
 }
 
-std::string event_json(const Event& e, const Scene& scene) {
+/// A player's plan for a shot: the ball (painted number) and pocket meant, a safety or a push-out; empty
+/// for a written shot and for a plan that names nothing (the break).
+std::string planned_json(const GameRecord* game, int shot) {
+  if (!game) return "";
+  for (const GameTurn& turn : game->turns) {
+    if (turn.shot != shot || turn.written) continue;
+    const ShotCall& call = turn.planned;
+    if (call.push_out) return ", \"planned\": {\"push_out\": true}";
+    if (call.safety) return ", \"planned\": {\"safety\": true}";
+    if (call.ball < 0) return "";
+    return ", \"planned\": {\"ball\": " + std::to_string(call.ball) + ", \"pocket\": " + std::to_string(call.pocket) +
+           "}";
+  }
+  return "";
+}
+
+std::string event_json(const Event& e, const Scene& scene, const GameRecord* game) {
   std::string out = "{\"index\": " + std::to_string(e.index) + ", \"time\": " + format_number(e.time) +
                     ", \"type\": \"" + std::string(to_string(e.type)) + "\", \"shot\": " + std::to_string(e.shot + 1);
   if (e.type == EventType::start || e.type == EventType::end) return out + "}";
@@ -33,7 +50,8 @@ std::string event_json(const Event& e, const Scene& scene) {
   if (e.type == EventType::ball_rail) out += ", \"rail\": " + std::to_string(e.rail);
   if (e.type == EventType::ball_jaw) out += ", \"pocket\": " + std::to_string(e.pocket);
   out += ", \"speed\": " + format_number(e.speed);
-  if (e.type == EventType::cue) out += cue_json(scene.cues[static_cast<std::size_t>(e.shot)]);
+  if (e.type == EventType::cue)
+    out += cue_json(scene.cues[static_cast<std::size_t>(e.shot)]) + planned_json(game, e.shot);
   if (e.grouped && !e.contacts.empty()) {
     // A group collision: every contact of the group, in the order they began.
     out += ", \"contacts\": [";
@@ -47,6 +65,50 @@ std::string event_json(const Event& e, const Scene& scene) {
   return out + "}";
 }
 
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const unsigned char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+/// One turn of the game: the rules' verdict on one shot.
+std::string turn_json(const GameTurn& turn) {
+  const TurnVerdict& v = turn.verdict;
+  const auto flag = [](bool b) { return b ? "true" : "false"; };
+  std::string out = "{\"shot\": " + std::to_string(turn.shot + 1) + ", \"player\": " + std::to_string(turn.player) +
+                    ", \"break\": " + flag(v.break_shot) + ", \"legal\": " + flag(v.legal) +
+                    ", \"foul\": " + (v.foul.empty() ? std::string("null") : json_string(v.foul)) +
+                    ", \"pocketed\": " + list(v.pocketed) + ", \"continues\": " + flag(v.continues) +
+                    ", \"ball_in_hand\": " + flag(v.in_hand != InHand::none);
+  if (v.in_hand != InHand::none)
+    out += std::string(", \"in_hand\": ") + (v.in_hand == InHand::kitchen ? "\"kitchen\"" : "\"anywhere\"");
+  if (v.push_out) out += ", \"push_out\": true";
+  return out + ", \"call\": " + json_string(v.call) + "}";
+}
+
+/// The rules' record of a played game: its rules, players, winner and one turn per shot.
+std::string game_json(const GameRecord& game) {
+  std::string out =
+      "  \"game\": {\n    \"rules\": \"" + std::string(rack_game_name(game.rules)) + "\",\n    \"players\": [";
+  for (std::size_t k = 0; k < game.players.size(); ++k) out += (k ? ", " : "") + json_string(game.players[k]);
+  out += "],\n    \"winner\": " + (game.winner ? std::to_string(*game.winner) : std::string("null")) + ",\n";
+  if (game.shot_limit) out += "    \"shot_limit\": true,\n";
+  out += "    \"turns\": [";
+  for (std::size_t k = 0; k < game.turns.size(); ++k) out += (k ? ",\n      " : "\n      ") + turn_json(game.turns[k]);
+  return out + (game.turns.empty() ? "]\n  }" : "\n    ]\n  }");
+}
+
 }  // namespace
 
 void write_events_json(const Shot& shot, std::ostream& out) {
@@ -54,7 +116,7 @@ void write_events_json(const Shot& shot, std::ostream& out) {
   out << "{\n  \"duration\": " << format_number(timeline.duration()) << ",\n  \"events\": [";
   const auto& events = timeline.events();
   for (std::size_t k = 0; k < events.size(); ++k)
-    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene);
+    out << (k ? ",\n    " : "\n    ") << event_json(events[k], shot.scene, shot.game ? &*shot.game : nullptr);
   out << (events.empty() ? "],\n" : "\n  ],\n");
 
   out << "  \"shots\": [";
@@ -79,7 +141,9 @@ void write_events_json(const Shot& shot, std::ostream& out) {
         << ", \"position\": [" << format_number(s.position.x()) << ", " << format_number(s.position.y()) << ", "
         << format_number(s.position.z()) << "], \"pocketed\": " << (pocketed ? "true" : "false") << "}";
   }
-  out << (timeline.ball_count() == 0 ? "]\n}\n" : "\n  ]\n}\n");
+  out << (timeline.ball_count() == 0 ? "]" : "\n  ]");
+  if (shot.game) out << ",\n" << game_json(*shot.game);
+  out << "\n}\n";
 }
 
 }  // namespace bsim

@@ -34,9 +34,19 @@ constexpr ImU32 kSectionEven = IM_COL32(44, 50, 64, 255);
 constexpr ImU32 kSectionOdd = IM_COL32(36, 40, 50, 255);
 constexpr ImU32 kSeparator = IM_COL32(240, 200, 110, 220);
 
-/// px the band of shot sections needs: the shot's name, two lines of detail, or the stroke's diagram.
+constexpr ImU32 kPlayerColors[2] = {IM_COL32(130, 210, 255, 255), IM_COL32(180, 236, 140, 255)};
+constexpr float kToneBar = 4;  // px, the bar of a game's call along a section's foot
+
+bool has_turns(const TimelineData& data) {
+  return std::any_of(data.shots.begin(), data.shots.end(), [](const TimelineShotSection& s) { return s.turn; });
+}
+
+/// px the band of shot sections needs: the shot's name, two lines of detail (a game's turn: two more
+/// and the bar of its call), or the stroke's diagram.
 float sections_height(const UiFonts& fonts, const TimelineData& data) {
   if (data.shots.empty()) return 0;
+  if (has_turns(data))
+    return std::max(fonts.bold_size + 4 * fonts.small_size + 10 + kToneBar, stroke_diagram_size(fonts).y) + 8;
   return std::max(fonts.bold_size + 2 * fonts.small_size + 8, stroke_diagram_size(fonts).y) + 8;
 }
 
@@ -387,9 +397,11 @@ class TimelinePainter {
       const TimelineShotSection& s = data_.shots[k];
       const float a = at(s.start), b = std::max(at(s.end), a + 2);
       list_.AddRectFilled(ImVec2(a, top), ImVec2(b, bottom), k % 2 ? kSectionOdd : kSectionEven, 2.f);
+      if (s.turn) draw_turn_tone(*s.turn, a, b);
       float text_right = b - pad / 2;
       if (s.stroke) {
-        const float name = text_size(fonts_.bold, fonts_.bold_size, s.label).x;
+        // A game's turn: the player's whole name too (before the speed beside the diagram).
+        const float name = text_size(fonts_.bold, fonts_.bold_size, s.turn ? s.label + "  " + s.turn->name : s.label).x;
         const StrokeDiagramBall whole = stroke_diagram_ball(fonts_, ImVec2(b - pad - size.x, 0));
         // The whole diagram when the name and the strike's line fit beside it.
         const std::string strike = s.detail.substr(s.detail.find('\n') + 1);
@@ -411,18 +423,74 @@ class TimelinePainter {
         }
       }
       const float room = text_right - (a + pad);
-      const std::string name = elided(fonts_.bold, fonts_.bold_size, s.label, room);
-      const std::string detail = elided_lines(fonts_.small, fonts_.small_size, s.detail, room);
       const ImVec2 at_name(a + pad, top + 3), at_detail(a + pad, top + 3 + fonts_.bold_size + 2);
-      list_.AddText(fonts_.bold, fonts_.bold_size, at_name, kText, name.c_str());
-      list_.AddText(fonts_.small, fonts_.small_size, at_detail, kDim, detail.c_str());
-      const auto noted = [&](ImFont* font, float px, const std::string& text, ImVec2 where) {
-        const ImVec2 extent = text_size(font, px, text);
-        note({TimelineDrawn::Kind::shot_text, text, where.x, where.y, where.x + extent.x, where.y + extent.y, int(k)});
-      };
-      noted(fonts_.bold, fonts_.bold_size, name, at_name);
-      noted(fonts_.small, fonts_.small_size, detail, at_detail);
+      if (s.turn)
+        draw_turn_name(static_cast<int>(k), s, at_name, room);
+      else
+        section_text(static_cast<int>(k), fonts_.bold, fonts_.bold_size, at_name, kText,
+                     elided(fonts_.bold, fonts_.bold_size, s.label, room));
+      section_text(static_cast<int>(k), fonts_.small, fonts_.small_size, at_detail, kDim,
+                   elided_lines(fonts_.small, fonts_.small_size, s.detail, room));
+      if (s.turn)
+        draw_turn_call(static_cast<int>(k), *s.turn, ImVec2(at_detail.x, at_detail.y + 2 * fonts_.small_size + 2),
+                       room);
     }
+  }
+
+  /// One text of a shot's section, drawn and noted.
+  void section_text(int k, ImFont* font, float px, ImVec2 where, ImU32 color, const std::string& text) {
+    list_.AddText(font, px, where, color, text.c_str());
+    const ImVec2 extent = text_size(font, px, text);
+    note({TimelineDrawn::Kind::shot_text, text, where.x, where.y, where.x + extent.x, where.y + extent.y, k});
+  }
+
+  // A game's call that stands out (a foul, ball in hand, a push-out, the winner): the section tinted
+  // in its colour and a bar of it along the section's foot, seen however narrow the section.
+  void draw_turn_tone(const TimelineTurn& turn, float a, float b) {
+    if (turn.tone == GameTone::plain) return;
+    const ImU32 color = game_tone_color(turn.tone);
+    const float top = rows_.sections_top, bottom = rows_.sections_bottom;
+    list_.AddRectFilled(ImVec2(a, top), ImVec2(b, bottom), with_alpha(color, 36), 2.f);
+    list_.AddRectFilled(ImVec2(a, bottom - kToneBar), ImVec2(b, bottom), color);
+  }
+
+  // The shot's name and the player at the table in their colour: the whole name, its initials where
+  // the section is narrow, the initials alone where even the shot's name does not fit beside them.
+  void draw_turn_name(int k, const TimelineShotSection& s, ImVec2 where, float room) {
+    const TimelineTurn& turn = *s.turn;
+    const ImU32 color = kPlayerColors[turn.player == 1 ? 1 : 0];
+    const float label = text_size(fonts_.bold, fonts_.bold_size, s.label + "  ").x;
+    for (const std::string& who : {turn.name, turn.initials}) {
+      if (label + text_size(fonts_.bold, fonts_.bold_size, who).x > room) continue;
+      list_.AddText(fonts_.bold, fonts_.bold_size, where, kText, s.label.c_str());
+      section_text(k, fonts_.bold, fonts_.bold_size, ImVec2(where.x + label, where.y), color, who);
+      return;
+    }
+    section_text(k, fonts_.bold, fonts_.bold_size, where, color,
+                 elided(fonts_.bold, fonts_.bold_size, turn.initials, room));
+  }
+
+  // Under the shot's detail: what the player meant, then the rules' call in its tone's colour, each in
+  // the most words that fit (the plan without "from hand"; the call without the foul's reason, then
+  // its first part alone: "foul").
+  void draw_turn_call(int k, const TimelineTurn& turn, ImVec2 where, float room) {
+    const auto fitted = [&](std::vector<std::string> texts) {
+      for (const std::string& text : texts)
+        if (text_size(fonts_.small, fonts_.small_size, text).x <= room) return text;
+      return elided(fonts_.small, fonts_.small_size, texts.back(), room);
+    };
+    const std::string from_hand = "from hand";
+    const std::string plan = !turn.from_hand     ? turn.plan
+                             : turn.plan.empty() ? from_hand
+                                                 : from_hand + " \xC2\xB7 " + turn.plan;
+    if (!plan.empty()) {
+      section_text(k, fonts_.small, fonts_.small_size, where, kText,
+                   fitted({plan, turn.plan.empty() ? plan : turn.plan}));
+      where.y += fonts_.small_size + 1;
+    }
+    const ImU32 color = turn.tone == GameTone::plain ? kDim : game_tone_color(turn.tone);
+    section_text(k, fonts_.small, fonts_.small_size, where, color,
+                 fitted({turn.call, turn.short_call, turn.short_call.substr(0, turn.short_call.find(';'))}));
   }
 
   // Where each later shot begins: a line through every row (the scrub bar too).
@@ -868,6 +936,33 @@ class TimelinePainter {
   Across across_;
 };
 
+/// A game: each shot's section gets its turn (who, what they meant, the rules' call).
+void add_turns(const GameRecord& game, const std::vector<Pocket>& pockets, std::vector<TimelineShotSection>& sections) {
+  for (std::size_t k = 0; k < sections.size() && k < game.turns.size(); ++k) {
+    const GameTurn& turn = game.turns[k];
+    TimelineTurn t;
+    t.player = turn.player;
+    t.name = game_player_name(game, turn.player);
+    t.initials = name_initials(t.name);
+    t.plan = plan_text(turn.planned, pockets);
+    // The shooter had the cue ball in hand: the call before said so.
+    t.from_hand = k > 0 && game.turns[k - 1].verdict.in_hand != InHand::none;
+    t.call = turn_call_text(turn);
+    t.short_call = turn_short_call(turn);
+    t.tone = turn_tone(turn);
+    sections[k].turn = std::move(t);
+  }
+}
+
+/// The title's words on a game: "9-ball, Ann v Bo: Ann wins".
+std::string game_title(const GameRecord& game) {
+  const auto name = [&](int p) { return game_player_name(game, p); };
+  return game_rules_name(game.rules) + ", " + name(0) + " v " + name(1) + ": " +
+         (game.winner       ? name(*game.winner) + " wins"
+          : game.shot_limit ? "no winner (the shot limit)"
+                            : "no winner");
+}
+
 /// A scene of several shots: each shot's section, named as a `shot K` camera key counts ("shot 2").
 std::vector<TimelineShotSection> shot_sections(const Shot& shot, const std::vector<int>& painted) {
   std::vector<TimelineShotSection> sections;
@@ -889,6 +984,7 @@ std::vector<TimelineShotSection> shot_sections(const Shot& shot, const std::vect
     s.stroke = cue.stroke;
     sections.push_back(std::move(s));
   }
+  if (shot.game) add_turns(*shot.game, shot.scene.pockets, sections);
   return sections;
 }
 
@@ -936,6 +1032,7 @@ TimelineData timeline_data(const Shot& shot) {
     data.title += buffer;
     data.stroke = stroke;
   }
+  if (shot.game) data.title += "  \xE2\x80\x94  " + game_title(*shot.game);
   add_events_and_camera(shot, data);
   return data;
 }

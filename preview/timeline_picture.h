@@ -9,6 +9,7 @@
 #include "cue_script.h"
 #include "event.h"
 #include "fonts.h"
+#include "game_panel.h"
 #include "scene.h"
 
 struct ImDrawList;
@@ -41,12 +42,25 @@ struct TimelineCameraSpan {
   std::string key;      ///< the camera key as written ("hit 0 5"), empty when it names an event number
 };
 
+/// A game's turn, shown in its shot's section: who is at the table, what they meant, the rules' call.
+struct TimelineTurn {
+  int player = 0;          ///< 0 or 1 (each has its colour)
+  std::string name;        ///< the player at the table
+  std::string initials;    ///< the name in a section too narrow for it
+  bool from_hand = false;  ///< the shooter had the cue ball in hand: "from hand · " before the plan where it fits
+  std::string plan;        ///< "3 → top-right", "safety", "push-out"; empty when nothing was called
+  std::string call;        ///< the rules' call: "foul: ...; ball in hand", "wins the game", "made 3"
+  std::string short_call;  ///< the call for a narrow section: "foul; ball in hand"
+  GameTone tone = GameTone::plain;  ///< the call's colour, and a bar along the section's foot unless plain
+};
+
 /// One shot of a scene of several: its stretch of the timeline and its stroke.
 struct TimelineShotSection {
   double start = 0, cue = 0, end = 0;  ///< s: the stick may come in, the strike, the next shot's start (or the end)
   std::string label;                   ///< "shot 2"
   std::string detail;                  ///< "cue 0 pot 2 into top-right corner at 41.2°\nstrike at 10.87 s" (two lines)
   std::optional<Stroke> stroke;        ///< drawn as a small diagram in its section
+  std::optional<TimelineTurn> turn;    ///< a scene with a game: the turn this shot is
 };
 
 struct TimelineWindow {

@@ -1,12 +1,15 @@
 #include "viewer_ui.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
+#include "ball_look.h"
+#include "game_panel.h"
 #include "labels.h"
 #include "overlays.h"
 #include "shot.h"
@@ -177,7 +180,56 @@ void stroke_panel(const ViewerState& state, const UiFonts& fonts, float window_h
   ImGui::End();
 }
 
+// The balls left, as small discs in their colours (a stripe's band on white) with their numbers.
+void ball_discs(const std::vector<int>& balls, const UiFonts& fonts) {
+  const float r = std::round(fonts.small_size * 0.75f), step = 2 * r + 3;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(step * static_cast<float>(balls.size()), 2 * r));
+  ImDrawList& list = *ImGui::GetWindowDrawList();
+  const SrgbColor w = kBallIvory;
+  const ImU32 ivory = IM_COL32(w.r, w.g, w.b, 255);
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    const ImVec2 centre(at.x + r + step * static_cast<float>(k), at.y + r);
+    const SrgbColor c = ball_srgb(balls[k]);
+    const ImU32 colour = IM_COL32(c.r, c.g, c.b, 255);
+    list.AddCircleFilled(centre, r, ball_striped(balls[k]) ? ivory : colour);
+    if (ball_striped(balls[k])) {
+      list.PushClipRect(ImVec2(centre.x - r, centre.y - r * 0.55f), ImVec2(centre.x + r, centre.y + r * 0.55f), true);
+      list.AddCircleFilled(centre, r, colour);
+      list.PopClipRect();
+    }
+    list.AddCircle(centre, r, IM_COL32(255, 255, 255, 90));  // the 8 shows on a dark panel
+    list.AddCircleFilled(centre, r * 0.55f, ivory);
+    const std::string number = std::to_string(balls[k]);
+    const float px = r * 0.95f;
+    const ImVec2 size = fonts.small->CalcTextSizeA(px, FLT_MAX, 0, number.c_str());
+    list.AddText(fonts.small, px, ImVec2(centre.x - size.x / 2, centre.y - size.y / 2), IM_COL32(20, 20, 20, 255),
+                 number.c_str());
+  }
+}
+
 }  // namespace
+
+void draw_game_panel(const Shot& shot, double t, const UiFonts& fonts, float window_width) {
+  if (!shot.game) return;
+  const GamePanel panel = game_panel(shot, t);
+  ImGui::SetNextWindowPos(ImVec2(window_width - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse;
+  if (ImGui::Begin("Game###game", nullptr, flags)) {
+    for (const GamePanelLine& line : panel.lines) {
+      const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(game_tone_color(line.tone));
+      if (!line.balls) {
+        ImGui::TextColored(colour, "%s", line.text.c_str());
+        continue;
+      }
+      ImGui::TextColored(colour, "%s", line.text.substr(0, line.text.find(':') + 1).c_str());
+      ImGui::SameLine();
+      ball_discs(panel.on_table, fonts);
+    }
+  }
+  ImGui::End();
+}
 
 PictureSize default_window_picture(int area_width, int area_height) {
   constexpr int kLargest = 720, kSmallest = 180, kFallback = 432;  // picture heights, px
@@ -253,6 +305,7 @@ void draw_controls(ViewerState& state, const UiFonts& fonts, float window_width,
   ImGui::End();
   event_list(state, window_height);
   stroke_panel(state, fonts, window_height);
+  if (state.shot) draw_game_panel(*state.shot, state.time, fonts, window_width);
   problems(state, window_width);
 }
 

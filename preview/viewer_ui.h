@@ -35,6 +35,11 @@ ViewRect view_rect(float window_width, float window_height, int picture_width, i
 /// Overlays over the picture (and, with the free camera, the scripted camera as a frustum).
 void draw_view_overlays(const ViewerState& state, const ViewCamera& camera, const ViewRect& view, const UiFonts& fonts);
 
+/// A scene with a game: the game panel at the window's top right (the rules, the players with the one
+/// at the table marked, ball in hand, the plan and the rules' call of the turn at time t, the balls
+/// left as discs, the winner). Nothing without a game. Call between ImGui's NewFrame and Render.
+void draw_game_panel(const Shot& shot, double t, const UiFonts& fonts, float window_width);
+
 /// Every panel; changes the state when the user clicks.
 void draw_controls(ViewerState& state, const UiFonts& fonts, float window_width, float window_height);
 

@@ -17,8 +17,15 @@ struct Shot;
 /// unchanged.
 std::string scene_text_resolved(std::string_view text, const Scene& played);
 
-/// Writes scene_text_resolved into `path` ("-": standard output), in place atomically. Returns the exit
-/// status; reports on stderr.
+/// A game (`game` line) as an explicit scene: the scene's own table lines (`param`, `rail`, `pocket`) and
+/// camera description kept as written, then its `game` and `player` lines, every ball where the game
+/// started it (the cue ball where it broke from), and each shot played as a `cue` line with its
+/// heading and call, its `stroke` and its `place` lines. It replays to the same events: the way to take
+/// a played game and edit one shot.
+std::string game_scene_text(std::string_view text, const Shot& shot);
+
+/// Writes scene_text_resolved (game_scene_text for a game) into `path` ("-": standard output), in place atomically.
+/// Returns the exit status; reports on stderr.
 int run_write_scene(const std::string& path, std::string_view text, const Shot& shot, bool quiet = false);
 
 }  // namespace bsim

@@ -370,24 +370,6 @@ std::string ball_name(const Scene& scene, int i) {
          (number == 0 ? " (the cue ball)" : " (the " + std::to_string(number) + ")");
 }
 
-void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
-  if (written.cue().stroke) {
-    // A stroke: the stick's strike at this heading gives the ball its velocity and spin (strike.h),
-    // squirt and swerve included.
-    struck.cue().heading_deg = heading_deg;
-    strike_cue_ball(struck);
-    return;
-  }
-  const int i = written.cue().target;
-  const Ball& ball = written.ball(i);
-  Ball& out = struck.balls[static_cast<std::size_t>(i)];
-  const double turn = radians(heading_deg) - angle_of(ball.velocity);
-  const Eigen::AngleAxisd about_z(turn, Vec3::UnitZ());
-  out.velocity = about_z * ball.velocity;
-  out.spin = about_z * ball.spin;
-  struck.cue().heading_deg = heading_deg;
-}
-
 std::vector<int> pockets_that_take(const Scene& scene) {
   std::vector<int> found;
   Scene other = scene;

@@ -70,77 +70,14 @@ std::string where_balls_were(const Scene& shot, const Cue& cue, int k) {
     }
   }
   std::string out = "\n  after shot " + std::to_string(k) + " the balls stood:" + near;
-  if (elsewhere > 0) out += "\n    and " + std::to_string(elsewhere) + (elsewhere == 1 ? " other" : " others") +
-                            " on the bed, away from the shot's paths";
+  if (elsewhere > 0)
+    out += "\n    and " + std::to_string(elsewhere) + (elsewhere == 1 ? " other" : " others") +
+           " on the bed, away from the shot's paths";
   std::string pockets;
   for (std::size_t p = 0; p < down.size(); ++p)
     if (!down[p].empty()) pockets += "\n    in " + pocket_name(shot.pockets, static_cast<int>(p)) + ": " + down[p];
   return out + (pockets.empty() ? "" : "\n  down:" + pockets);
 }
-
-/// Lays the shots' own simulations end to end.
-class Chain {
- public:
-  explicit Chain(const Scene& scene) : scene_(scene), segments_(scene.balls.size()) {}
-
-  /// A later shot's scene: the balls where the shots so far left them, at rest.
-  void stand_balls(Scene& shot) const {
-    for (std::size_t i = 0; i < shot.balls.size(); ++i) {
-      const MotionSegment& last = segments_[i].back();
-      Ball& ball = shot.balls[i];
-      ball.position = last.start.position;
-      ball.velocity.setZero();
-      ball.spin.setZero();
-      ball.pocket = last.start.motion == Motion::pocketed ? last.pocket : -1;
-    }
-  }
-
-  double rest() const { return shots_.empty() ? 0.0 : shots_.back().rest; }
-
-  /// Adds shot k's simulation, starting at `offset`; its balls `moved` were put where they stand before
-  /// it (placed or put back), so they start a segment there.
-  void add(SimulationResult r, const std::vector<char>& moved, double offset, int k) {
-    for (std::size_t i = 0; i < segments_.size(); ++i) {
-      auto& list = r.segments[i];
-      std::size_t first = 1;
-      if (k == 0 || moved[i]) first = 0;
-      for (std::size_t j = first; j < list.size(); ++j) {
-        MotionSegment seg = list[j];
-        seg.t0 += offset;
-        segments_[i].push_back(seg);
-      }
-    }
-    for (Event& e : r.events) {
-      if (e.type == EventType::end || (k > 0 && e.type == EventType::start)) continue;
-      e.time += offset;
-      for (Contact& c : e.contacts) c.time += offset;
-      e.shot = k;
-      events_.push_back(std::move(e));
-    }
-    for (PocketDrop d : r.drops) {
-      d.time += offset;
-      drops_.push_back(d);
-    }
-    shots_.push_back({offset, offset + kCueLeadTime, offset + r.rest});
-  }
-
-  Timeline finish() {
-    Event end;
-    end.type = EventType::end;
-    end.time = shot_end(rest());
-    end.shot = std::max(0, static_cast<int>(shots_.size()) - 1);
-    events_.push_back(end);
-    for (std::size_t i = 0; i < events_.size(); ++i) events_[i].index = static_cast<int>(i);
-    return Timeline(scene_, std::move(segments_), std::move(events_), std::move(drops_), std::move(shots_));
-  }
-
- private:
-  const Scene& scene_;
-  std::vector<std::vector<MotionSegment>> segments_;
-  std::vector<Event> events_;
-  std::vector<PocketDrop> drops_;
-  std::vector<ShotSpan> shots_;
-};
 
 /// The shot's `place` lines: each ball at rest where the line says, or where it first stood. A failure
 /// when a placed ball lands on another.
@@ -170,81 +107,145 @@ std::optional<PlayFailure> place_balls(const Scene& scene, int k, Scene& shot, s
 }  // namespace
 
 Vec3 respot_place(const Scene& scene, const std::vector<Ball>& balls, int ball) {
+  return spot_place(scene, balls, ball, kHeadSpotX, -1);
+}
+
+Vec3 spot_place(const Scene& scene, const std::vector<Ball>& balls, int ball, double x, int first) {
   const double radius = scene.physics.ball_radius;
-  double lowest = kHeadSpotX, highest = kHeadSpotX;  // the cushions' reach along the long axis
+  double lowest = x, highest = x;  // the cushions' reach along the long axis
   for (const Rail& r : scene.rails) {
     lowest = std::min({lowest, r.a.x(), r.b.x()});
     highest = std::max({highest, r.a.x(), r.b.x()});
   }
-  for (int direction : {-1, 1}) {
+  for (int direction : {first, -first}) {
     for (int step = 0;; ++step) {
-      const Vec3 p(kHeadSpotX + direction * step * kRespotStep, kHeadSpotY, radius);
+      const Vec3 p(x + direction * step * kRespotStep, kHeadSpotY, radius);
       if (p.x() - radius < lowest || p.x() + radius > highest) break;
       if (touching(balls, p, ball, radius) < 0) return p;
     }
   }
-  return Vec3(kHeadSpotX, kHeadSpotY, radius);  // a table packed full: the spot itself
+  return Vec3(x, kHeadSpotY, radius);  // a table packed full: the spot itself
 }
 
-PlayResult play(Scene& scene) {
-  Chain chain(scene);
-  PlayResult result;
-  Scene shot = scene;  // one shot's scene: its cue alone, the balls where they stand before it
-  shot.camera.clear();
-  for (int k = 0; k < scene.shot_count(); ++k) {
-    const Cue& cue = scene.cues[static_cast<std::size_t>(k)];
-    shot.cues = {cue};
-    std::vector<char> moved(scene.balls.size(), 0);
-    const double offset = k == 0 ? 0.0 : chain.rest();
-    if (k > 0) {
-      chain.stand_balls(shot);
-      if (auto failure = place_balls(scene, k, shot, moved)) {
-        result.failure = std::move(failure);
-        break;
-      }
-      Ball& struck = shot.balls[static_cast<std::size_t>(cue.target)];
-      if (struck.pocket >= 0) {  // a scratch: back on the head spot
-        struck.pocket = -1;
-        struck.position = respot_place(scene, shot.balls, cue.target);
-        moved[static_cast<std::size_t>(cue.target)] = 1;
-      }
-    }
-    if (cue.aims()) {
-      const std::string shot_name = "shot " + std::to_string(k + 1);
-      const Ball& target = shot.ball(cue.pot_ball);
-      std::string why;
-      std::optional<double> heading;
-      if (target.pocket >= 0) {
-        why = shot_name + " cannot pot " + ball_name(scene, cue.pot_ball) + ": it is already down, in " +
-              pocket_name(scene.pockets, target.pocket);
-      } else {
-        const AimResult aim = aim_cue(shot);
-        heading = aim.heading_deg;
-        if (!heading) why = (k == 0 ? "" : shot_name + ": ") + aim.failure;
-      }
-      if (!heading) {
-        if (k > 0) why += where_balls_were(shot, cue, k);
-        result.failure = PlayFailure{k, cue.loc, why};
-        break;
-      }
-      const Scene written = shot;
-      strike_heading(written, *heading, shot);
-      scene.cues[static_cast<std::size_t>(k)].heading_deg = *heading;
-    } else {
-      strike_cue_ball(shot);
-    }
-    if (k == 0) scene.balls = shot.balls;  // the first shot's struck ball as struck
-    SimulationResult simulated = simulate_events(shot);
-    // The guard: a ball off the bed fails the run (the shot is still laid down, for a picture of it).
-    const std::optional<TableEscape> escape = first_escape(shot, simulated);
-    chain.add(std::move(simulated), moved, offset, k);
-    if (escape) {
-      result.failure = PlayFailure{k, cue.loc, escape_message(shot, *escape, offset)};
-      break;
+ShotChain::ShotChain(const Scene& scene) : table_(scene), segments_(scene.balls.size()) {
+  table_.cues.clear();
+  table_.camera.clear();
+  found_.struck = scene.balls;
+}
+
+std::vector<Ball> ShotChain::standing() const {
+  std::vector<Ball> balls = table_.balls;
+  if (shots_.empty()) return balls;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const MotionSegment& last = segments_[i].back();
+    Ball& ball = balls[i];
+    ball.position = last.start.position;
+    ball.velocity.setZero();
+    ball.spin.setZero();
+    ball.pocket = last.start.motion == Motion::pocketed ? last.pocket : -1;
+  }
+  return balls;
+}
+
+void ShotChain::add(SimulationResult r, const std::vector<char>& moved, double offset, int k) {
+  for (std::size_t i = 0; i < segments_.size(); ++i) {
+    auto& list = r.segments[i];
+    const std::size_t first = k == 0 || moved[i] ? 0 : 1;
+    for (std::size_t j = first; j < list.size(); ++j) {
+      MotionSegment seg = list[j];
+      seg.t0 += offset;
+      segments_[i].push_back(seg);
     }
   }
+  for (Event& e : r.events) {
+    if (e.type == EventType::end || (k > 0 && e.type == EventType::start)) continue;
+    e.time += offset;
+    for (Contact& c : e.contacts) c.time += offset;
+    e.shot = k;
+    e.index = static_cast<int>(events_.size());
+    events_.push_back(std::move(e));
+  }
+  for (PocketDrop d : r.drops) {
+    d.time += offset;
+    drops_.push_back(d);
+  }
+  shots_.push_back({offset, offset + kCueLeadTime, offset + r.rest});
+}
+
+Timeline ShotChain::finish() const {
+  std::vector<Event> events = events_;
+  Event end;
+  end.type = EventType::end;
+  end.time = shot_end(shots_.empty() ? 0.0 : shots_.back().rest);
+  end.shot = std::max(0, shots() - 1);
+  events.push_back(end);
+  for (std::size_t i = 0; i < events.size(); ++i) events[i].index = static_cast<int>(i);
+  return Timeline(table_, segments_, std::move(events), drops_, shots_);
+}
+
+namespace {
+
+/// Why shot k's `pot` finds no heading, in words, with where the balls stood.
+std::string no_heading(const Scene& scene, const Scene& shot, int k, const Cue& cue) {
+  const std::string shot_name = "shot " + std::to_string(k + 1);
+  const Ball& target = shot.ball(cue.pot_ball);
+  if (target.pocket >= 0)
+    return shot_name + " cannot pot " + ball_name(scene, cue.pot_ball) + ": it is already down, in " +
+           pocket_name(scene.pockets, target.pocket) + where_balls_were(shot, cue, k);
+  return (k == 0 ? "" : shot_name + ": ") + aim_cue(shot).failure + (k > 0 ? where_balls_were(shot, cue, k) : "");
+}
+
+}  // namespace
+
+std::optional<PlayFailure> ShotChain::play(const Scene& scene, int k) {
+  BSIM_EXPECT(k == shots() && k < scene.shot_count(), "shots are played in order");
+  const Cue& cue = scene.cues[static_cast<std::size_t>(k)];
+  Scene shot = table_;  // one shot's scene: its cue alone, the balls where they stand before it
+  shot.cues = {cue};
+  std::vector<char> moved(shot.balls.size(), 0);
+  const double offset = k == 0 ? 0.0 : shots_.back().rest;
+  if (k > 0) {
+    shot.balls = standing();
+    if (auto failure = place_balls(scene, k, shot, moved)) return failure;
+    Ball& struck = shot.balls[static_cast<std::size_t>(cue.target)];
+    if (struck.pocket >= 0) {  // a scratch: back on the head spot
+      struck.pocket = -1;
+      struck.position = respot_place(scene, shot.balls, cue.target);
+      moved[static_cast<std::size_t>(cue.target)] = 1;
+    }
+  }
+  if (cue.aims()) {
+    const Ball& target = shot.ball(cue.pot_ball);
+    const std::optional<double> heading = target.pocket >= 0 ? std::nullopt : aim_cue(shot).heading_deg;
+    if (!heading) return PlayFailure{k, cue.loc, no_heading(scene, shot, k, cue)};
+    const Scene written = shot;
+    strike_heading(written, *heading, shot);
+  } else {
+    strike_cue_ball(shot);
+  }
+  found_.headings.push_back(shot.cue().heading_deg);
+  if (k == 0) found_.struck = shot.balls;  // the first shot's struck ball as struck
+  SimulationResult simulated = simulate_events(shot);
+  // The guard: a ball off the bed fails the run (the shot is still laid down, for a picture of it).
+  const std::optional<TableEscape> escape = first_escape(shot, simulated);
+  add(std::move(simulated), moved, offset, k);
+  if (escape) return PlayFailure{k, cue.loc, escape_message(shot, *escape, offset)};
+  return std::nullopt;
+}
+
+PlayResult play(const Scene& scene) {
+  ShotChain chain(scene);
+  PlayResult result;
+  for (int k = 0; k < scene.shot_count() && !result.failure; ++k) result.failure = chain.play(scene, k);
   result.timeline = chain.finish();
+  result.found = chain.found();
   return result;
+}
+
+void write_found(Scene& scene, const PlayFound& found) {
+  for (std::size_t k = 0; k < found.headings.size() && k < scene.cues.size(); ++k)
+    scene.cues[k].heading_deg = found.headings[k];
+  if (found.struck.size() == scene.balls.size()) scene.balls = found.struck;
 }
 
 Timeline simulate(const Scene& scene) {

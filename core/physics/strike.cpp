@@ -44,4 +44,22 @@ void strike_cue_ball(Scene& scene) {
   scene.balls[index].spin = struck.spin;
 }
 
+void strike_heading(const Scene& written, double heading_deg, Scene& struck) {
+  if (written.cue().stroke) {
+    // A stroke: the stick's strike at this heading gives the ball its velocity and spin (strike.h),
+    // squirt and swerve included.
+    struck.cue().heading_deg = heading_deg;
+    strike_cue_ball(struck);
+    return;
+  }
+  const int i = written.cue().target;
+  const Ball& ball = written.ball(i);
+  Ball& out = struck.balls[static_cast<std::size_t>(i)];
+  const double turn = radians(heading_deg) - std::atan2(ball.velocity.y(), ball.velocity.x());
+  const Eigen::AngleAxisd about_z(turn, Vec3::UnitZ());
+  out.velocity = about_z * ball.velocity;
+  out.spin = about_z * ball.spin;
+  struck.cue().heading_deg = heading_deg;
+}
+
 }  // namespace bsim

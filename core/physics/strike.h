@@ -43,4 +43,13 @@ double squirt_angle(double side, double mass_ratio);
 /// heading changes (an aim search sets Scene::cue.heading_deg and calls it again) before simulate().
 void strike_cue_ball(Scene& scene);
 
+/// The shot as struck with the stick at `heading_deg`: the one place a heading becomes the struck ball's
+/// initial state. `struck` is `written` (the scene as parsed) with cue.heading_deg set and the struck
+/// ball's state at the strike set. In the seed's form the struck ball's `ball`-line velocity is turned
+/// about the vertical to the heading, keeping its speed, and its `spin`-line spin is turned by the same
+/// angle: spin written for a shot along the written velocity (draw about the axis across it, side spin
+/// about the vertical) stays draw and side spin along the heading. A strike from the stick (a stroke)
+/// replaces this body; the solver calls nothing else to strike.
+void strike_heading(const Scene& written, double heading_deg, Scene& struck);
+
 }  // namespace bsim

@@ -1,6 +1,7 @@
 #pragma once
 // The parsed scene: plain values in SI units with every default filled in. Each entity keeps the
 // source location of its tokens so that checks made after simulation can still cite the file.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -8,6 +9,7 @@
 
 #include "check.h"
 #include "physics_params.h"
+#include "rack.h"
 #include "source_loc.h"
 #include "table.h"
 #include "vec.h"
@@ -81,8 +83,33 @@ struct Cue {
   int pot_pocket = -1;
   SourceLoc pot_ball_loc, pot_pocket_loc;
   bool aims() const { return pot_ball >= 0; }
+  /// Games: `cue I H call B P`, `call safety`, `call push-out` after a heading: what the shooter called
+  /// (the rules of 8-ball judge a shot by its call; a written `pot` calls its ball and pocket).
+  int call_ball = -1;  ///< file-order index, or -1
+  int call_pocket = -1;
+  bool call_safety = false;
+  bool call_push_out = false;
+  SourceLoc call_loc;
   std::optional<Stroke> stroke;       ///< the `stroke` line; without one the ball lines give the velocities
   std::vector<BallPlacement> places;  ///< a later shot's `place` lines, in file order
+};
+
+/// A `player <name> [noise <k>]` line (games): one of the two players, in order of play.
+struct PlayerLine {
+  std::string name;
+  double noise = 1;  ///< times the Computational Pool Olympiad's standard deviations (0: as planned)
+  SourceLoc loc, noise_loc;
+};
+
+/// A `game <rules> [seed <n>] [shots <m>]` line (extension): the scene is a game, played by the rules
+/// and, where no `cue` line says what to do, by the program's players (core/game/).
+struct GameLine {
+  static constexpr int kDefaultShots = 60;
+  RackGame rules = RackGame::nine_ball;  ///< 9ball or 8ball
+  std::uint64_t seed = 0;                ///< the rack's and the players' seed
+  int shots = kDefaultShots;             ///< the most shots played (the game then ends with no winner)
+  SourceLoc loc, rules_loc, seed_loc, shots_loc;
+  std::vector<PlayerLine> players;  ///< as written: none, one or two (the rest are "Player 1", "Player 2")
 };
 
 enum class CameraMode { hover, look, follow };
@@ -124,7 +151,8 @@ struct CameraShot {
 
 struct Scene {
   std::string name = "scene";  ///< file stem, used for the default output directory
-  /// The shots, one per `cue` line in file order (at least one in a parsed scene). The first is struck
+  /// The shots, one per `cue` line in file order (at least one in a parsed scene but a game's, which
+  /// may have none). The first is struck
   /// from the `ball` lines' velocities or its stroke; each later one, with its stroke, from where the
   /// shot before left the balls (play.h). A scene built in code starts with one cue, ball 0 at heading 0.
   std::vector<Cue> cues{Cue{}};
@@ -134,6 +162,9 @@ struct Scene {
   std::vector<CameraShot> camera;
   SourceLoc camera_loc;  ///< the `camera` keyword
   PhysicsParams physics;
+  /// A `game` line: a game by the rules. Its `cue` lines (there may be none) are its first shots, as
+  /// written; the players play on from where they leave the table.
+  std::optional<GameLine> game;
 
   /// The first shot's cue: the only one of a scene of one shot.
   const Cue& cue() const {

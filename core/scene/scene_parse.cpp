@@ -26,7 +26,10 @@ namespace {
 constexpr std::size_t kMaxErrors = 30;
 
 constexpr std::string_view kSeedKeywords[] = {"cue", "ball", "rail", "camera"};
-constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin", "param", "rack", "stroke", "place"};
+constexpr std::string_view kExtensionKeywords[] = {"pocket", "spin",  "param", "rack",
+                                                   "stroke", "place", "game",  "player"};
+/// The games `game` plays (rules.h): a subset of the racks.
+constexpr std::string_view kGameNames[] = {"9ball", "8ball"};
 enum class NumberStatus { ok, not_number, not_finite };
 
 NumberStatus parse_double(std::string_view text, double& out) {
@@ -225,8 +228,8 @@ class Parser {
     if (in_camera_) return camera_entry();
     const Token& t = lexed_.tokens[pos_++];
     const std::string_view k = t.text;
-    if (options_.strict &&
-        (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke" || k == "place"))
+    if (options_.strict && (k == "pocket" || k == "spin" || k == "param" || k == "rack" || k == "stroke" ||
+                            k == "place" || k == "game" || k == "player"))
       fail(t.loc, "'" + std::string(k) + "' is an extension that --strict rejects");
     if (k == "cue") return cue(t);
     if (k == "ball") return ball(t);
@@ -238,6 +241,8 @@ class Parser {
     if (k == "rack") return rack(t);
     if (k == "stroke") return stroke(t);
     if (k == "place") return place(t);
+    if (k == "game") return game(t);
+    if (k == "player") return player(t);
     if (k == "endcamera") fail(t.loc, "found 'endcamera' without a 'camera' before it");
     if (k == "event" || k == "hover" || k == "look" || k == "follow")
       fail(t.loc, "found '" + std::string(k) + "' outside a camera description; expected one of " +
@@ -263,6 +268,7 @@ class Parser {
       c.pot_pocket = pot_pocket(c.pot_pocket_loc);
     } else {
       c.heading_deg = number("the cue's heading in degrees", &c.heading_loc);
+      if (!at_end() && peek().text == "call") shooter_call(c);
     }
     if (map_.has_cue && options_.strict)
       fail(keyword.loc,
@@ -273,6 +279,20 @@ class Parser {
     scene_.cues.push_back(c);
     map_.has_cue = true;
     broken_cue_ = false;
+  }
+
+  /// `call B P`, `call safety` or `call push-out` after a cue's heading (games): what the shooter called.
+  void shooter_call(Cue& c) {
+    const Token& call = take("'call'");
+    c.call_loc = call.loc;
+    if (options_.strict) fail(call.loc, "'call' is an extension that --strict rejects");
+    if (!at_end() && (peek().text == "safety" || peek().text == "push-out")) {
+      (take("a call").text == "safety" ? c.call_safety : c.call_push_out) = true;
+      return;
+    }
+    SourceLoc ball_loc, pocket_loc;
+    c.call_ball = ball_index("the called ball (or safety, or push-out)", ball_loc);
+    c.call_pocket = pot_pocket(pocket_loc);
   }
 
   /// The pocket after `pot B`: its number, or a standard pocket's name (top-right); a name on a scene
@@ -502,6 +522,65 @@ class Parser {
     rack_ = line;
   }
 
+  /// `game <rules> [seed <n>] [shots <m>]` (extension): the scene is a game.
+  void game(const Token& keyword) {
+    GameLine line;
+    line.loc = keyword.loc;
+    const Token& rules = take("a game (9ball or 8ball)");
+    line.rules_loc = rules.loc;
+    const std::vector<std::string_view> names(std::begin(kGameNames), std::end(kGameNames));
+    const std::optional<RackGame> known = rack_game(rules.text);
+    if (!known || std::find(names.begin(), names.end(), rules.text) == names.end())
+      fail_at_value(
+          rules, "expected a game (9ball or 8ball), found " + quote_token(rules.text) +
+                     (known ? " (a rack this program has, but not a game it plays)" : did_you_mean(rules.text, names)));
+    line.rules = *known;
+    bool seeded = false, limited = false;
+    while (!at_end() && (peek().text == "seed" || peek().text == "shots")) {
+      const bool seed = take("a game option").text == "seed";
+      SourceLoc& loc = seed ? line.seed_loc : line.shots_loc;
+      const long long value = integer(seed ? "the game's seed" : "the game's most shots", &loc);
+      const std::string found = quote_token(lexed_.tokens[pos_ - 1].text);
+      if (seed ? seeded : limited)
+        fail(loc, std::string("the game has ") + (seed ? "a seed" : "a shot limit") + " already");
+      if (seed && value < 0) fail(loc, "expected a seed of 0 or more, found " + found);
+      if (!seed && value < 1) fail(loc, "expected the game's most shots as 1 or more, found " + found);
+      (seed ? seeded : limited) = true;
+      if (seed)
+        line.seed = static_cast<std::uint64_t>(value);
+      else
+        line.shots = static_cast<int>(std::min<long long>(value, 100000));
+    }
+    if (scene_.game)
+      fail(keyword.loc,
+           "a scene is one game, and there is already a 'game' line on line " + std::to_string(scene_.game->loc.line));
+    line.players = std::move(players_);
+    players_.clear();
+    scene_.game = std::move(line);
+  }
+
+  /// `player <name> [noise <k>]` (games): at most two, in order of play.
+  void player(const Token& keyword) {
+    PlayerLine line;
+    line.loc = keyword.loc;
+    const Token& name = take("the player's name");
+    if (name.text == "noise" || is_top_keyword(name.text))
+      fail_at_value(name, "expected the player's name, found " + quote_token(name.text));
+    line.name = std::string(name.text);
+    if (!at_end() && peek().text == "noise") {
+      take("'noise'");
+      line.noise = number("the player's noise", &line.noise_loc);
+      if (line.noise < 0)
+        fail(line.noise_loc, "expected the player's noise as 0 or more (times the Olympiad's errors), found " +
+                                 quote_token(lexed_.tokens[pos_ - 1].text));
+    }
+    std::vector<PlayerLine>& players = scene_.game ? scene_.game->players : players_;
+    if (players.size() >= 2)
+      fail(keyword.loc, "a game has two players, and they are on lines " + std::to_string(players[0].loc.line) +
+                            " and " + std::to_string(players[1].loc.line));
+    players.push_back(std::move(line));
+  }
+
   void camera(const Token& keyword) {
     if (camera_seen_)
       fail(keyword.loc, "a scene has one camera description, and there is already one on line " +
@@ -683,7 +762,12 @@ class Parser {
     // The standard pockets' jaws end the standard cushions; round a table of the scene's own cushions
     // they are plain drop circles.
     if (scene_.pockets.empty()) scene_.pockets = own_rails ? bare_standard_pockets() : standard_pockets(scene_.physics);
+    if (!players_.empty())
+      error(players_.front().loc, "a 'player' plays a game, and this scene has no 'game' line (game 9ball, say)");
+    if (scene_.game && !map_.has_cue) scene_.cues.clear();  // the players play every shot
+    if (scene_.game) rack_game_balls();
     if (rack_) add_rack();
+    if (scene_.game) add_cue_ball();
     for (std::size_t i = 0; i < map_.spins.size(); ++i) {
       const auto index = static_cast<std::size_t>(map_.spins[i].ball);
       if (index < scene_.balls.size()) scene_.balls[index].spin = spins_[i];
@@ -691,6 +775,44 @@ class Parser {
   }
 
  private:
+  /// A game's object balls: the rack line's or the ball lines', which must be the game's; with neither,
+  /// the game's own rack, seeded by the game.
+  void rack_game_balls() {
+    const GameLine& game = *scene_.game;
+    const std::string name(rack_game_name(game.rules));
+    if (rack_ && rack_->spec.game != game.rules)
+      error(rack_->loc, "the rack is " + std::string(rack_game_name(rack_->spec.game)) + " and the game (line " +
+                            std::to_string(game.loc.line) + ") is " + name +
+                            ": rack the game's balls, or leave the rack out");
+    bool object_lines = false;
+    for (const auto& [number, line] : ball_lines_) {
+      object_lines = object_lines || number >= 1;
+      if (number > rack_ball_count(game.rules))
+        error(game.loc, "the ball on line " + std::to_string(line) + " is the " + std::to_string(number) + ", and " +
+                            name + " is played with the balls 1 to " + std::to_string(rack_ball_count(game.rules)));
+    }
+    if (rack_ || object_lines) return;
+    RackLine line;
+    line.spec.game = game.rules;
+    line.spec.seed = game.seed;
+    line.loc = game.loc;
+    line.at = 0;
+    rack_ = line;
+  }
+
+  /// A game's cue ball: its `ball 0` line's, or on the head spot (the player then chooses where in the
+  /// kitchen to break from), first in file order when the scene writes no ball lines.
+  void add_cue_ball() {
+    if (ball_lines_.count(0)) return;
+    Ball cue;
+    cue.position = Vec3(-0.635, 0, scene_.physics.ball_radius);
+    cue.loc = scene_.game->loc;
+    const bool first = ball_lines_.empty();
+    scene_.balls.insert(first ? scene_.balls.begin() : scene_.balls.end(), cue);
+    const SceneSourceMap::BallTokens tokens{cue.loc, cue.loc, cue.loc};
+    map_.balls.insert(first ? map_.balls.begin() : map_.balls.end(), tokens);
+  }
+
   /// The rack's balls at the rack line's place in file order, by painted number; an error at the rack
   /// line when they do not all fit inside the cushions.
   void add_rack() {
@@ -754,6 +876,7 @@ class Parser {
   std::map<std::string_view, int> param_lines_;
   std::vector<std::pair<std::string_view, double>> params_;
   std::vector<SourceLoc> named_pockets_;  ///< each pocket written by name after `pot`
+  std::vector<PlayerLine> players_;       ///< `player` lines before the `game` line
 };
 
 }  // namespace
@@ -771,7 +894,7 @@ ParseResult parse_scene(std::string_view text, std::string_view name, const Pars
     result.diagnostics.push_back(
         {Severity::error, map.end, "the scene is empty; expected a cue description and at least one ball"});
   } else if (!has_errors(result.diagnostics)) {
-    if (!map.has_cue)
+    if (!map.has_cue && !scene.game)
       result.diagnostics.push_back(
           {Severity::error, map.end, "expected a cue description ('cue <ball index> <heading>'), found none"});
     if (scene.balls.empty())

@@ -53,10 +53,15 @@ class Validator {
     // With a rail the wrong way round, every ball near it would also look outside; one error is enough.
     rails_ok_ = diagnostics_.size() == before;
     for (std::size_t i = 0; i < scene_.balls.size(); ++i) ball_placement(i);
-    if (scene_.cues.empty()) return;  // a rack checked alone
+    if (scene_.cues.empty() && !scene_.game) return;  // a rack checked alone
     if (rails_ok_) cushion_gaps();
+    if (scene_.cues.empty()) return;  // a game the players play from the break
+    for (const Cue& cue : scene_.cues)
+      if (cue.call_loc.known() && !scene_.game)
+        error(cue.call_loc, "a call is judged by a game's rules, and this scene has no 'game' line");
     cue_heading();
     for (const Cue& cue : scene_.cues) later_shot(cue);
+    if (scene_.game) game_cues();
   }
 
  private:
@@ -86,8 +91,9 @@ class Validator {
       if (!ball_exists(spin.ball))
         error(spin.ball_loc,
               "expected a ball index for 'spin' " + index_range() + ", found " + std::to_string(spin.ball));
+    // A game's shots are known once it is played: its camera keys are checked against the timeline.
     for (const CameraShot& shot : scene_.camera)
-      if (static_cast<std::size_t>(shot.key.shot + 1) > scene_.cues.size())
+      if (!scene_.game && static_cast<std::size_t>(shot.key.shot + 1) > scene_.cues.size())
         error(shot.key.shot_loc, "expected a shot from 1 to " + std::to_string(scene_.cues.size()) +
                                      " (the scene has " + plural(scene_.cues.size(), "shot") +
                                      ", one per 'cue' line), found " + std::to_string(shot.key.shot + 1));
@@ -137,6 +143,24 @@ class Validator {
         error(cue.loc,
               "expected a speed to aim with: the struck ball's 'ball' line gives it no velocity along the "
               "table, and 'pot' turns that velocity to the heading it finds");
+    }
+  }
+
+  /// In a game the stick strikes the cue ball, and every shot has its stroke (the rules judge a stroke).
+  void game_cues() {
+    for (const Cue& cue : scene_.cues) {
+      if (!ball_exists(cue.target)) continue;
+      if (scene_.ball(cue.target).number != 0)
+        error(cue.target_loc, "in a game the stick strikes the cue ball, and ball index " + std::to_string(cue.target) +
+                                  " is the " + std::to_string(scene_.ball(cue.target).number));
+      else if (!cue.stroke && &cue == &scene_.cues.front())
+        error(cue.loc, "expected a 'stroke' line under this cue: in a game every shot is struck by the stick");
+      if (cue.call_ball >= 0 && !ball_exists(cue.call_ball))
+        error(cue.call_loc,
+              "expected the index of the called ball " + index_range() + ", found " + std::to_string(cue.call_ball));
+      else if (cue.call_pocket >= static_cast<int>(scene_.pockets.size()))
+        error(cue.call_loc, "expected the called pocket from 0 to " + std::to_string(scene_.pockets.size() - 1) +
+                                ", found " + std::to_string(cue.call_pocket));
     }
   }
 

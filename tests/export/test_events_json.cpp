@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -40,6 +41,17 @@ std::vector<std::string> split(const std::string& text, char sep) {
   std::istringstream in(text);
   while (std::getline(in, item, sep)) out.push_back(item);
   return out;
+}
+
+/// A turn of a hand-made game record.
+GameTurn turn_of(int shot, int player, bool written, ShotCall planned, TurnVerdict verdict) {
+  GameTurn turn;
+  turn.shot = shot;
+  turn.player = player;
+  turn.written = written;
+  turn.planned = planned;
+  turn.verdict = std::move(verdict);
+  return turn;
 }
 
 double parse(const std::string& s) {
@@ -183,6 +195,117 @@ TEST_SUITE("events.json") {
                                    ", \"type\": \"ball-ball\", \"shot\": 1, \"balls\": [0, 1, 2, 3], \"speed\": " +
                                    format_number(hit.speed) + ", \"contacts\": [" + contacts + "]}") !=
           std::string::npos);
+  }
+
+  TEST_CASE("a played game: the whole file with its game object, byte for byte") {
+    // spec.md Additions 2026-11-27, events.json `game`: rules, players, winner (null: unfinished, here
+    // at the shot limit), one turn per shot; a planned cue event carries `planned`.
+    Scene scene = scenes::standard_table();
+    scene.balls.push_back(scenes::ball_at(0, 0.1, -0.2, scene.physics));
+    const std::unique_ptr<Shot> shot = shot_of(scene);
+    GameRecord game;
+    game.rules = RackGame::eight_ball;
+    game.players = {"Ann \"the hammer\"", "Bo"};
+    game.shot_limit = true;
+    TurnVerdict v;
+    v.break_shot = true;
+    v.legal = false;
+    v.foul = "the cue ball went into a pocket";
+    v.pocketed = {3, 11};
+    v.in_hand = InHand::kitchen;
+    v.call = "foul: the cue ball went into a pocket; ball in hand behind the head string";
+    game.turns.push_back(turn_of(0, 0, false, ShotCall{-1, -1, true, false}, v));
+    shot->game = game;
+    const std::string expected =
+        "{\n"
+        "  \"duration\": 3,\n"
+        "  \"events\": [\n"
+        "    {\"index\": 0, \"time\": 0, \"type\": \"start\", \"shot\": 1},\n"
+        "    {\"index\": 1, \"time\": 2.5, \"type\": \"cue\", \"shot\": 1, \"balls\": [0], \"speed\": 0, \"heading\": "
+        "0, \"planned\": {\"safety\": true}},\n"
+        "    {\"index\": 2, \"time\": 3, \"type\": \"end\", \"shot\": 1}\n"
+        "  ],\n"
+        "  \"shots\": [\n"
+        "    {\"shot\": 1, \"cue\": 2.5, \"rest\": 2.5}\n"
+        "  ],\n"
+        "  \"pocketed\": [],\n"
+        "  \"final\": [\n"
+        "    {\"ball\": 0, \"number\": 0, \"position\": [0.1, -0.2, 0.028575], \"pocketed\": false}\n"
+        "  ],\n"
+        "  \"game\": {\n"
+        "    \"rules\": \"8ball\",\n"
+        "    \"players\": [\"Ann \\\"the hammer\\\"\", \"Bo\"],\n"
+        "    \"winner\": null,\n"
+        "    \"shot_limit\": true,\n"
+        "    \"turns\": [\n"
+        "      {\"shot\": 1, \"player\": 0, \"break\": true, \"legal\": false, \"foul\": \"the cue ball went into a "
+        "pocket\", \"pocketed\": [3, 11], \"continues\": false, \"ball_in_hand\": true, \"in_hand\": \"kitchen\", "
+        "\"call\": \"foul: the cue ball went into a pocket; ball in hand behind the head string\"}\n"
+        "    ]\n"
+        "  }\n"
+        "}\n";
+    CHECK(events_json(*shot) == expected);
+  }
+
+  TEST_CASE("a game's turns: planned cue events only, push-outs, the winner; the rest of the file unchanged") {
+    const std::string text =
+        "ball 0 -0.6 -0.1 0.028575  2.4 0.42 0  1 0 0 0\n"
+        "ball 9 0.2 0.05 0.028575  0 0 0  1 0 0 0\n"
+        "cue 0 10\n"
+        "cue 0 200\n"
+        "stroke 1.5 0 0 0\n" +
+        std::string(test::fixtures::kHoverCamera);
+    ShotResult loaded = load_shot(text, "two");
+    REQUIRE(loaded.shot);
+    Shot& shot = *loaded.shot;
+    REQUIRE(shot.timeline.shots().size() == 2);
+    const std::string plain = events_json(shot);
+    GameRecord game;
+    game.players = {"Player 1", "Player 2"};
+    game.winner = 1;
+    TurnVerdict first;
+    first.pocketed = {9};
+    first.continues = true;
+    first.call = "";
+    TurnVerdict push;
+    push.shooter = 0;
+    push.push_out = true;
+    push.call = "push-out";
+    // The first shot a player's plan (the 9 in pocket 2), the second written (no `planned`).
+    game.turns = {turn_of(0, 0, false, ShotCall{9, 2, false, false}, first),
+                  turn_of(1, 0, true, ShotCall{-1, -1, false, true}, push)};
+    shot.game = game;
+    const std::string json = events_json(shot);
+    // Everything but the game object and the planned call is as without a game.
+    const std::string planned = ", \"planned\": {\"ball\": 9, \"pocket\": 2}";
+    const std::size_t at = json.find(planned);
+    REQUIRE(at != std::string::npos);
+    CHECK(json.find("\"planned\"", at + planned.size()) == std::string::npos);
+    std::string without = json;
+    without.erase(at, planned.size());
+    const std::size_t game_at = without.find(",\n  \"game\": {");
+    REQUIRE(game_at != std::string::npos);
+    CHECK(without.substr(0, game_at) + "\n}\n" == plain);
+    CHECK(json.substr(json.find("\"game\"")) ==
+          "\"game\": {\n"
+          "    \"rules\": \"9ball\",\n"
+          "    \"players\": [\"Player 1\", \"Player 2\"],\n"
+          "    \"winner\": 1,\n"
+          "    \"turns\": [\n"
+          "      {\"shot\": 1, \"player\": 0, \"break\": false, \"legal\": true, \"foul\": null, \"pocketed\": [9], "
+          "\"continues\": true, \"ball_in_hand\": false, \"call\": \"\"},\n"
+          "      {\"shot\": 2, \"player\": 0, \"break\": false, \"legal\": true, \"foul\": null, \"pocketed\": [], "
+          "\"continues\": false, \"ball_in_hand\": false, \"push_out\": true, \"call\": \"push-out\"}\n"
+          "    ]\n"
+          "  }\n"
+          "}\n");
+    // And it is JSON: the planned call sits on the first shot's cue event.
+    const nlohmann::json doc = nlohmann::json::parse(json);
+    for (const auto& e : doc["events"]) {
+      if (e["type"] != "cue") continue;
+      CHECK(e.contains("planned") == (e["shot"] == 1));
+    }
+    CHECK(doc["game"]["turns"].size() == 2);
   }
 
   TEST_CASE("trajectory.csv: one row per ball per frame from 0 to the duration, exact states, named motions") {

@@ -90,10 +90,13 @@ TEST_SUITE("several shots") {
     }
   }
 
-  TEST_CASE("a later shot is aimed from where the balls stopped, and the heading found is written back") {
+  TEST_CASE("a later shot is aimed from where the balls stopped, and the heading found is returned") {
     Scene scene = parsed(three_shots());
+    const Scene written = scene;
     const PlayResult played = play(scene);
     REQUIRE_FALSE(played.failure);
+    CHECK(scene.cues[1].heading_deg == written.cues[1].heading_deg);  // the scene stays as written
+    write_found(scene, played.found);
     // Shot 2 played alone from the balls where shot 1 left them, at the heading found, gives the same
     // motion (the chain adds no physics of its own).
     Scene alone = parsed(three_shots());
@@ -192,8 +195,9 @@ TEST_SUITE("several shots") {
               "shot 4 cannot pot ball index 1 (the 1): it is already down, in the top-right corner (pocket 2)\n") == 0);
     CHECK(a.failure->message.find("\n  after shot 3 the balls stood:\n    ball index 0 (the cue ball) at (") !=
           std::string::npos);
-    CHECK(a.failure->message.ends_with("\n  down:\n    in the top-right corner (pocket 2): the 1, the 3"
-                                       "\n    in the bottom-right corner (pocket 3): the 2"));
+    CHECK(
+        a.failure->message.ends_with("\n  down:\n    in the top-right corner (pocket 2): the 1, the 3"
+                                     "\n    in the bottom-right corner (pocket 3): the 2"));
     CHECK(a.timeline.shot_count() == 3);  // what was played before it
 
     Scene thin = parsed(kTwoStraight + "cue 0 pot 1 5\nstroke 1 0 0 0\n");
@@ -218,7 +222,8 @@ TEST_SUITE("several shots") {
     CHECK(m.rfind("shot 2: no heading pots ball index 9 (the 9) in the top-left corner (pocket 0): ", 0) == 0);
     // Each listed ball on a line of its own, the struck ball and the ball to pot among them.
     int listed = 0;
-    for (std::size_t at = m.find("\n    ball index "); at != std::string::npos; at = m.find("\n    ball index ", at + 1)) {
+    for (std::size_t at = m.find("\n    ball index "); at != std::string::npos;
+         at = m.find("\n    ball index ", at + 1)) {
       const std::size_t end = m.find('\n', at + 1);
       const std::string line = m.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
       CHECK(line.find(" at (") != std::string::npos);
@@ -243,6 +248,7 @@ TEST_SUITE("several shots") {
     Scene scene = parsed(text);
     const PlayResult played = play(scene);
     REQUIRE_FALSE(played.failure);
+    write_found(scene, played.found);
     const Timeline& t = played.timeline;
     CHECK(t.shot_count() == 20);
     CHECK(t.pocket_drops().size() == 20);

@@ -90,3 +90,37 @@ TEST_SUITE("preview: --write-scene") {
     CHECK(scene_text_resolved(text, loaded(text)->scene) == text);
   }
 }
+
+TEST_SUITE("preview: --write-scene of a game") {
+  TEST_CASE("a played game written as an explicit scene replays to the same events, drops and verdicts") {
+    for (const char* text :
+         {"game 9ball seed 7 shots 8\nplayer Ann noise 1.5\nplayer Bo\n", "game 8ball seed 2 shots 8\n"}) {
+      CAPTURE(text);
+      ShotResult played = load_shot(text, "game");
+      REQUIRE(played.shot);
+      REQUIRE(played.shot->game);
+      const std::string written = game_scene_text(text, *played.shot);
+      // Every shot written out: a cue line with its heading (no aim left to do), a stroke, its call.
+      CHECK(written.find(" pot ") == std::string::npos);
+      CHECK(written.find("game ") != std::string::npos);
+      ShotResult replayed = load_shot(written, "game");
+      for (const Diagnostic& d : replayed.diagnostics) INFO(format_diagnostic(d, "game"));
+      REQUIRE(replayed.shot);
+      REQUIRE(replayed.shot->game);
+      CHECK(replayed.shot->timeline.events() == played.shot->timeline.events());
+      CHECK(replayed.shot->timeline.pocket_drops() == played.shot->timeline.pocket_drops());
+      const GameRecord& a = *played.shot->game;
+      const GameRecord& b = *replayed.shot->game;
+      CHECK(b.winner == a.winner);
+      REQUIRE(b.turns.size() == a.turns.size());
+      for (std::size_t k = 0; k < a.turns.size(); ++k) {
+        CAPTURE(k);
+        CHECK(b.turns[k].written);
+        CHECK(b.turns[k].player == a.turns[k].player);
+        CHECK(b.turns[k].verdict.legal == a.turns[k].verdict.legal);
+        CHECK(b.turns[k].verdict.call == a.turns[k].verdict.call);
+        CHECK(b.turns[k].verdict.pocketed == a.turns[k].verdict.pocketed);
+      }
+    }
+  }
+}

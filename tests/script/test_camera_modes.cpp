@@ -225,6 +225,7 @@ TEST_SUITE("camera_modes") {
     Scene scene = *parsed.scene;
     PlayResult played = play(scene);
     REQUIRE(!played.failure);
+    write_found(scene, played.found);
     const Timeline& timeline = played.timeline;
     REQUIRE(timeline.shot_count() == 2);
     REQUIRE(timeline.pocket_drops().size() == 1);

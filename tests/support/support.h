@@ -6,6 +6,13 @@
 
 namespace bsim::test {
 
+/// The sanitized test build (tests/CMakeLists.txt): the heaviest cases (whole games) run smaller there.
+#ifdef BSIM_SANITIZED_TESTS
+inline constexpr bool kSanitizedBuild = true;
+#else
+inline constexpr bool kSanitizedBuild = false;
+#endif
+
 struct CommandResult {
   int exit_code = -1;
   std::string out;  ///< standard output
