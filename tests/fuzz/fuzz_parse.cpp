@@ -29,7 +29,9 @@ void check(std::string_view text, const bsim::ParseOptions& options) {
   if (!r.scene) return;
   const bsim::Scene& s = *r.scene;
   require(!s.balls.empty() && s.balls.size() <= 16, "1 to 16 balls");
-  require(s.cue().target >= 0 && static_cast<std::size_t>(s.cue().target) < s.balls.size(), "the cue's target exists");
+  require(!s.cues.empty() || s.game.has_value(), "a scene has a cue, but a game its players may play from the break");
+  for (const bsim::Cue& cue : s.cues)
+    require(cue.target >= 0 && static_cast<std::size_t>(cue.target) < s.balls.size(), "each cue's target exists");
   require(!s.rails.empty() && !s.pockets.empty(), "the table is complete");
   for (const bsim::Ball& b : s.balls) {
     require(std::abs(b.orientation.norm() - 1.0) < 1e-9, "orientations are unit quaternions");
