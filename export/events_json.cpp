@@ -5,6 +5,7 @@
 
 #include "number_format.h"
 #include "outputs.h"
+#include "run_summary.h"
 #include "shot.h"
 
 namespace bsim {
@@ -63,23 +64,6 @@ std::string event_json(const Event& e, const Scene& scene, const GameRecord* gam
     out += "]";
   }
   return out + "}";
-}
-
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const unsigned char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out + "\"";
 }
 
 /// One turn of the game: the rules' verdict on one shot.

@@ -15,8 +15,6 @@ namespace fs = std::filesystem;
 
 namespace bsim {
 
-namespace {
-
 std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (const unsigned char c : text) {
@@ -33,6 +31,8 @@ std::string json_string(const std::string& text) {
   }
   return out + "\"";
 }
+
+namespace {
 
 std::string seconds(double s) {
   char text[32];

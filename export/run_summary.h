@@ -10,6 +10,10 @@
 
 namespace bsim {
 
+/// `text` as a JSON string: quoted, with quotes, backslashes and control characters escaped (the
+/// run summary and events.json).
+std::string json_string(const std::string& text);
+
 /// File name of the summary inside the output directory.
 inline constexpr const char* kRunSummaryName = "run.json";
 

@@ -190,6 +190,7 @@ class Planner {
   std::vector<Candidate> candidates(const std::vector<Ball>& lie, const std::optional<Vec3>& place,
                                     const Numbers& targets) const;
   void try_strokes(const std::vector<Candidate>& list, std::size_t c, std::vector<Try>& tries);
+  std::optional<double> reference_heading(const Candidate& cand, const Stroke& reference);
   std::optional<double> aim_stroke(const Candidate& cand, double want, double start, const Stroke& stroke,
                                    Outcome& out);
   std::optional<Choice> best_pot(const std::vector<Candidate>& list);
@@ -471,12 +472,15 @@ std::optional<double> Planner::aim_stroke(const Candidate& cand, double want, do
   return b;
 }
 
-/// Aims candidate `c` with the solver, then plays its strokes once each without noise.
-void Planner::try_strokes(const std::vector<Candidate>& list, std::size_t c, std::vector<Try>& tries) {
-  const Candidate& cand = list[c];
-  const int number = cand.lie[static_cast<std::size_t>(cand.ball)].number;
+/// The stroke a candidate is first aimed with: 2 m/s through the centre.
+Stroke reference_stroke() {
   Stroke reference;
   reference.speed = 2.0;
+  return reference;
+}
+
+/// The `pot` solver's heading for candidate `cand` with `reference` (its simulations counted), or none.
+std::optional<double> Planner::reference_heading(const Candidate& cand, const Stroke& reference) {
   Scene one = work_;
   one.balls = cand.lie;
   one.cue().pot_ball = cand.ball;
@@ -484,8 +488,17 @@ void Planner::try_strokes(const std::vector<Candidate>& list, std::size_t c, std
   one.cue().stroke = reference;
   const AimResult aim = aim_cue(one);
   sims_ += aim.simulations;
-  if (!aim.heading_deg) return;
-  const Outcome ref = play(cand.lie, *aim.heading_deg, reference, cand.ball);
+  return aim.heading_deg;
+}
+
+/// Aims candidate `c` with the solver, then plays its strokes once each without noise.
+void Planner::try_strokes(const std::vector<Candidate>& list, std::size_t c, std::vector<Try>& tries) {
+  const Candidate& cand = list[c];
+  const int number = cand.lie[static_cast<std::size_t>(cand.ball)].number;
+  const Stroke reference = reference_stroke();
+  const std::optional<double> heading = reference_heading(cand, reference);
+  if (!heading) return;
+  const Outcome ref = play(cand.lie, *heading, reference, cand.ball);
   if (!ref.watch_hit) return;
   for (double speed : {0.9, 1.3, 1.8, 2.5, 3.4, 4.5})
     for (double height : {-0.45, -0.2, 0.0, 0.2, 0.45})
@@ -495,7 +508,7 @@ void Planner::try_strokes(const std::vector<Candidate>& list, std::size_t c, std
         s.height = height;
         s.side = side;
         Outcome o;
-        const std::optional<double> h = aim_stroke(cand, ref.watch_dir, *aim.heading_deg, s, o);
+        const std::optional<double> h = aim_stroke(cand, ref.watch_dir, *heading, s, o);
         if (!h || !pot_made(o, number, cand.pocket)) continue;
         Try t{c, s, *h, 0, 0, 0, 0, {}};
         t.quality = leave_quality(o, number);
@@ -546,17 +559,10 @@ void Planner::chance_of(const Candidate& cand, Try& t, double bound) {
 /// geometric chance times 1 + w times the quality of the leave after it (0 when no stroke makes it).
 double Planner::next_pot_value(const Candidate& cand, const Numbers& targets) {
   const int number = cand.lie[static_cast<std::size_t>(cand.ball)].number;
-  Stroke reference;
-  reference.speed = 2.0;
-  Scene one = work_;
-  one.balls = cand.lie;
-  one.cue().pot_ball = cand.ball;
-  one.cue().pot_pocket = cand.pocket;
-  one.cue().stroke = reference;
-  const AimResult aim = aim_cue(one);
-  sims_ += aim.simulations;
-  if (!aim.heading_deg) return 0;
-  const Outcome ref = play(cand.lie, *aim.heading_deg, reference, cand.ball);
+  const Stroke reference = reference_stroke();
+  const std::optional<double> heading = reference_heading(cand, reference);
+  if (!heading) return 0;
+  const Outcome ref = play(cand.lie, *heading, reference, cand.ball);
   if (!ref.watch_hit) return 0;
   double best = 0;
   for (double speed : {0.9, 1.5, 2.4, 3.6})
@@ -565,7 +571,7 @@ double Planner::next_pot_value(const Candidate& cand, const Numbers& targets) {
       s.speed = speed;
       s.height = height;
       Outcome o;
-      const std::optional<double> h = aim_stroke(cand, ref.watch_dir, *aim.heading_deg, s, o);
+      const std::optional<double> h = aim_stroke(cand, ref.watch_dir, *heading, s, o);
       if (!h || !pot_made(o, number, cand.pocket, targets)) continue;
       best = std::max(best, cand.ease * (1 + kPositionWeight * leave_quality(o, number)));
     }
