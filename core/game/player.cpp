@@ -159,6 +159,7 @@ class Planner {
   std::vector<Ball> table_;  ///< the balls as they lie, at rest
   const ShotRules& rules_;
   double noise_;
+  bool look_ahead_;
   std::uint64_t seed_;
   double R_;
   int cue_ = -1;
@@ -214,6 +215,7 @@ class Planner {
 Planner::Planner(const Scene& table, const ShotRules& rules, const PlayerSkill& skill, std::uint64_t seed)
     : rules_(rules),
       noise_(skill.noise),
+      look_ahead_(skill.look_ahead),
       seed_(seed),
       R_(table.physics.ball_radius),
       eight_ball_(rules.winning_ball == 8) {
@@ -617,7 +619,7 @@ std::optional<Choice> Planner::best_pot(const std::vector<Candidate>& list) {
   }
   std::stable_sort(tries.begin(), tries.end(), [](const Try& a, const Try& b) { return a.score > b.score; });
   if (tries.size() > static_cast<std::size_t>(kFinalists)) tries.resize(kFinalists);
-  if (noise_ > 0) second_ply(list, tries);
+  if (noise_ > 0 && look_ahead_) second_ply(list, tries);
   std::optional<Choice> best;
   for (const Try& t : tries) {
     if (best && t.score <= best->score) continue;

@@ -25,6 +25,9 @@ namespace bsim {
 struct PlayerSkill {
   std::string name;
   double noise = 1;  ///< times the Olympiad's standard deviations (kNoise*)
+  /// The second ply: each finalist stroke's leaves searched for the next shot itself. Off, a leave is
+  /// judged by its geometry alone (for measuring what the look-ahead is worth).
+  bool look_ahead = true;
 };
 
 /// The Computational Pool Olympiad's standard deviations at noise 1 (FastFiz `GaussianNoise`).

@@ -4,7 +4,12 @@
 // first ball made, then the 8; a foul gives ball in hand anywhere; a table ends when its last ball is
 // down). Every planned shot is played with the player's noise. Prints, per game and in all: the pots
 // tried and made, the safeties, the simulations and the CPU seconds of planning per shot.
+// `--look-ahead N` instead measures the second ply: N seeded 9-ball end positions (the 1, the 2 and the
+// 9 dropped at random, the cue ball too) each run out with the look-ahead and without it, side by side:
+// the share cleared with no miss, and the positions where the two players' first shots differ.
 //   player_bench [--tables N] [--shots M] [--noise K] [--game 9ball|8ball] [--verbose]
+//   player_bench --look-ahead N [--noise K]
+//   player_bench --look-ahead N --position S    position S run out N times each way
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -183,6 +188,98 @@ Tally play_table(RackGame game, std::uint64_t seed, int shots, double noise) {
   return t;
 }
 
+/// A 9-ball end position: the cue ball, the 1, the 2 and the 9 dropped at random on the bed, at least
+/// a ball's width from the cushions and from each other.
+Scene end_position(std::uint64_t seed) {
+  Scene scene = racked(RackGame::nine_ball, 1);
+  const double R = scene.physics.ball_radius;
+  scene.balls.resize(1);
+  SplitMix64 random(seed);
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * random.uniform(); };
+  for (int number : {1, 2, 9}) {
+    Ball b;
+    b.number = number;
+    scene.balls.push_back(b);
+  }
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    for (bool free = false; !free;) {
+      scene.balls[i].position = Vec3(uniform(-1.2, 1.2), uniform(-0.55, 0.55), R);
+      free = true;
+      for (std::size_t j = 0; j < i; ++j) free = free && (scene.balls[j].position - scene.balls[i].position).norm() > 4 * R;
+    }
+  }
+  return scene;
+}
+
+/// Runs out `position` (9-ball, the lowest first) with noise; true when every ball goes down on a called
+/// pot with no miss, safety or foul. `first` gets the first plan.
+bool run_out(Scene table, double noise, bool look_ahead, std::uint64_t seed, PlannedShot& first) {
+  PlayerSkill skill{"bench", noise, look_ahead};
+  ShotRules rules;
+  rules.winning_ball = 9;
+  for (int k = 0; k < 3; ++k) {
+    rules.targets = targets(table, false, 0);
+    const PlannedShot plan = plan_shot(table, rules, skill, seed * 1000 + static_cast<std::uint64_t>(k));
+    if (k == 0) first = plan;
+    if (plan.call.safety || plan.call.ball < 0) return false;
+    const Played p = play(table, plan, rules, noise, seed * 7919 + static_cast<std::uint64_t>(k));
+    if (p.scratch || !p.legal_first) return false;
+    bool called = false;
+    for (std::size_t i = 0; i < p.made.size(); ++i) called = called || (p.made[i] == plan.call.ball && p.pockets[i] == plan.call.pocket);
+    if (!called) return false;
+    if (std::find(p.made.begin(), p.made.end(), 9) != p.made.end()) return true;
+  }
+  return false;
+}
+
+void look_ahead_bench(int positions, double noise) {
+  std::printf("player_bench: the second ply, 9-ball end positions (1, 2, 9), noise %.2f, %d positions\n", noise,
+              positions);
+  int cleared[2] = {}, differ = 0;
+  double seconds[2] = {};
+  for (int s = 1; s <= positions; ++s) {
+    const Scene position = end_position(static_cast<std::uint64_t>(s));
+    PlannedShot first[2];
+    bool out[2];
+    for (int a = 0; a < 2; ++a) {
+      const std::clock_t c0 = std::clock();
+      out[a] = run_out(position, noise, a == 1, static_cast<std::uint64_t>(s), first[a]);
+      seconds[a] += static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+      cleared[a] += out[a];
+    }
+    const bool same = first[0].call.ball == first[1].call.ball && first[0].call.pocket == first[1].call.pocket &&
+                      first[0].heading_deg == first[1].heading_deg && first[0].stroke.speed == first[1].stroke.speed &&
+                      first[0].stroke.height == first[1].stroke.height && first[0].stroke.side == first[1].stroke.side;
+    differ += !same;
+    if (verbose && !same) {
+      std::printf("  position %d:", s);
+      for (const Ball& b : position.balls) std::printf(" %d (%.3f, %.3f)", b.number, b.position.x(), b.position.y());
+      for (int a = 0; a < 2; ++a)
+        std::printf("%s: %d in %d at %.1f m/s height %.2f side %.2f%s", a ? "; with" : "\n    without",
+                    first[a].call.ball, first[a].call.pocket, first[a].stroke.speed, first[a].stroke.height,
+                    first[a].stroke.side, out[a] ? " cleared" : " not cleared");
+      std::printf("\n");
+    }
+  }
+  std::printf("%-16s %8s %10s\n", "", "cleared", "CPU s");
+  std::printf("%-16s %7.1f%% %10.1f\n", "one ply", 100.0 * cleared[0] / positions, seconds[0]);
+  std::printf("%-16s %7.1f%% %10.1f\n", "with look-ahead", 100.0 * cleared[1] / positions, seconds[1]);
+  std::printf("first shots differ in %d of %d positions\n", differ, positions);
+}
+
+/// One position run out `runs` times (each with its own noise seeds), with and without the look-ahead.
+void look_ahead_position(int position_seed, int runs, double noise) {
+  const Scene position = end_position(static_cast<std::uint64_t>(position_seed));
+  int cleared[2] = {};
+  for (int r = 1; r <= runs; ++r)
+    for (int a = 0; a < 2; ++a) {
+      PlannedShot first;
+      cleared[a] += run_out(position, noise, a == 1, static_cast<std::uint64_t>(r) * 104729u, first);
+    }
+  std::printf("position %d, %d runs: one ply cleared %d, with look-ahead %d\n", position_seed, runs, cleared[0],
+              cleared[1]);
+}
+
 void print(const char* what, const Tally& t) {
   const double shots = std::max(1, t.shots);
   std::printf(
@@ -203,6 +300,7 @@ void print(const char* what, const Tally& t) {
 int main(int argc, char** argv) {
   int tables = 4, shots = 12;
   double noise = 1.0;
+  int look_ahead = 0, position = 0;
   RackGame game = RackGame::nine_ball;
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--verbose") == 0) verbose = true;
@@ -213,8 +311,20 @@ int main(int argc, char** argv) {
       shots = std::max(1, std::atoi(argv[i + 1]));
     else if (std::strcmp(argv[i], "--noise") == 0)
       noise = std::atof(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--position") == 0)
+      position = std::atoi(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--look-ahead") == 0)
+      look_ahead = std::max(1, std::atoi(argv[i + 1]));
     else if (std::strcmp(argv[i], "--game") == 0)
       game = std::strcmp(argv[i + 1], "8ball") == 0 ? RackGame::eight_ball : RackGame::nine_ball;
+  }
+  if (look_ahead > 0 && position > 0) {
+    look_ahead_position(position, look_ahead, noise);
+    return 0;
+  }
+  if (look_ahead > 0) {
+    look_ahead_bench(look_ahead, noise);
+    return 0;
   }
   std::printf("player_bench: %s, noise %.2f, %d tables of up to %d shots after the break\n",
               game == RackGame::eight_ball ? "8-ball" : "9-ball", noise, tables, shots);
