@@ -5,6 +5,7 @@
 // of simulations a shot. Seeded games at noise 1 and at noise 5 (the 2011 tournament's "high" level).
 //   game_bench [--games N] [--rules 9ball|8ball] [--noise K]
 //   game_bench --soak N      N games of each rules at noise 1
+//   --first-seed S           seeds S, S + 1, ... instead of 1, 2, ... (to split a soak over processes)
 // Every game is checked as it is played: no physics fault (overlap, escape, NaN; tests/support/shot_checks.h)
 // and no turn the independent judge (tests/support/game_judge.h) disputes; the `fault` column counts both.
 #include <chrono>
@@ -31,6 +32,7 @@ struct Options {
   std::vector<std::string> rules = {"9ball", "8ball"};
   std::vector<double> noise = {1, 5};
   int soak = 0;
+  int first_seed = 1;
 };
 
 Options options(int argc, char** argv) {
@@ -43,6 +45,8 @@ Options options(int argc, char** argv) {
       o.rules = {value};
     else if (flag == "--noise")
       o.noise = {std::atof(value.c_str())};
+    else if (flag == "--first-seed")
+      o.first_seed = std::max(1, std::atoi(value.c_str()));
     else if (flag == "--soak")
       o.soak = std::atoi(value.c_str());
   }
@@ -64,6 +68,10 @@ bool play_one(const std::string& rules, unsigned long seed, double noise, games:
   tally.add(game.record, game.timeline, game.scene);
   const checks::Faults f = checks::find_faults(game.scene, game.timeline);
   faults += static_cast<int>(f.total());
+  if (f.total() > 0)
+    std::printf("  %s seed %lu noise %g: %ld overlaps, %ld escapes, %ld not finite, %ld missed contacts, %ld energy "
+                "gains (deepest %.3g mm)\n",
+                rules.c_str(), seed, noise, f.overlaps, f.escapes, f.nans, f.missed, f.energy_gains, f.deepest * 1e3);
   // The independent judge reads the game as events.json has it.
   Shot shot;
   shot.scene = game.scene;
@@ -79,12 +87,12 @@ bool play_one(const std::string& rules, unsigned long seed, double noise, games:
   return true;
 }
 
-void row(const std::string& rules, double noise, int games) {
+void row(const std::string& rules, double noise, int games, int first_seed) {
   games::Tally t;
   double cpu = 0;
   int faults = 0, failed = 0;
   for (int g = 0; g < games; ++g)
-    if (!play_one(rules, static_cast<unsigned long>(g + 1), noise, t, cpu, faults)) ++failed;
+    if (!play_one(rules, static_cast<unsigned long>(first_seed + g), noise, t, cpu, faults)) ++failed;
   const auto pct = [](int a, int b) { return b > 0 ? 100.0 * a / b : 0.0; };
   std::printf("%-6s %5.1f %5d %6.1f%% %6.1f%% %8.1f%% %6.2f %6.2f %6.2f %7.1f%% %8.0f %9.3f %7.3f %7.2f %5d %5d\n",
               rules.c_str(), noise, t.games, pct(t.break_and_runs, t.games), pct(t.finished, t.games),
@@ -101,7 +109,7 @@ void row(const std::string& rules, double noise, int games) {
 int main(int argc, char** argv) {
   const Options o = options(argc, argv);
   if (o.soak > 0) {
-    for (const std::string& rules : {std::string("9ball"), std::string("8ball")}) row(rules, 1, o.soak);
+    for (const std::string& rules : {std::string("9ball"), std::string("8ball")}) row(rules, 1, o.soak, o.first_seed);
     return 0;
   }
   std::printf(
@@ -110,6 +118,6 @@ int main(int argc, char** argv) {
   std::printf(
       "                                              visit  game   game   wins     shot   shot     plan   game\n");
   for (const std::string& rules : o.rules)
-    for (double noise : o.noise) row(rules, noise, o.games);
+    for (double noise : o.noise) row(rules, noise, o.games, o.first_seed);
   return 0;
 }
