@@ -1,8 +1,8 @@
 #pragma once
-// Writing a camera description into a scene's text from the interactive window: the key that names
-// the moment at a time, the description's line, its place in the camera block, the ball under the
-// cursor, and replacing the scene file safely with a backup for undo. No GL here: all of it is
-// tested directly.
+// Writing a camera description into a scene's text from the interactive window: the camera asked
+// for, its place in the camera block, the ball under the cursor, and replacing the scene file safely
+// with a backup for undo. The moment's name and the description's text are the core's
+// (script/camera_moment.h), as the director's are. No GL here: all of it is tested directly.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,26 +15,14 @@
 namespace bsim {
 
 /// s: a description written within this of an event or pocket drop starts at that moment's key
-/// (`hit 0 5`, `drop 3`, ...); further from every one it starts at `at T`. About a quarter of a
-/// second: a few frames either side of a contact, where a person pausing "on" it usually is.
+/// (`hit 0 5`, `drop 3`, ...); further from every one it starts at `at T` (name_moment()). About a
+/// quarter of a second: a few frames either side of a contact, where a person pausing "on" it usually is.
 inline constexpr double kKeySnap = 0.25;
 
 /// The blend windows (`pre`, `post`) of a description the window writes: the camera glides in over
 /// the last 30% of the time since the description before, and arrives at the framing it was given
 /// exactly at its moment (no blend after it), so the scripted camera then shows what the free camera showed.
 inline constexpr double kWrittenPre = 0.3, kWrittenPost = 0;
-
-/// A moment of the shot named the way a camera key names it.
-struct NamedMoment {
-  std::string key;  ///< "hit 0 5", "second cushion 3", "drop 8", "cue", "at 2.4"
-  double time = 0;  ///< s, the instant the key resolves to
-  int event = -1;   ///< the numbered event it is or falls within; -1 for a pocket drop or `at T`
-};
-
-/// The key of the event or pocket drop nearest `t` if one is within kKeySnap, else `at T` (T to the
-/// millisecond, from the start of the shot). Contacts later than the fifth of their kind are named
-/// only when they are the `last`.
-NamedMoment name_moment(const Timeline& timeline, double t);
 
 /// What the window asks for at a moment.
 struct CameraPlacement {
@@ -44,9 +32,6 @@ struct CameraPlacement {
   Vec3 look_at{0, 0, 0};  ///< m, the free camera's look point (hover)
   int ball = -1;          ///< Kind::ball: the ball to look at or follow
 };
-
-/// "event hit 0 5 0.3 0 hover -1.2 0.4 1.1 0 0 0": one description, numbers to the millimetre.
-std::string format_description(const std::string& key, double pre, double post, const CameraShot& camera);
 
 /// The outcome of placing a camera in a scene's text.
 struct CameraEdit {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <imgui.h>
 
 #include "ball_model.h"
+#include "camera_key_text.h"
 
 namespace bsim {
 
@@ -33,22 +35,10 @@ std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& pa
 }
 
 std::string camera_key_label(const std::string& key, const std::vector<int>& painted) {
-  // The tokens after hit, cushion, jaw or drop (or its older spelling pocket) are ball indices; the rest stays
-  // as written.
-  std::string out;
-  bool balls = false;
-  std::size_t start = 0;
-  while (start < key.size()) {
-    std::size_t end = key.find(' ', start);
-    if (end == std::string::npos) end = key.size();
-    const std::string word = key.substr(start, end - start);
-    if (!out.empty()) out += ' ';
-    const bool number = !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
-    out += balls && number && word.size() < 6 ? ball_index_text(std::stoi(word), painted) : word;
-    if (word == "hit" || word == "cushion" || word == "jaw" || word == "drop" || word == "pocket") balls = true;
-    start = end + 1;
-  }
-  return out;
+  int event = 0;
+  const std::optional<CameraKey> parsed = parse_camera_key(key, &event);
+  if (!parsed) return key;
+  return camera_key_text(*parsed, event, [&](int ball) { return ball_index_text(ball, painted); });
 }
 
 std::string event_label(const Event& event, const std::vector<int>& painted) {

@@ -20,7 +20,8 @@ std::string ball_index_text(int index, const std::vector<int>& painted);
 std::string camera_shot_label(const CameraShot& shot, const std::vector<int>& painted = {});
 /// "ball 0 – ball 5 (8)", "ball 3 – rail 2", "cue → ball 0", "balls 0, 1, 2 (group)", "start", "end".
 std::string event_label(const Event& event, const std::vector<int>& painted = {});
-/// A camera key as written with painted numbers beside its ball indices: "hit 0 5 (8)", "drop 11 (12)".
+/// A camera key (camera_key_text()'s form) written again with painted numbers beside its ball indices:
+/// "hit 0 5 (8)", "drop 11 (12)"; text that is no key stays as it is.
 std::string camera_key_label(const std::string& key, const std::vector<int>& painted);
 std::string cue_phase_label(CuePhase phase);
 

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "camera_moment.h"
 #include "labels.h"
 #include "shot.h"
 #include "table.h"
@@ -110,14 +111,13 @@ PathPieces path_pieces(const std::vector<OverlayPaths::Point>& path, double begi
 
 // The stretch of the timeline that belongs to the shot in play at t: from its start to the next
 // shot's (the whole timeline for a scene of one shot).
-void shot_stretch(const Timeline& timeline, double t, double& begin, double& end) {
-  const std::vector<ShotSpan>& shots = timeline.shots();
+void stretch_at(const Timeline& timeline, double t, double& begin, double& end) {
   begin = -INFINITY;
   end = INFINITY;
-  if (shots.size() < 2) return;
-  const auto k = static_cast<std::size_t>(timeline.shot_at(t));
-  if (k > 0) begin = shots[k].start;
-  if (k + 1 < shots.size()) end = shots[k + 1].start;
+  if (timeline.shot_count() < 2) return;
+  const ShotStretch stretch = shot_stretch(timeline, timeline.shot_at(t));
+  if (stretch.shot > 0) begin = stretch.start;
+  if (!stretch.last) end = stretch.end;
 }
 
 // On the cloth a path lies on the bed; in a pocket it follows the drop.
@@ -165,7 +165,7 @@ void draw_ball_paths(ImDrawList& list, const OverlayFrame& f) {
   // In a scene of several shots the shot in play is drawn as a shot of its own is; the paths of the
   // others are faint, so a break's fan of lines does not bury the shot that follows it.
   double begin = 0, end = 0;
-  shot_stretch(timeline, f.time, begin, end);
+  stretch_at(timeline, f.time, begin, end);
   for (int i = 0; i < timeline.ball_count() && i < static_cast<int>(paths.balls.size()); ++i) {
     const int number = f.shot.scene.balls[static_cast<std::size_t>(i)].number;
     const BallState now = timeline.state(i, f.time);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "camera_key.h"
+#include "camera_moment.h"
 #include "labels.h"
 #include "shot.h"
 

@@ -114,13 +114,17 @@ std::string camera_key_list() {
 }
 
 std::string camera_key_text(const CameraKey& key, int event) {
+  return camera_key_text(key, event, [](int ball) { return std::to_string(ball); });
+}
+
+std::string camera_key_text(const CameraKey& key, int event, const std::function<std::string(int)>& ball) {
   if (key.kind == CameraKeyKind::event) return std::to_string(event);
   std::string text = key.shot >= 0 ? std::string(kShotWord) + " " + std::to_string(key.shot + 1) + " " : "";
   const std::string_view ordinal = takes_ordinal(key.kind) ? camera_key_ordinal_word(key.ordinal) : "";
   if (!ordinal.empty()) text.append(ordinal).append(" ");
   text.append(camera_key_word(key.kind));
   const int balls[] = {key.a, key.b};
-  for (int k = 0; k < ball_operands(key.kind); ++k) text += " " + std::to_string(balls[k]);
+  for (int k = 0; k < ball_operands(key.kind); ++k) text += " " + ball(balls[k]);
   if (takes_seconds(key.kind)) text += " " + format_number(key.seconds);
   return text;
 }

@@ -2,8 +2,9 @@
 // Camera keys as scene text: the words a key is written with, the shape of each kind (an ordinal
 // before it, the balls or seconds after it), writing a key (format) and reading one back (parse).
 // The scene parser reads keys with these words and shapes; the director and the preview write
-// theirs with camera_key_text(). Where a key falls in a simulated shot is the script's
-// (script/camera_key.h).
+// theirs with camera_key_text(). Where a key falls in a simulated shot, and which key names a
+// moment, is the script's (script/camera_moment.h).
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,6 +50,8 @@ std::string camera_key_list();
 /// seconds as the shortest text that reads back exactly), "shot 2 cue" (a key with a shot, its number
 /// from 1); an event number (kind event) as `event` ("7", "65535").
 std::string camera_key_text(const CameraKey& key, int event = 0);
+/// The same with each ball index written by `ball` (a label's "5 (8)", the painted number beside it).
+std::string camera_key_text(const CameraKey& key, int event, const std::function<std::string(int)>& ball);
 
 /// A key read back from camera_key_text()'s form (words separated by single spaces, numbers as
 /// decimal integers and C numbers). An event number gives kind event with the number in `*event`.

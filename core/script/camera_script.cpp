@@ -7,7 +7,7 @@
 #include <string>
 
 #include "camera_interpolation.h"
-#include "camera_key.h"
+#include "camera_moment.h"
 #include "table.h"
 
 namespace bsim {

@@ -3,12 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "camera_moment.h"
 #include "camera_view.h"
 #include "diagnostics.h"
 
 namespace bsim::directing {
 
 namespace {
+
+/// Hz at which a candidate script is sampled (speed, clearance, what is in the picture).
+constexpr double kGridHz = 120.0;
+/// m/s below which a ball counts as at rest.
+constexpr double kMovingSpeed = 1e-3;
 
 /// What a candidate aims for: the share of its moving time a pocketed ball, or the cue ball, is in
 /// the picture (above the checks' 80 % and 60 %).
@@ -22,6 +28,44 @@ bool over(const TableRect& r, const Vec3& p) {
 }
 
 }  // namespace
+
+ShotSamples sample_shot(const Timeline& timeline, double radius) {
+  ShotSamples out;
+  const double duration = timeline.duration();
+  const int balls = timeline.ball_count();
+  const auto shots = static_cast<std::size_t>(std::max(1, timeline.shot_count()));
+  out.drop_time.assign(shots,
+                       std::vector<double>(static_cast<std::size_t>(balls), std::numeric_limits<double>::infinity()));
+  for (const PocketDrop& d : timeline.pocket_drops()) {
+    double& first = out.drop_time[static_cast<std::size_t>(timeline.shot_at(d.time))][static_cast<std::size_t>(d.ball)];
+    first = std::min(first, d.time);
+  }
+  out.peak_speed.assign(shots, std::vector<double>(static_cast<std::size_t>(balls), 0.0));
+  for (int i = 0; i / kGridHz <= duration + 1e-9; ++i) {
+    const double t = std::min(i / kGridHz, duration);
+    const auto shot = static_cast<std::size_t>(timeline.shot_at(t));
+    const std::vector<double>& drop_time = out.drop_time[shot];
+    std::vector<double>& peak_speed = out.peak_speed[shot];
+    out.times.push_back(t);
+    std::vector<Vec3> where;
+    std::vector<char> shown, moving;
+    for (int b = 0; b < balls; ++b) {
+      const auto ball = static_cast<std::size_t>(b);
+      const BallState s = timeline.motion_state(b, t);
+      where.push_back(s.position);
+      shown.push_back(s.position.z() >= -radius && s.motion != Motion::pocketed);
+      const double speed = Vec3(s.velocity.x(), s.velocity.y(), 0).norm();
+      const bool goes =
+          speed > kMovingSpeed && s.motion != Motion::falling && s.motion != Motion::pocketed && t < drop_time[ball];
+      moving.push_back(goes);
+      if (goes) peak_speed[ball] = std::max(peak_speed[ball], speed);
+    }
+    out.where.push_back(std::move(where));
+    out.shown.push_back(std::move(shown));
+    out.moving.push_back(std::move(moving));
+  }
+  return out;
+}
 
 bool clear_of_room(const TableLayout& layout, const Vec3& p) {
   if (p.z() < layout.rail_top + 0.03) return false;
@@ -56,7 +100,7 @@ Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& sa
       layout_(table_layout(scene)),
       radius_(scene.physics.ball_radius) {
   const auto k = static_cast<std::size_t>(shot);
-  from_ = k < timeline.shots().size() ? timeline.shots()[k].start : 0.0;
+  from_ = shot_stretch(timeline, shot).start;
   const int struck = scene.cues[std::min(k, scene.cues.size() - 1)].target;
   for (int b = 0; b < timeline.ball_count(); ++b) {
     const bool pocketed = std::isfinite(samples.drop_time[k][static_cast<std::size_t>(b)]);

@@ -1,8 +1,8 @@
 #pragma once
 // The automatic director's rules and its judge: where its camera may stand, which side of a line of
 // action it keeps, and how a candidate script is filmed with the real camera (CameraScript::pose)
-// over the simulated shot and scored against those rules. The beats (director.cpp) propose
-// candidates in order; the judge picks among them, so the same candidates always give the same pick.
+// over the simulated shot and scored against those rules. The candidates (director_candidates.h)
+// come in order; the judge picks among them, so the same candidates always give the same pick.
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -35,6 +35,9 @@ struct ShotSamples {
   /// horizontally. A ball that drops travels no more in that shot, though a later one may put it back.
   std::vector<std::vector<double>> drop_time, peak_speed;
 };
+
+/// The simulated shot sampled at 120 Hz, for the judge and the beats; `radius`: the balls' (m).
+ShotSamples sample_shot(const Timeline& timeline, double radius);
 
 /// Where the director never puts its camera, whatever the balls do: low over the table, in the lamp,
 /// out of the room.

@@ -12,7 +12,9 @@
 
 #include "builtin_scene.h"
 #include "camera_edit.h"
-#include "camera_key.h"
+#include "camera_key_text.h"
+#include "camera_moment.h"
+#include "director.h"
 #include "files.h"
 #include "fixtures.h"
 #include "labels.h"
@@ -85,26 +87,27 @@ TEST_SUITE("camera edit") {
       for (const PocketDrop& d : timeline.pocket_drops()) instants.push_back(d.time);
       bool ordinal_seen = false;
       for (double t : instants) {
-        const NamedMoment m = name_moment(timeline, t);
+        const NamedMoment m = name_moment(timeline, t, kKeySnap);
         CAPTURE(t);
-        CAPTURE(m.key);
+        CAPTURE(m.text());
         CHECK(m.time == t);
-        CHECK(m.key.rfind("at ", 0) != 0);
-        ordinal_seen = ordinal_seen || m.key.rfind("second ", 0) == 0 || m.key.rfind("third ", 0) == 0;
+        CHECK(m.text().rfind("at ", 0) != 0);
+        ordinal_seen = ordinal_seen || m.text().rfind("second ", 0) == 0 || m.text().rfind("third ", 0) == 0;
         // The key in a scene resolves to the same instant.
-        const std::string text = balls + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+        const std::string text = balls + "camera\nevent " + m.text() + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
         const std::vector<double> times = description_times(text);
         REQUIRE(times.size() == 1);
         CHECK(times[0] == t);
       }
       CHECK(ordinal_seen == (balls == kBouncing));
-      CHECK(name_moment(timeline, 0).key == "start");
-      CHECK(name_moment(timeline, first_time(timeline, EventType::cue)).key == "cue");
-      CHECK(name_moment(timeline, timeline.duration()).key == "end");
+      CHECK(name_moment(timeline, 0, kKeySnap).text() == "start");
+      CHECK(name_moment(timeline, first_time(timeline, EventType::cue), kKeySnap).text() == "cue");
+      CHECK(name_moment(timeline, timeline.duration(), kKeySnap).text() == "end");
     }
     const auto two = shot_of(std::string(test::fixtures::kTwoBalls) + test::fixtures::kHoverCamera);
-    CHECK(name_moment(two->timeline, first_time(two->timeline, EventType::ball_ball) + 0.8 * kKeySnap).key ==
-          "hit 0 1");
+    CHECK(
+        name_moment(two->timeline, first_time(two->timeline, EventType::ball_ball) + 0.8 * kKeySnap, kKeySnap).text() ==
+        "hit 0 1");
   }
 
   TEST_CASE("in a scene of several shots every moment is named within its shot, and resolves back to it") {
@@ -120,26 +123,26 @@ TEST_SUITE("camera edit") {
     for (const PocketDrop& d : timeline.pocket_drops()) instants.push_back(d.time);
     for (const ShotSpan& span : timeline.shots()) instants.push_back(span.start);
     for (double t : instants) {
-      const NamedMoment m = name_moment(timeline, t);
+      const NamedMoment m = name_moment(timeline, t, kKeySnap);
       CAPTURE(t);
-      CAPTURE(m.key);
+      CAPTURE(m.text());
       CHECK(m.time == t);
-      CHECK(m.key.rfind("shot " + std::to_string(timeline.shot_at(t) + 1) + " ", 0) == 0);
-      CHECK(m.key.find(" at ") == std::string::npos);
-      const std::string text = balls + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+      CHECK(m.text().rfind("shot " + std::to_string(timeline.shot_at(t) + 1) + " ", 0) == 0);
+      CHECK(m.text().find(" at ") == std::string::npos);
+      const std::string text = balls + "camera\nevent " + m.text() + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
       CHECK(description_times(text) == std::vector<double>{t});
     }
     // The oracles: the timeline's own shot spans.
-    CHECK(name_moment(timeline, timeline.shots()[1].cue).key == "shot 2 cue");
-    CHECK(name_moment(timeline, timeline.shots()[2].start).key == "shot 3 start");
-    CHECK(name_moment(timeline, timeline.duration()).key == "shot 3 end");
+    CHECK(name_moment(timeline, timeline.shots()[1].cue, kKeySnap).text() == "shot 2 cue");
+    CHECK(name_moment(timeline, timeline.shots()[2].start, kKeySnap).text() == "shot 3 start");
+    CHECK(name_moment(timeline, timeline.duration(), kKeySnap).text() == "shot 3 end");
     // Between events, `shot K at T` from the start of the shot in play.
     const double t = timeline.shots()[1].start + kKeySnap + 0.3123456;
     REQUIRE(t < timeline.shots()[1].cue - kKeySnap);
-    const NamedMoment m = name_moment(timeline, t);
-    CHECK(m.key == "shot 2 at 0.562");
+    const NamedMoment m = name_moment(timeline, t, kKeySnap);
+    CHECK(m.text() == "shot 2 at 0.562");
     CHECK(t - m.time < 1.001e-3);
-    const std::string text = balls + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+    const std::string text = balls + "camera\nevent " + m.text() + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
     CHECK(description_times(text) == std::vector<double>{m.time});
   }
 
@@ -148,13 +151,13 @@ TEST_SUITE("camera edit") {
     const std::optional<double> quiet = quiet_time(shot->timeline, kKeySnap + 0.05);
     REQUIRE(quiet);
     const double t = *quiet + 0.0123456;
-    const NamedMoment m = name_moment(shot->timeline, t);
-    CHECK(m.key.rfind("at ", 0) == 0);
+    const NamedMoment m = name_moment(shot->timeline, t, kKeySnap);
+    CHECK(m.text().rfind("at ", 0) == 0);
     CHECK(m.event == -1);
     CHECK(t - m.time < 1.001e-3);
     CHECK(m.time <= t);
     const std::string text =
-        std::string(test::fixtures::kTwoBalls) + "camera\nevent " + m.key + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
+        std::string(test::fixtures::kTwoBalls) + "camera\nevent " + m.text() + " 0 0 hover 0 -3 2 0 0 0\nendcamera\n";
     CHECK(description_times(text) == std::vector<double>{m.time});
   }
 
@@ -162,9 +165,9 @@ TEST_SUITE("camera edit") {
     const std::string text = std::string(test::fixtures::kTwoBalls) + "# no camera yet";  // no final newline
     const CameraEdit edit = place_camera(text, "s.scn", 0, hover_at({0, -2.5, 1.5}, {0.1, 0, 0}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.text == text + "\ncamera\nevent start 0.3 0 hover 0 -2.5 1.5 0.1 0 0\nendcamera\n");
+    CHECK(edit.text == text + "\ncamera\nevent start 0.3 0 hover 0 -2.5 1.5  0.1 0 0\nendcamera\n");
     CHECK(edit.line == 6);
-    CHECK(edit.description == "event start 0.3 0 hover 0 -2.5 1.5 0.1 0 0");
+    CHECK(edit.description == "event start 0.3 0 hover 0 -2.5 1.5  0.1 0 0");
     CHECK_FALSE(edit.replaced);
     CHECK(load_shot(edit.text, "s").scripted());
   }
@@ -174,11 +177,11 @@ TEST_SUITE("camera edit") {
     const CameraPlacement p = hover_at({1, -2, 1.25}, {0, 0, 0});
     const CameraEdit lines = place_camera(balls + "camera\n  endcamera  # the end\n", "s.scn", 0, p);
     REQUIRE(lines.error.empty());
-    CHECK(lines.text == balls + "camera\n  event start 0.3 0 hover 1 -2 1.25 0 0 0\n  endcamera  # the end\n");
+    CHECK(lines.text == balls + "camera\n  event start 0.3 0 hover 1 -2 1.25  0 0 0\n  endcamera  # the end\n");
     CHECK(lines.line == 5);
     const CameraEdit one = place_camera(balls + "camera endcamera\n", "s.scn", 0, p);
     REQUIRE(one.error.empty());
-    CHECK(one.text == balls + "camera\nevent start 0.3 0 hover 1 -2 1.25 0 0 0\nendcamera\n");
+    CHECK(one.text == balls + "camera\nevent start 0.3 0 hover 1 -2 1.25  0 0 0\nendcamera\n");
     CHECK(load_shot(one.text, "s").scripted());
   }
 
@@ -187,8 +190,8 @@ TEST_SUITE("camera edit") {
     for (std::size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 2)) text.insert(i, "\r");
     const CameraEdit edit = place_camera(text, "s.scn", 99, hover_at({1, -2, 1}, {0, 0, 0}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.text.find("\r\nevent end 0.3 0 hover 1 -2 1 0 0 0\r\nendcamera\r\n") != std::string::npos);
-    CHECK(edit.description == "event end 0.3 0 hover 1 -2 1 0 0 0");
+    CHECK(edit.text.find("\r\nevent end 0.3 0 hover 1 -2 1  0 0 0\r\nendcamera\r\n") != std::string::npos);
+    CHECK(edit.description == "event end 0.3 0 hover 1 -2 1  0 0 0");
     const std::string without = std::string(test::fixtures::kTwoBalls).insert(7, "\r");
     CHECK(place_camera(without, "s.scn", 0, hover_at({1, -2, 1}, {0, 0, 0})).text.find("camera\r\nevent start") !=
           std::string::npos);
@@ -203,7 +206,7 @@ TEST_SUITE("camera edit") {
     const double hit = first_time(shot->timeline, EventType::ball_ball);
     const CameraEdit edit = place_camera(text, "s.scn", hit, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
+    CHECK(edit.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5  0.25 0 0.03\n" + last);
     CHECK(edit.line == 8);
     const std::vector<double> times = description_times(edit.text);
     REQUIRE(times.size() == 3);
@@ -212,11 +215,11 @@ TEST_SUITE("camera edit") {
     // After every description: before `endcamera`, indented like the last one.
     const std::string two = head + first + "endcamera\n";
     const CameraEdit after = place_camera(two, "s.scn", hit, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
-    CHECK(after.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\nendcamera\n");
+    CHECK(after.text == head + first + "\tevent hit 0 1 0.3 0 hover 0.5 -1 0.5  0.25 0 0.03\nendcamera\n");
     // Before every description.
     const std::string late = head + last;
     const CameraEdit early = place_camera(late, "s.scn", 0, hover_at({0.5, -1, 0.5}, {0.25, 0, 0.03}));
-    CHECK(early.text == head + "\tevent start 0.3 0 hover 0.5 -1 0.5 0.25 0 0.03\n" + last);
+    CHECK(early.text == head + "\tevent start 0.3 0 hover 0.5 -1 0.5  0.25 0 0.03\n" + last);
   }
 
   TEST_CASE("a later contact is written with its ordinal") {
@@ -230,9 +233,9 @@ TEST_SUITE("camera edit") {
     const std::string text = kBouncing + test::fixtures::kHoverCamera;
     const CameraEdit edit = place_camera(text, "s.scn", second->second, hover_at({1, 1, 1}, {0, 0, 0}));
     REQUIRE(edit.error.empty());
-    const NamedMoment m = name_moment(shot->timeline, second->second);
-    CHECK(edit.description.rfind("event " + m.key + " 0.3 0 hover 1 1 1 0 0 0", 0) == 0);
-    CHECK(m.key == "second cushion " + std::to_string(second->first));
+    const NamedMoment m = name_moment(shot->timeline, second->second, kKeySnap);
+    CHECK(edit.description.rfind("event " + m.text() + " 0.3 0 hover 1 1 1  0 0 0", 0) == 0);
+    CHECK(m.text() == "second cushion " + std::to_string(second->first));
     CHECK(description_times(edit.text).back() == second->second);
   }
 
@@ -244,8 +247,8 @@ TEST_SUITE("camera edit") {
     const CameraEdit edit = place_camera(text, "s.scn", hit + 0.01, hover_at({0.5, -1, 0.5}, {0, 0, 0}));
     REQUIRE(edit.error.empty());
     CHECK(edit.replaced);
-    CHECK(edit.text == head + "event hit  1 0 0.4 0.2 hover 0.5 -1 0.5 0 0 0   # the hit\nendcamera\n");
-    CHECK(edit.description == "event hit  1 0 0.4 0.2 hover 0.5 -1 0.5 0 0 0");
+    CHECK(edit.text == head + "event hit  1 0 0.4 0.2 hover 0.5 -1 0.5  0 0 0   # the hit\nendcamera\n");
+    CHECK(edit.description == "event hit  1 0 0.4 0.2 hover 0.5 -1 0.5  0 0 0");
     CHECK(edit.line == 6);
   }
 
@@ -259,11 +262,11 @@ TEST_SUITE("camera edit") {
     p.eye = Vec3(0.6, -0.9, 0.7);
     const CameraEdit look = place_camera(text, "s.scn", hit, p);
     REQUIRE(look.error.empty());
-    CHECK(look.description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7 1");
+    CHECK(look.description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7  1");
     const CameraEdit follow = place_camera(look.text, "s.scn", hit, p);
     REQUIRE(follow.error.empty());
     CHECK(follow.replaced);
-    CHECK(follow.description.rfind("event hit 0 1 0.3 0 follow 1 ", 0) == 0);
+    CHECK(follow.description.rfind("event hit 0 1 0.3 0 follow 1  ", 0) == 0);
     // The follow camera stands where the free camera stood, at the moment it was placed (to the mm).
     const auto followed = shot_of(follow.text);
     const CameraPose pose = followed->camera->shot_pose(1, hit);
@@ -272,7 +275,7 @@ TEST_SUITE("camera edit") {
     CHECK(back.text == look.text);
     // Another ball: a look at it in place of the follow.
     p.ball = 0;
-    CHECK(place_camera(follow.text, "s.scn", hit, p).description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7 0");
+    CHECK(place_camera(follow.text, "s.scn", hit, p).description == "event hit 0 1 0.3 0 look 0.6 -0.9 0.7  0");
   }
 
   TEST_CASE("a scene file with errors is not edited") {
@@ -360,9 +363,11 @@ TEST_SUITE("camera edit") {
     CHECK(camera_key_label("fourth cushion 2", painted) == "fourth cushion 2 (9)");
     CHECK(camera_key_label("drop 3", painted) == "drop 3 (12)");
     CHECK(camera_key_label("last jaw 3", painted) == "last jaw 3 (12)");
-    CHECK(camera_key_label("pocket 3", painted) == "pocket 3 (12)");  // the older spelling
+    CHECK(camera_key_label("pocket 3", painted) == "drop 3 (12)");  // the older spelling, written as keys are
     CHECK(camera_key_label("at 3", painted) == "at 3");
     CHECK(camera_key_label("cue", painted) == "cue");
+    CHECK(camera_key_label("shot 2 second hit 3 1", painted) == "shot 2 second hit 3 (12) 1");
+    CHECK(camera_key_label("7", painted) == "7");
 
     // The built-in break: its rack gives every ball its painted number as its index.
     ShotResult r = load_shot(builtin_scene_text(), "break");
@@ -382,12 +387,66 @@ TEST_SUITE("camera edit") {
     // Every drop is a moment a camera key names, and its pocket is named in words.
     REQUIRE_FALSE(data.drops.empty());
     for (const TimelineDrop& d : data.drops) {
-      CHECK(name_moment(r.shot->timeline, d.time).key == "drop " + std::to_string(d.ball));
+      CHECK(name_moment(r.shot->timeline, d.time, kKeySnap).text() == "drop " + std::to_string(d.ball));
       CHECK(d.pocket_name == pocket_name(standard_pockets(), d.pocket));
     }
     CHECK(data.drops[0].pocket_name.find(" (pocket " + std::to_string(data.drops[0].pocket) + ")") !=
           std::string::npos);
     CHECK(data.drops[0].pocket_name.rfind("the ", 0) == 0);
+  }
+}
+
+TEST_SUITE("camera edit: the window writes as the director does") {
+  /// The description line of `text` (camera_script_text()'s) that starts with `head`, without its
+  /// comment, from its mode word on ("hover 1 2 3  0 0 0").
+  std::string director_mode_part(const std::string& text, const std::string& head, const std::string& mode) {
+    const std::size_t line = text.find("\n" + head);
+    REQUIRE(line != std::string::npos);
+    const std::size_t comment = text.find("   # ", line);
+    const std::size_t word = text.find(" " + mode + " ", line);
+    REQUIRE(word < comment);
+    return text.substr(word + 1, comment - word - 1);
+  }
+
+  TEST_CASE("a camera the director placed, placed again from the window, is written to the same text") {
+    for (const char* file : {"tests/scene/three_shots.scn", "scenes/bank.scn"}) {
+      CAPTURE(file);
+      std::string text = test::require_file(test::source_path(file));
+      if (const std::size_t block = text.find("\ncamera\n"); block != std::string::npos) text.erase(block + 1);
+      const auto shot = shot_of(text);
+      const DirectedCamera script = direct_camera(shot->scene, shot->timeline);
+      const std::string written = camera_script_text(script, "s");
+      int compared = 0;
+      for (const CameraShot& d : script.shots) {
+        if (d.mode == CameraMode::follow) continue;  // the window's follow comes from a look, in the ball's frame
+        const double t = resolve_camera_key(d, shot->scene, shot->timeline).instant.value().time;
+        CameraPlacement p = hover_at(d.location, d.target);
+        if (d.mode == CameraMode::look) {
+          p.kind = CameraPlacement::Kind::ball;
+          p.ball = d.ball;
+        }
+        const CameraEdit edit = place_camera(text, "s.scn", t, p);
+        REQUIRE(edit.error.empty());
+        const std::string mode = d.mode == CameraMode::look ? "look" : "hover";
+        const std::string head = "event " + camera_key_text(d.key, d.event) + " ";
+        CAPTURE(edit.description);
+        // The same camera, in the same words and numbers, as the director's line has it.
+        const std::size_t word = edit.description.find(" " + mode + " ");
+        REQUIRE(word != std::string::npos);
+        CHECK(edit.description.substr(word + 1) == director_mode_part(written, head, mode));
+        CHECK(edit.description.rfind("event " + name_moment(shot->timeline, t, kKeySnap).text() + " 0.3 0 ", 0) == 0);
+        // And it reads back to that camera.
+        const auto placed = shot_of(edit.text);
+        REQUIRE(placed->scene.camera.size() == 1);
+        const CameraShot& read = placed->scene.camera[0];
+        CHECK(read.mode == d.mode);
+        CHECK(read.location == d.location);
+        if (d.mode == CameraMode::hover) CHECK(read.target == d.target);
+        if (d.mode == CameraMode::look) CHECK(read.ball == d.ball);
+        ++compared;
+      }
+      CHECK(compared >= 2);
+    }
   }
 }
 
@@ -406,9 +465,9 @@ TEST_SUITE("camera edit: a pocket's jaws") {
     for (const Event& e : shot->timeline.events()) {
       if (e.type != EventType::ball_jaw) continue;
       REQUIRE(k < 5);
-      const NamedMoment m = name_moment(shot->timeline, e.time);
+      const NamedMoment m = name_moment(shot->timeline, e.time, kKeySnap);
       CAPTURE(e.time);
-      CHECK(m.key == expected[k]);
+      CHECK(m.text() == expected[k]);
       CHECK(m.time == e.time);
       CHECK(m.event == e.index);
       ++k;
@@ -417,15 +476,16 @@ TEST_SUITE("camera edit: a pocket's jaws") {
     // Pausing on the third knock and placing a camera writes that key; the file reads back to that moment.
     double third = 0;
     for (const Event& e : shot->timeline.events())
-      if (e.type == EventType::ball_jaw && name_moment(shot->timeline, e.time).key == "third jaw 1") third = e.time;
+      if (e.type == EventType::ball_jaw && name_moment(shot->timeline, e.time, kKeySnap).text() == "third jaw 1")
+        third = e.time;
     const std::string text = kRattle + test::fixtures::kHoverCamera;
     const CameraEdit edit = place_camera(text, "rattle.scn", third + 0.01, hover_at({1, 1, 1}, {1.2, 0.6, 0}));
     REQUIRE(edit.error.empty());
-    CHECK(edit.description.rfind("event third jaw 1 0.3 0 hover 1 1 1 1.2 0.6 0", 0) == 0);
+    CHECK(edit.description.rfind("event third jaw 1 0.3 0 hover 1 1 1  1.2 0.6 0", 0) == 0);
     CHECK(description_times(edit.text).back() == third);
     // The rails keep `cushion`: the 1's one cushion contact, after the rattle.
     for (const Event& e : shot->timeline.events())
       if (e.type == EventType::ball_rail && e.balls[0] == 1)
-        CHECK(name_moment(shot->timeline, e.time).key == "cushion 1");
+        CHECK(name_moment(shot->timeline, e.time, kKeySnap).text() == "cushion 1");
   }
 }

@@ -142,7 +142,7 @@ TEST_SUITE("preview window") {
     CHECK_FALSE(state.notice_is_error);
     const std::string written = *test::read_file(path);
     CHECK(written.rfind(edited.substr(0, edited.find("camera\n")), 0) == 0);
-    CHECK(written.find("event hit 0 1 0.3 0 hover 0.5 -1.5 0.8 0.25 0 0\n") != std::string::npos);
+    CHECK(written.find("event hit 0 1 0.3 0 hover 0.5 -1.5 0.8  0.25 0 0\n") != std::string::npos);
     CHECK(test::read_file(path + ".bak") == edited);
     REQUIRE(load_into(state));
     const CameraPose pose = state.shot->camera->pose(hit);

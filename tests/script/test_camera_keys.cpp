@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "camera_key.h"
+#include "camera_moment.h"
 #include "files.h"
 #include "fixtures.h"
 #include "play.h"
