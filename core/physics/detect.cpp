@@ -48,6 +48,15 @@ std::optional<double> circle_contact(const Vec3& c, const Vec3& b, const Vec3& a
   return first_contact(f, distance - d, closing, horizon, [d](double x) { return x * x - 2 * d * x; });
 }
 
+/// The top of s (a cushion's s(t) below), when s rises to it above the touching distance within the
+/// horizon; else nullopt.
+std::optional<double> rises_to_top(const Poly& s, double horizon) {
+  if (s.c[2] >= 0) return std::nullopt;  // no top: once rising, s never comes back down
+  const double top = -s.c[1] / (2 * s.c[2]);
+  if (!(top > 0 && top < horizon) || s(top) <= kTouchDistance) return std::nullopt;
+  return top;
+}
+
 void widen(SweptBox& box, const Vec3& p) {
   box.lo = box.lo.cwiseMin(p);
   box.hi = box.hi.cwiseMax(p);
@@ -94,8 +103,19 @@ std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, doub
     const double u = dir.dot(Vec3(ball.at(t).x() - rail.a.x(), ball.at(t).y() - rail.a.y(), 0));
     return u >= 0 && u <= length;
   };
+  // A centre level with the nose line or beyond it but past the line's end (in a cut pocket's mouth, as
+  // after a ball glances off the other jaw's rounding) does not touch this cushion: its s < 0 is no
+  // overlap. Read as one (first_contact's push rules), the contact would wait until s came back down to
+  // that depth, by then on the segment and as deep inside the nose. Such a ball meets the line only by
+  // coming down through s = 0 after rising above it; entering the segment's span while still below
+  // s = 0, it meets the rounding of the jaw point first (table.h, PocketMouth: the nose line ends where
+  // that rounding begins) or the cushion's end (next_ball_point).
+  const std::optional<double> top =
+      s.c[0] <= kTouchDistance && !on_segment(0) ? rises_to_top(s, horizon) : std::nullopt;
   std::optional<double> t;
-  if (s.c[0] <= kTouchDistance && -s.c[1] > kMinClosingSpeed)
+  if (top)
+    t = first_descent(s, *top, horizon);
+  else if (s.c[0] <= kTouchDistance && -s.c[1] > kMinClosingSpeed)
     t = on_segment(0) ? std::optional<double>(0.0) : std::nullopt;
   else
     t = first_contact(s, s.c[0], -s.c[1], horizon, [](double x) { return -x; });

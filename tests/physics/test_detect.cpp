@@ -116,6 +116,25 @@ TEST_SUITE("detect") {
     CHECK_FALSE(next_ball_point(path(clear), rail.b, reach, horizon).has_value());
   }
 
+  TEST_CASE("a ball in a pocket's mouth, below a cushion's nose level past its end, meets the line coming down to it") {
+    // The nose line runs from (0, 0) to (-1, 0), playing side y > 0 (a side pocket's mouth at x > 0). The
+    // ball starts 1 mm below the contact reach but beside the line, past its end; it rises above the reach,
+    // curves back (a sliding ball's swerve) and comes down onto the line. That is a contact at the reach,
+    // not once it is 1 mm deep again (seeded 9-ball game 396, whose break left the 4 inside a side rail).
+    const Rail rail{Vec3(0, 0, kStandardNoseHeight), Vec3(-1, 0, kStandardNoseHeight), {}};
+    const double reach = cushion_reach(kR, kStandardNoseHeight);
+    const Path ball{Vec3(0.05, reach - 1e-3, kR), Vec3(-1.5, 0.1, 0), Vec3(0, -2, 0)};
+    const auto t = next_ball_cushion(ball, rail, reach, 1.0);
+    REQUIRE(t.has_value());
+    // s(t) = -1e-3 + 0.1 t - t^2 comes down through 0 at (0.1 + sqrt(0.006)) / 2.
+    CHECK(*t == doctest::Approx((0.1 + std::sqrt(0.006)) / 2).epsilon(1e-12));
+    CHECK(ball.at(*t).y() == doctest::Approx(reach).epsilon(1e-12));
+    CHECK(ball.at(*t).x() < 0);  // on the line's span
+    // Level with the nose past the end and not coming back above it: no contact with the line.
+    const Path low{Vec3(0.05, reach - 1e-3, kR), Vec3(-1.5, 0.01, 0), Vec3(0, -2, 0)};
+    CHECK_FALSE(next_ball_cushion(low, rail, reach, 1.0).has_value());
+  }
+
   TEST_CASE("pocket entry: when the centre crosses the pocket's circle; a ball already over it drops at once") {
     const Pocket pocket{Vec3(1, 0, 0), 0.06, {}};
     const BallState s = ball(0, 0, 1.5, 0, Vec3(0, 1.5 / kR, 0));

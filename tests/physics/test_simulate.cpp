@@ -151,6 +151,28 @@ TEST_SUITE("simulate") {
     CHECK(jaws[0]->after[0].velocity.y() < jaws[0]->before[0].velocity.y());
   }
 
+  TEST_CASE("a ball glancing off a side pocket's jaw and swerving back meets the next rail at its nose, not inside") {
+    // The 4 of seeded 9-ball game 396's break, where it stood 40 ms before it reached the bottom side
+    // pocket: it glances off the right jaw's rounding 1 mm below the nose level of rail 4 (the left
+    // one), crosses the mouth rising, and its sidespin brings it back down onto rail 4.
+    Ball four = ball(4, 0.1176, -0.5661, -1.43, -1.054);
+    four.spin = Vec3(36.9, -50.0, -5.0);
+    const Scene scene = table_with({four});
+    PlayResult result = play(scene);
+    REQUIRE_FALSE(result.failure);
+    const auto jaws = of_type(result.timeline, EventType::ball_jaw);
+    const auto rails = of_type(result.timeline, EventType::ball_rail);
+    REQUIRE_FALSE(jaws.empty());
+    REQUIRE_FALSE(rails.empty());
+    CHECK(jaws[0]->pocket == 4);
+    CHECK(jaws[0]->before[0].position.y() < -0.635 + cushion_reach(kR, kStandardNoseHeight));
+    CHECK(rails[0]->rail == 4);
+    CHECK(rails[0]->time > jaws[0]->time);
+    const checks::Faults faults = checks::find_faults(scene, result.timeline);
+    CHECK(faults.escapes == 0);
+    CHECK(faults.deepest < checks::kFaultTolerance);
+  }
+
   TEST_CASE("a ball at a cushion's end point beside a bare pocket strikes the end: a ball-rail event there") {
     // A bare drop circle (a scene's own pocket) leaves the rail's end a square corner: rail 1 begins at
     // (0.065, 0.635) on a table of the scene's own cushions.
