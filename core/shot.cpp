@@ -7,6 +7,19 @@
 
 namespace bsim {
 
+FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record) {
+  FilmingNotes notes;
+  notes.opening = true;
+  for (const GameTurn& turn : record.turns) {
+    const auto k = static_cast<std::size_t>(turn.shot);
+    if (k >= scene.cues.size()) continue;
+    if (notes.subjects.size() <= k) notes.subjects.resize(k + 1, -1);
+    const bool foul_without_pot = !turn.verdict.foul.empty() && turn.verdict.pocketed.empty();
+    if (turn.planned.safety || foul_without_pot) notes.subjects[k] = scene.cues[k].target;
+  }
+  return notes;
+}
+
 ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options, CameraChoice camera) {
   ShotResult result;
   ParseResult parsed = parse_scene(text, name, options);
@@ -41,8 +54,10 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
     result.diagnostics.push_back({Severity::error, failure->loc, failure->message});
     return result;
   }
-  if (camera == CameraChoice::automatic) {
-    shot->directed = direct_camera(shot->scene, shot->timeline);
+  // A game with no camera block of its own is filmed by the director, as a match is televised.
+  if (camera == CameraChoice::automatic || (shot->game && shot->scene.camera.empty())) {
+    shot->directed = direct_camera(shot->scene, shot->timeline, shot->game ? game_filming_notes(shot->scene, *shot->game)
+                                                                           : FilmingNotes{});
     shot->scene.camera = shot->directed->shots;
   }
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);

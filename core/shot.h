@@ -51,6 +51,11 @@ struct ShotResult {
 /// automatic director's, written from the simulated shot in place of the scene's (`--camera auto`).
 enum class CameraChoice { scene, automatic };
 
+/// What the rules tell the director of a game (`scene` its explicit scene): it opens on the table, and
+/// a safety's or a foul's point (when no ball was made) is the cue ball's path: where it hides, what it
+/// met first, where it stopped.
+FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record);
+
 /// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics. With
 /// CameraChoice::automatic the scene's camera script is replaced by direct_camera()'s (its own is
 /// parsed but never checked against the shot).

@@ -72,6 +72,11 @@ std::string ball_name(const Scene& scene, int ball) {
          std::to_string(ball) + ")";
 }
 
+/// The share of the picture's width and height the opening keeps round the cloth, and how far back
+/// it may stand for that (m from the table's middle).
+constexpr double kOpeningMargin = 0.05;
+constexpr double kOpeningFarthest = 5.5;
+
 /// The keys of a stroke's beats after the first (which is keyed at the stroke's begin).
 struct Plan {
   int subject = -1;                 ///< the ball that matters
@@ -136,15 +141,16 @@ int ball_that_matters(const Timeline& timeline, const ShotSamples& samples, int 
 
 class Director {
  public:
-  Director(const Scene& scene, const Timeline& timeline)
+  Director(const Scene& scene, const Timeline& timeline, const FilmingNotes& notes)
       : scene_(scene),
         timeline_(timeline),
+        notes_(notes),
         layout_(table_layout(scene)),
         radius_(scene.physics.ball_radius),
         samples_(sample_shot(timeline, radius_)) {
     for (int k = 0; k < std::max(1, timeline.shot_count()); ++k) {
       const int cue_ball = scene.cues[std::min(static_cast<std::size_t>(k), scene.cues.size() - 1)].target;
-      judges_.emplace_back(scene, timeline, samples_, k, ball_that_matters(timeline, samples_, k, cue_ball));
+      judges_.emplace_back(scene, timeline, samples_, k, subject_of(k, cue_ball));
     }
   }
 
@@ -177,6 +183,20 @@ class Director {
     if (pocket < 0) return "";
     return (knocks > 1 ? " rattling in the jaws of " : " off a jaw of ") + pocket_name(scene_.pockets, pocket);
   }
+  /// The ball that matters in shot `shot`: the notes' when they name one, else the physics'.
+  int subject_of(int shot, int cue_ball) const {
+    const auto k = static_cast<std::size_t>(shot);
+    if (k < notes_.subjects.size() && notes_.subjects[k] >= 0 && notes_.subjects[k] < timeline_.ball_count())
+      return notes_.subjects[k];
+    return ball_that_matters(timeline_, samples_, shot, cue_ball);
+  }
+  /// Whether the stroke opens on a wide shot of the table (a game's first, with room for it).
+  bool opens(const FilmedStroke& stroke) const {
+    return notes_.opening && stroke.shot == 0 && stroke.cue_time - stroke.begin >= kOpeningSeconds + 0.8;
+  }
+  /// Places the opening wide shot in description `slot` (keyed at the stroke's begin); false when no
+  /// place fits, and the stroke's description (the next) then starts at the begin in its place.
+  bool place_opening(Draft& draft, std::size_t slot, const FilmedStroke& stroke) const;
   /// Shot `shot`'s stroke, over its stretch of the timeline.
   FilmedStroke stroke_of(int shot) const;
   /// The keys of the stroke's beats.
@@ -195,6 +215,7 @@ class Director {
 
   const Scene& scene_;
   const Timeline& timeline_;
+  const FilmingNotes& notes_;
   TableLayout layout_;
   double radius_ = 0;
   ShotSamples samples_;
@@ -229,7 +250,7 @@ FilmedStroke Director::stroke_of(int shot) const {
 
 Plan Director::plan_beats(const FilmedStroke& stroke) const {
   Plan plan;
-  plan.subject = ball_that_matters(timeline_, samples_, stroke.shot, stroke.cue_ball);
+  plan.subject = subject_of(stroke.shot, stroke.cue_ball);
   const std::optional<NamedMoment> going = set_going(plan.subject, stroke);
   if (!going || stroke.end - going->time < kMinDescriptionSeconds) return plan;
   plan.ball = going;
@@ -273,9 +294,17 @@ std::optional<NamedMoment> Director::settle(int subject, double after, const Fil
 void Director::film(const FilmedStroke& stroke, Draft& draft) const {
   const Plan plan = plan_beats(stroke);
   const int subject = plan.subject;
-  // The keys and their lines of action.
+  // The keys and their lines of action. A game opens on the whole table, then cuts to the breaker.
+  const LineOfAction aim_line{stroke.cue_at, stroke.aim};
+  const std::optional<NamedMoment> cut =
+      opens(stroke) ? name_at(timeline_, stroke.shot, kOpeningSeconds) : std::nullopt;
+  const bool opening = cut.has_value();
+  if (opening) draft.add(key_in(stroke, CameraKeyKind::start), stroke.begin, aim_line, stroke.cue_ball);
   const std::size_t first = draft.times.size();
-  draft.add(key_in(stroke, CameraKeyKind::start), stroke.begin, {stroke.cue_at, stroke.aim}, stroke.cue_ball);
+  if (cut)
+    draft.add(cut->key, cut->time, aim_line, stroke.cue_ball);
+  else
+    draft.add(key_in(stroke, CameraKeyKind::start), stroke.begin, aim_line, stroke.cue_ball);
   if (plan.ball) {
     const double after = std::min(plan.ball->time + 1e-6, stroke.end);
     draft.add(plan.ball->key, plan.ball->time, {at(subject, plan.ball->time), heading(subject, after, stroke.aim)},
@@ -293,8 +322,9 @@ void Director::film(const FilmedStroke& stroke, Draft& draft) const {
     draft.add(shot_key(timeline_, stroke.shot + 1, CameraKeyKind::start), stroke.end, draft.camera.lines.back(),
               draft.camera.subjects.back());
   // The beats in turn, each placed with the ones before it fixed.
-  place_stroke(draft, first, stroke);
-  std::size_t next = first + 1;
+  const std::size_t stroke_slot = opening && !place_opening(draft, first - 1, stroke) ? first - 1 : first;
+  place_stroke(draft, stroke_slot, stroke);
+  std::size_t next = stroke_slot + 1;
   if (plan.ball && place_ball(draft, next, stroke)) ++next;
   if (plan.wide) place_wide(draft, next, stroke);
   if (closed) draft.erase(draft.times.size() - 1);
@@ -388,6 +418,42 @@ void Director::place_wide(Draft& draft, std::size_t slot, const FilmedStroke& st
   draft.camera.comments[slot] = "wide: the whole table as the balls settle";
 }
 
+bool Director::place_opening(Draft& draft, std::size_t slot, const FilmedStroke& stroke) const {
+  std::vector<CameraShot>& shots = draft.camera.shots;
+  const double until = draft.next_time(slot, stroke.end);
+  const std::vector<LineOfAction> lines(draft.camera.lines.begin(),
+                                        draft.camera.lines.begin() + static_cast<std::ptrdiff_t>(slot) + 1);
+  std::vector<CameraShot> trial(shots.begin(), shots.begin() + static_cast<std::ptrdiff_t>(slot) + 1);
+  // From behind the breaker's shoulder and high: the whole cloth, the rack at its far end.
+  const Vec3 behind = stroke.cue_at - 3.0 * stroke.aim + Vec3(0, 0, 2.0);
+  const TableRect n = layout_.noses;
+  const Vec3 corners[] = {Vec3(n.x0, n.y0, 0), Vec3(n.x1, n.y0, 0), Vec3(n.x0, n.y1, 0), Vec3(n.x1, n.y1, 0)};
+  for (const CameraShot& option : wide_places(layout_, behind, lines[slot])) {
+    // Drawn back along its line until the cloth has room round it (a wide shot's framing is tight).
+    const Vec3 back = (option.location - option.target).normalized();
+    double distance = (option.location - option.target).norm();
+    trial[slot] = option;
+    for (; distance <= kOpeningFarthest; distance += 0.1) {
+      trial[slot].location = to_millimetre(option.target + distance * back);
+      const CameraView view(CameraPose{trial[slot].location, trial[slot].target, false});
+      if (std::all_of(std::begin(corners), std::end(corners),
+                      [&](const Vec3& p) { return view.contains(p, kOpeningMargin); }))
+        break;
+    }
+    trial[slot].key = shots[slot].key;
+    if (!judge(stroke).evaluate(trial, lines, until).ok) continue;
+    shots[slot] = trial[slot];
+    hold_after(shots, slot);
+    draft.camera.comments[slot] = "opening: the whole table, the rack and the breaker's cue ball";
+    return true;
+  }
+  // Nothing fits: the breaker's view takes the whole approach.
+  draft.erase(slot);
+  draft.camera.shots[slot].key = key_in(stroke, CameraKeyKind::start);
+  draft.times[slot] = stroke.begin;
+  return false;
+}
+
 DirectedCamera Director::run() {
   Draft draft;
   for (int shot = 0; shot < std::max(1, timeline_.shot_count()); ++shot) film(stroke_of(shot), draft);
@@ -400,7 +466,7 @@ double LineOfAction::side(const Vec3& p) const {
   return direction.x() * (p.y() - point.y()) - direction.y() * (p.x() - point.x());
 }
 
-DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline) {
+DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline, const FilmingNotes& notes) {
   if (scene.balls.empty() || timeline.events().empty()) {
     DirectedCamera out;
     CameraShot shot = CameraScript::default_shot(scene);
@@ -413,7 +479,7 @@ DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline) {
     out.subjects.push_back(-1);
     return out;
   }
-  return Director(scene, timeline).run();
+  return Director(scene, timeline, notes).run();
 }
 
 std::string camera_script_text(const DirectedCamera& camera, const std::string& scene_name) {

@@ -38,9 +38,24 @@ struct DirectedCamera {
   std::vector<int> subjects;          ///< per description: the ball it is about
 };
 
-/// Writes the camera script for the simulated shot. Deterministic: the same scene and timeline give
-/// the same script, to the bit.
-DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline);
+/// s, how long a game's opening wide shot holds before the cut to the breaker's view (the rest of the
+/// break's approach, kCueLeadTime less this, stays the shooter's).
+inline constexpr double kOpeningSeconds = 1.2;
+
+/// What the director is told of a shot beyond its physics: a game's rules know what each shot was for.
+struct FilmingNotes {
+  /// Open on a wide shot of the whole table (the rack, the breaker's cue ball) before the first
+  /// stroke, as a broadcast opens a rack.
+  bool opening = false;
+  /// Per shot (by index), the ball (file order) whose fate is the shot's point when the physics alone
+  /// would pick another, or -1: a safety's point is where the cue ball hides, a foul's the ball it
+  /// should have hit first.
+  std::vector<int> subjects;
+};
+
+/// Writes the camera script for the simulated shot. Deterministic: the same scene, timeline and notes
+/// give the same script, to the bit.
+DirectedCamera direct_camera(const Scene& scene, const Timeline& timeline, const FilmingNotes& notes = {});
 
 /// The script as scene text: "camera", one `event KEY PRE POST MODE ...  # comment` line per
 /// description, "endcamera"; it parses back to `camera.shots` exactly.

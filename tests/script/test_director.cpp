@@ -16,6 +16,7 @@
 #include "camera_key_text.h"
 #include "director.h"
 #include "files.h"
+#include "number_format.h"
 #include "play.h"
 #include "random_scenes.h"
 #include "scene_parse.h"
@@ -62,12 +63,14 @@ std::vector<Named> all_scenes() {
 
 /// `scene` played as load_shot plays it (every shot, `pot` aimed; a game by its players, as its explicit
 /// scene): the scene to film and its timeline.
-void play_as_loaded(Scene& scene, Timeline& timeline) {
+/// `notes`, when given, gets what load_shot tells the director of a game.
+void play_as_loaded(Scene& scene, Timeline& timeline, FilmingNotes* notes = nullptr) {
   if (scene.game) {
     GameResult game = play_game(scene);
     REQUIRE(!game.failure);
     scene = std::move(game.scene);
     timeline = std::move(game.timeline);
+    if (notes) *notes = game_filming_notes(scene, game.record);
     return;
   }
   PlayResult played = play(scene);
@@ -80,8 +83,9 @@ void play_as_loaded(Scene& scene, Timeline& timeline) {
 std::unique_ptr<Shot> directed(const Scene& scene, DirectedCamera* script = nullptr) {
   auto shot = std::make_unique<Shot>();
   shot->scene = scene;
-  play_as_loaded(shot->scene, shot->timeline);
-  const DirectedCamera camera = direct_camera(shot->scene, shot->timeline);
+  FilmingNotes notes;
+  play_as_loaded(shot->scene, shot->timeline, &notes);
+  const DirectedCamera camera = direct_camera(shot->scene, shot->timeline, notes);
   shot->scene.camera = camera.shots;
   if (script) *script = camera;
   std::vector<Diagnostic> diagnostics;
@@ -113,7 +117,11 @@ bool in_frame(const Shot& shot, double t, const Vec3& point) {
 /// no blend.
 bool cut_between_shots(const DirectedCamera& script, int k) {
   const CameraShot& s = script.shots[static_cast<std::size_t>(k)];
-  return s.key.kind == CameraKeyKind::start && s.key.shot > 0 && s.pre == 0 && s.post == 0;
+  if (s.pre != 0 || s.post != 0) return false;
+  // A game's opening wide shot cuts to the breaker's view kOpeningSeconds in.
+  const bool after_opening = k == 1 && script.comments[0].starts_with("opening") && s.key.kind == CameraKeyKind::at &&
+                             s.key.seconds == kOpeningSeconds;
+  return (s.key.kind == CameraKeyKind::start && s.key.shot > 0) || after_opening;
 }
 
 /// No description shorter than about a second; within a shot every change a blend, none a cut (a
@@ -161,10 +169,11 @@ void check_path(const Shot& shot) {
   times.erase(std::unique(times.begin(), times.end()), times.end());
   double fastest = 0, nearest = std::numeric_limits<double>::infinity(), lowest_over_table = 10, lowest = 10;
   Vec3 previous = camera.pose(0).location;
-  // The cuts between shots, at the later shots' starts, are not walked.
+  // The cuts (between shots, at the later shots' starts, and a game's opening) are not walked;
+  // check_descriptions holds them to those places.
   const auto cut_in = [&](double from, double to) {
-    for (const ShotSpan& span : timeline.shots())
-      if (span.start > 0 && span.start > from && span.start <= to) return true;
+    for (const CameraWindow& w : camera.windows())
+      if (w.begin == w.end && w.event_time > from && w.event_time <= to) return true;
     return false;
   };
   for (std::size_t i = 0; i < times.size(); ++i) {
@@ -327,13 +336,14 @@ TEST_SUITE("director") {
       REQUIRE(parsed.scene);
       if (parsed.scene->game && test::kSanitizedBuild) continue;  // a whole game: Release builds only
       Timeline timeline;
-      play_as_loaded(*parsed.scene, timeline);  // a scene aimed by `pot` is played at the headings found
-      const DirectedCamera script = direct_camera(*parsed.scene, timeline);
+      FilmingNotes notes;
+      play_as_loaded(*parsed.scene, timeline, &notes);  // a scene aimed by `pot` is played at the headings found
+      const DirectedCamera script = direct_camera(*parsed.scene, timeline, notes);
       const std::string camera = camera_script_text(script, "scene");
       CHECK(camera.starts_with("camera\n"));
       CHECK(camera.ends_with("endcamera\n"));
       // Deterministic: the same again, to the byte.
-      CHECK(camera_script_text(direct_camera(*parsed.scene, timeline), "scene") == camera);
+      CHECK(camera_script_text(direct_camera(*parsed.scene, timeline, notes), "scene") == camera);
       const ParseResult again = parse_scene(with_camera(text, camera), "scene");
       REQUIRE(again.scene);
       CHECK(again.diagnostics.empty());
@@ -566,5 +576,60 @@ TEST_SUITE("director: a pocket's jaws") {
       }
     }
     CHECK(followed >= 10);
+  }
+}
+
+TEST_SUITE("director") {
+  TEST_CASE("a game with no camera block is filmed by the director: it opens wide on the table, then cuts to the breaker") {
+    // Both players without noise: the break wins at once; the whole game is one shot.
+    const std::string text = "game 9ball seed 11\nplayer Ann noise 0\nplayer Bo noise 0\n";
+    const ShotResult loaded = load_shot(text, "opening");
+    REQUIRE(loaded.scripted());
+    const Shot& shot = *loaded.shot;
+    REQUIRE(shot.directed);  // the default `--camera scene`, yet the director's script
+    const std::vector<CameraShot>& script = shot.directed->shots;
+    REQUIRE(script.size() >= 2);
+    // The opening: a still wide view from the start, the whole bed and the rack in the picture.
+    CHECK(script[0].key.kind == CameraKeyKind::start);
+    CHECK(script[0].mode == CameraMode::hover);
+    const TableRect bed = table_layout(shot.scene).noses;
+    for (const Vec3& corner : {Vec3(bed.x0, bed.y0, 0), Vec3(bed.x1, bed.y0, 0), Vec3(bed.x0, bed.y1, 0),
+                               Vec3(bed.x1, bed.y1, 0)})
+      CHECK(in_frame(shot, 0.5, corner));
+    // Then a cut (no blend) to the breaker's view, kOpeningSeconds in, before the strike.
+    CHECK(camera_key_text(script[1].key) == "at " + format_number(kOpeningSeconds));
+    CHECK(script[1].pre == 0);
+    CHECK(script[1].post == 0);
+    const double cut = shot.camera->windows().front().event_time;
+    CHECK(cut == doctest::Approx(kOpeningSeconds));
+    CHECK(cut < shot.timeline.cue_time() - 0.8);
+    const int cue_ball = shot.scene.cue().target;
+    const Vec3 cue = shot.scene.balls[static_cast<std::size_t>(cue_ball)].position;
+    const double heading = shot.scene.cue().heading_deg * kDegToRad;
+    CHECK((script[1].location - cue).dot(Vec3(std::cos(heading), std::sin(heading), 0)) < -0.5);
+    // A written camera block is kept as written.
+    const ShotResult written = load_shot(text + "camera\nevent start 0 0 hover 0 -3 2 0 0 0\nendcamera\n", "written");
+    REQUIRE(written.scripted());
+    CHECK_FALSE(written.shot->directed);
+  }
+
+  TEST_CASE("a game's safety is filmed for where the cue ball goes") {
+    if (test::kSanitizedBuild) return;  // a whole game: Release builds only
+    const ShotResult loaded = load_shot(test::require_file(test::source_path("scenes/game9.scn")), "game9");
+    REQUIRE(loaded.scripted());
+    const Shot& shot = *loaded.shot;
+    REQUIRE(shot.game);
+    REQUIRE(shot.directed);
+    int safeties = 0;
+    for (const GameTurn& turn : shot.game->turns) {
+      if (!turn.planned.safety) continue;
+      ++safeties;
+      // Every description of that shot after its stroke is about the cue ball.
+      const int cue_ball = shot.scene.cues[static_cast<std::size_t>(turn.shot)].target;
+      for (std::size_t k = 0; k < shot.directed->shots.size(); ++k)
+        if (shot.directed->shots[k].key.shot == turn.shot && shot.directed->shots[k].key.kind != CameraKeyKind::start)
+          CHECK(shot.directed->subjects[k] == cue_ball);
+    }
+    CHECK(safeties > 0);
   }
 }
