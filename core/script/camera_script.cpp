@@ -16,6 +16,8 @@ namespace {
 
 /// deg above the horizon of the default camera: high enough to see the whole bed, low enough for depth.
 constexpr double kDefaultElevationDeg = 55.0;
+/// m the default camera keeps under the room's ceiling.
+constexpr double kDefaultCeilingRoom = 0.35;
 
 std::string describe_event(int written, int resolved) {
   if (written == CameraShot::kLastEvent) return "event 65535 (the last event, " + std::to_string(resolved) + ")";
@@ -117,7 +119,11 @@ CameraShot CameraScript::default_shot(const Scene& scene) {
   const double half_x = 0.5 * (high.x() - low.x()), half_y = 0.5 * (high.y() - low.y());
   // Far enough that the long side fills the width with a margin, from the near long side.
   const double distance = 1.15 * half_x / std::tan(0.5 * kCameraFovDeg * kDegToRad) + half_y;
-  const double elevation = kDefaultElevationDeg * kDegToRad;
+  // Under the room's ceiling (a camera above it sees only the ceiling's back: a black picture): the
+  // elevation comes down, the distance kept, until it is kDefaultCeilingRoom under it.
+  const double highest = std::min(distance * std::sin(kDefaultElevationDeg * kDegToRad),
+                                  kRoom.ceiling - kDefaultCeilingRoom);
+  const double elevation = std::asin(std::clamp(highest / distance, 0.0, 1.0));
   CameraShot shot;
   shot.event = 0;
   shot.mode = CameraMode::hover;

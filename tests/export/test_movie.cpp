@@ -2,6 +2,7 @@
 // as the shot; a re-run renders only what changed; a missing program, a failing frame and Ctrl-C
 // end cleanly with nothing half-written left behind.
 #include <doctest/doctest.h>
+#include <stb_image.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -137,6 +138,26 @@ TEST_SUITE("movie") {
     int povs = 0;
     for (const auto& e : fs::directory_iterator(out / "frames")) povs += e.path().extension() == ".pov";
     CHECK(povs == fewer);
+  }
+
+  TEST_CASE("a scene with no camera block is filmed from under the ceiling: the table, not a black picture") {
+    for (const char* tool : {"povray", "ffmpeg"}) test::require_program(tool);
+    test::TempDir dir;
+    const std::string path = dir.file("plain.scn",
+                                      "cue 0 0\nball 0 -0.3 0 0.028575  0.3 0 0  1 0 0 0\n"
+                                      "ball 9  0.2 0.05 0.028575  0 0 0  1 0 0 0\n");
+    const fs::path out = dir.path / "out";
+    const test::CommandResult r = run_export(path, out, "--size 64x36 --fps 1 --quality draft");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    int width = 0, height = 0, channels = 0;
+    unsigned char* data =
+        stbi_load((out / "frames" / "frame_00000.png").string().c_str(), &width, &height, &channels, 3);
+    REQUIRE(data);
+    double green = 0;  // the lit cloth fills the middle of the picture
+    for (int y = height / 3; y < 2 * height / 3; ++y)
+      for (int x = width / 3; x < 2 * width / 3; ++x) green += data[(y * width + x) * 3 + 1];
+    stbi_image_free(data);
+    CHECK(green / ((height / 3) * (width / 3)) > 60);
   }
 
   TEST_CASE("the progress line shows on a terminal; under CI, plain lines") {
