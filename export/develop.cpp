@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "lower_third.h"
 #include "png_file.h"
 
 namespace bsim {
@@ -423,9 +424,11 @@ std::vector<std::uint8_t> develop(HdrImage image) {
   return tone_map(image);
 }
 
-bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error) {
+bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error, const FrameCaption* caption) {
   const int width = image.width, height = image.height;
-  return write_png(png_path, develop(std::move(image)), width, height, error);
+  std::vector<std::uint8_t> picture = develop(std::move(image));
+  if (caption && !draw_lower_third(picture, width, height, *caption, error)) return false;
+  return write_png(png_path, picture, width, height, error);
 }
 
 bool develop_file(const std::string& hdr_path, const std::string& png_path, std::string& error) {

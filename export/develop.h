@@ -13,6 +13,8 @@
 
 namespace bsim {
 
+struct FrameCaption;
+
 /// The one exposure of the look, a factor on POV-Ray's linear light before the tone curve. A constant,
 /// never measured from the frame: auto-exposure would pump and flicker as balls move.
 inline constexpr float kExposure = 1.6f;
@@ -83,9 +85,11 @@ std::vector<std::uint8_t> tone_map(const HdrImage& image);
 /// The whole pipeline on a picture: exposure and vignetting, glare, tone curve, film colour, sRGB.
 std::vector<std::uint8_t> develop(HdrImage image);
 
-/// Develops `image` into the PNG at `png_path`. False, with `error` naming the file, when it cannot
-/// be written; no half-written PNG is left behind.
-bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error);
+/// Develops `image` into the PNG at `png_path`, with `caption` (a game movie's, lower_third.h) drawn
+/// over it when given. False, with `error` naming the file, when it cannot be written (or the
+/// caption's fonts are not installed); no half-written PNG is left behind.
+bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error,
+                    const FrameCaption* caption = nullptr);
 
 /// Develops the .hdr at `hdr_path` into the PNG at `png_path`. False, with `error` saying why (the
 /// file and the reason), when the .hdr cannot be read or the PNG cannot be written; no half-written

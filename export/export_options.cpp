@@ -27,6 +27,8 @@ exit status: 0 done, 1 bad scene or failed run, 2 bad command line
 
 /// --quality's presets, in the order of Quality's values.
 constexpr std::string_view kQualityPresets = "draft|final";
+/// --captions' values: on (0) or off.
+constexpr std::string_view kCaptionsChoices = "on|off";
 
 bool bad(std::string& message, const std::string& name, const std::string& text, const std::string& expected) {
   message = bad_value_message(name, text, expected);
@@ -112,7 +114,8 @@ std::string inert_option_message(const ExportOptions& o) {
       {o.events_only,
        "--events-only",
        "it writes no frames, sound or movie",
-       {"--no-render", "--size", "--quality", "--jobs", "--whole-frames", "--audio-lead", "--music", "--loudness"}},
+       {"--no-render", "--size", "--quality", "--jobs", "--whole-frames", "--captions", "--audio-lead", "--music",
+        "--loudness"}},
       {o.no_render, "--no-render", "it runs no POV-Ray", {"--jobs", "--whole-frames"}},
   };
   for (const Inert& rule : rules) {
@@ -180,6 +183,14 @@ OptionTable export_option_table(ExportOptions& o) {
        "trace every pixel of every frame (by default a frame of a still camera traces only\n"
        "what changed and takes the rest from the frame before: the same pixels)",
        [&o](S, S, std::string&) { return o.whole_frames = true; }},
+      {"--captions", kCaptionsChoices,
+       "a game's captions on its frames: the players, the balls left, the referee's\ncalls (default: on)",
+       [&o](S n, S v, std::string& m) {
+         const auto choice = choice_index(kCaptionsChoices, v);
+         if (!choice) return bad(m, n, v, "on or off");
+         o.captions = *choice == 0;
+         return true;
+       }},
       {"--audio-lead", "SECONDS", "sounds start this long before their event, 0 to 1 (default: 0.005)",
        [&o](S n, S v, std::string& m) {
          const auto lead = parse_real_option(v);

@@ -35,6 +35,7 @@ struct ExportOptions : SharedOptions {
   Quality quality = Quality::final;
   int jobs = 0;               ///< 0: one per core
   bool whole_frames = false;  ///< --whole-frames: trace every pixel of every frame
+  bool captions = true;       ///< --captions: a game's movie has captions
   double audio_lead = 0.0;    ///< s; set to the documented default by the parser
   std::string music_path;
   SoundLevel level;  ///< how the sound track's level is set (default: calibrated)

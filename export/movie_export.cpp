@@ -16,6 +16,7 @@
 #include "develop.h"
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
+#include "frame_captions.h"
 #include "frames.h"
 #include "loudness.h"
 #include "output_stage.h"
@@ -99,6 +100,18 @@ FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& 
   return plan;
 }
 
+/// frames/captions.txt for a game's movie with captions (frame_captions.h). The fonts are looked for
+/// only where the frames are rendered.
+bool write_captions(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, int frames,
+                    std::string& error) {
+  if (!options.captions || !shot.game) return true;
+  if (!options.no_render && !lower_third_fonts(error)) return false;
+  const std::vector<FrameCaption> captions =
+      frame_captions(shot, plain_frame_moments(shot, frames, options.fps), options.width, options.height);
+  return write_file(
+      frames_dir + "/" + kCaptionsName, [&](std::ostream& out) { out << captions_text(captions); }, error);
+}
+
 bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
   for (const auto& [frame, source] : plan.duplicates) {
     std::error_code ec;
@@ -143,6 +156,7 @@ std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int f
   std::vector<std::uint64_t> keys;
   for (int k = 0; k < frames; ++k)
     keys.push_back(fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common));
+  add_caption_keys(frames_dir, keys);  // a frame's caption is part of its picture
   return keys;
 }
 
@@ -165,6 +179,7 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
             [&](std::ostream& out) { write_pov_frame(shot, k, options.fps, out); }, error))
       return false;
   }
+  if (!write_captions(shot, options, stage.path("frames"), frames, error)) return false;
 
   // Exactly as long as the shot; the duration is a whole number of seconds, so of frames too.
   const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));

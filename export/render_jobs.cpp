@@ -13,6 +13,7 @@
 
 #include "child_process.h"
 #include "develop.h"
+#include "frame_captions.h"
 #include "pov_frame.h"
 #include "process_pool.h"
 #include "progress_reporter.h"
@@ -164,7 +165,8 @@ class FrameRendering {
         error_(error),
         pool_(settings.processes, kPovraySettle),
         progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
-                  progress_style(settings.quiet)) {
+                  progress_style(settings.quiet)),
+        captions_(read_caption_lines(frames_dir)) {
     // The time left is reckoned from the pixels still to trace (and each POV-Ray run's start), so a
     // run of cheap partial frames after a whole one does not make it look short or long.
     double work = 0;
@@ -379,7 +381,13 @@ class FrameRendering {
     if (dependents_[frame] > 0) kept_[frame] = image;
     const std::string png = frame_name(frame) + ".png";
     std::string develop_error;
-    if (!develop_to_png(std::move(image), dir_ + png, develop_error)) {
+    FrameCaption caption;
+    const auto line = captions_.find(frame);
+    if (line != captions_.end() && !parse_caption(line->second, caption)) {
+      fail(frame, shown_frame(frame) + " could not be developed: its line in " + kCaptionsName + " is not a caption");
+      return;
+    }
+    if (!develop_to_png(std::move(image), dir_ + png, develop_error, line != captions_.end() ? &caption : nullptr)) {
       fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
       return;
     }
@@ -428,6 +436,7 @@ class FrameRendering {
   std::map<int, PartialFrame> partial_;  ///< partial frames not yet developed
   std::map<int, int> dependents_;        ///< frame -> partial frames still to be laid over it
   std::map<int, HdrImage> kept_;         ///< pictures (before developing) that partial frames still need
+  const std::map<int, std::string> captions_;  ///< each captioned frame's line of captions.txt
   RunOutcome outcome_ = RunOutcome::done;
   int failed_frame_ = -1;
   /// Each running POV-Ray's log size and since when it has had it.

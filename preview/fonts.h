@@ -2,6 +2,8 @@
 // Text for pictures and the window: DejaVu (Debian's fonts-dejavu-core) when present, else ImGui's own font.
 #include <string>
 
+#include "dejavu.h"
+
 struct ImFont;
 struct ImFontAtlas;
 
@@ -15,9 +17,6 @@ struct UiFonts {
   float small_size = 13;
   float bold_size = 13;
 };
-
-/// Path of a DejaVu font file such as "DejaVuSans.ttf", or empty when it is not installed.
-std::string find_dejavu(const char* file);
 
 /// Adds the three faces to `atlas`, sized for a picture whose body text is `size` pixels high.
 UiFonts add_ui_fonts(ImFontAtlas& atlas, float size);

@@ -68,6 +68,7 @@ TEST_SUITE("option tables") {
         {"--quality", {"draft", [](const E& o) { return o.quality == Quality::draft; }}},
         {"--jobs", {"3", [](const E& o) { return o.jobs == 3; }}},
         {"--whole-frames", {"", [](const E& o) { return o.whole_frames; }}},
+        {"--captions", {"off", [](const E& o) { return !o.captions; }}},
         {"--audio-lead", {"0.25", [](const E& o) { return o.audio_lead == 0.25; }}},
         {"--music", {bed, [bed](const E& o) { return o.music_path == bed; }}},
         {"--loudness",
