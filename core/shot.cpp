@@ -1,9 +1,12 @@
 #include "shot.h"
 
+#include <algorithm>
+
 #include "camera_clearance.h"
 #include "director.h"
 #include "number_format.h"
 #include "play.h"
+#include "replay_camera.h"
 
 namespace bsim {
 
@@ -20,7 +23,42 @@ FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record) {
   return notes;
 }
 
-ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options, CameraChoice camera) {
+
+namespace {
+
+/// The game's winning shot and the ball that won it (the 10, 9 or 8 made on it; none when the game
+/// was won on a foul); none when the game has no winner.
+std::optional<ReplaySubject> winning_shot(const Scene& scene, const GameRecord& game) {
+  if (!game.winner || game.turns.empty()) return std::nullopt;
+  const GameTurn& turn = game.turns.back();
+  const int game_ball = game.rules == RackGame::eight_ball ? 8 : game.rules == RackGame::ten_ball ? 10 : 9;
+  ReplaySubject subject{turn.shot, -1};
+  const auto& made = turn.verdict.pocketed;
+  if (std::find(made.begin(), made.end(), game_ball) != made.end())
+    for (int i = 0; i < static_cast<int>(scene.balls.size()); ++i)
+      if (scene.ball(i).number == game_ball) subject.ball = i;
+  return subject;
+}
+
+/// The movie's frames: the simulation, then the winning shot of a game again, slowed, from the
+/// replay's own camera.
+void plan_movie(Shot& shot, ReplayChoice replay) {
+  shot.movie = MovieTimeline(shot.timeline.duration());
+  if (replay == ReplayChoice::off || !shot.game || !shot.camera) return;
+  const std::optional<ReplaySubject> subject = winning_shot(shot.scene, *shot.game);
+  if (!subject || subject->shot >= shot.timeline.shot_count()) return;
+  const ReplayPlan plan = plan_replay(shot.scene, shot.timeline, *shot.camera, *subject);
+  std::vector<Diagnostic> unused;  // the plan's descriptions fit the shot: they were built from it
+  shot.replay_camera = CameraScript::build(shot.scene, plan.camera, shot.timeline, unused);
+  if (!shot.replay_camera) return;
+  shot.replay_what = plan.what;
+  shot.movie.add({plan.start, plan.end, kReplayRate, true});
+}
+
+}  // namespace
+
+ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options, CameraChoice camera,
+                     ReplayChoice replay) {
   ShotResult result;
   ParseResult parsed = parse_scene(text, name, options);
   result.diagnostics = std::move(parsed.diagnostics);
@@ -76,6 +114,7 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
                  " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
     }
   }
+  plan_movie(*shot, replay);
   result.shot = std::move(shot);
   return result;
 }

@@ -3,6 +3,7 @@
 // scene -> timeline -> camera script -> cue script. Both front ends start here.
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "cue_script.h"
 #include "diagnostics.h"
 #include "director.h"
+#include "frames.h"
 #include "game.h"
 #include "scene.h"
 #include "scene_parse.h"
@@ -38,6 +40,17 @@ struct Shot {
   /// A scene with a `game` line: the rules' record of the game played (`scene` is then the game as an
   /// explicit scene, one `cue` per shot).
   std::optional<GameRecord> game;
+  /// The movie's frames (frames.h): the simulation as it plays, then, for a game with a winner (unless
+  /// the replay is off), the winning shot again at half speed filmed by `replay_camera`.
+  MovieTimeline movie;
+  /// The replay's camera, the director's second camera (replay_camera.h): set when `movie` has a replay.
+  std::optional<CameraScript> replay_camera;
+  std::string replay_what;  ///< the replay's camera in words ("a camera low behind the top-right corner (pocket 2)")
+
+  /// The camera that films `frame`: the replay's on a replay frame, else the shot's script.
+  const CameraScript& camera_at(const MovieFrame& frame) const {
+    return frame.replay && replay_camera ? *replay_camera : *camera;
+  }
 };
 
 struct ShotResult {
@@ -56,10 +69,14 @@ enum class CameraChoice { scene, automatic };
 /// met first, where it stopped.
 FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record);
 
+/// Whether a game with a winner is followed by its winning shot again, slowed (`--replay on|off`).
+enum class ReplayChoice { on, off };
+
 /// Parses, simulates and scripts a scene. Never exits; user errors come back as diagnostics. With
 /// CameraChoice::automatic the scene's camera script is replaced by direct_camera()'s (its own is
-/// parsed but never checked against the shot).
+/// parsed but never checked against the shot). The movie (Shot::movie) has the replay unless
+/// ReplayChoice::off.
 ShotResult load_shot(std::string_view text, std::string_view name, const ParseOptions& options = {},
-                     CameraChoice camera = CameraChoice::scene);
+                     CameraChoice camera = CameraChoice::scene, ReplayChoice replay = ReplayChoice::on);
 
 }  // namespace bsim

@@ -9,12 +9,14 @@
 namespace bsim {
 
 void write_camera_csv(const Shot& shot, int fps, std::ostream& out) {
-  out << "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n";
-  const int frames = frame_count(shot.timeline.duration(), fps);
+  out << "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay\n";
+  // One row per frame of the movie (frames.h): its time is the simulation's it shows.
+  const int frames = shot.movie.frame_count(fps);
   std::string row;
   for (int k = 0; k < frames; ++k) {
-    const double t = frame_time(k, fps);
-    const CameraPose pose = shot.camera->pose(t);
+    const MovieFrame frame = shot.movie.frame(k, fps);
+    const double t = frame.time;
+    const CameraPose pose = shot.camera_at(frame).pose(t);
     row = std::to_string(k);
     row += ',';
     append_number(row, t);
@@ -26,7 +28,8 @@ void write_camera_csv(const Shot& shot, int fps, std::ostream& out) {
       row += ',';
       append_number(row, pose.look_at[i]);
     }
-    row += pose.interpolating ? ",1\n" : ",0\n";
+    row += pose.interpolating ? ",1" : ",0";
+    row += frame.replay ? ",1\n" : ",0\n";
     out << row;
   }
 }

@@ -213,6 +213,7 @@ OptionTable export_option_table(ExportOptions& o) {
        kCameraChoices,
        "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
        {}},
+      replay_option_row(o.replay),
       {"-h, --help", "", "show this help and exit", {}},
       {"--version", "", "show the version and exit", {}},
   };

@@ -196,7 +196,7 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   conf.width = options.width;
   conf.height = options.height;
   conf.quality = options.quality;
-  conf.duration = shot.timeline.duration();
+  conf.duration = shot.movie.duration();  // the movie's, its replay included
   conf.frames = frames_ = frame_count(conf.duration, conf.fps);
   const FramePlan plan = plan_frames(dir_, conf, options, stage);
   missing_ = static_cast<int>(plan.missing.size());

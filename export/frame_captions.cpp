@@ -99,11 +99,12 @@ std::vector<int> balls_that_matter(const Shot& shot, int k) {
 
 }  // namespace
 
-std::vector<FrameMoment> plain_frame_moments(const Shot& shot, int frames, int fps) {
+std::vector<FrameMoment> movie_frame_moments(const Shot& shot, int fps) {
   std::vector<FrameMoment> moments;
+  const int frames = shot.movie.frame_count(fps);
   for (int k = 0; k < frames; ++k) {
-    const double t = frame_time(k, fps);
-    moments.push_back({t, false, shot.camera ? shot.camera->pose(t) : CameraPose{}});
+    const MovieFrame f = shot.movie.frame(k, fps);
+    moments.push_back({f.time, f.replay, shot.camera ? shot.camera_at(f).pose(f.time) : CameraPose{}});
   }
   return moments;
 }

@@ -34,8 +34,8 @@ struct FrameMoment {
   CameraPose pose;
 };
 
-/// Each frame's moment in a movie of the simulation's own timeline: frame k at frame_time(k, fps).
-std::vector<FrameMoment> plain_frame_moments(const Shot& shot, int frames, int fps);
+/// Each movie frame's moment (Shot::movie: the simulation, then a game's replay, from its own camera).
+std::vector<FrameMoment> movie_frame_moments(const Shot& shot, int fps);
 
 /// The caption of each frame: none (empty) unless the shot is a game. Each shot's caption sits in one
 /// lower corner, the left unless the shot's cue ball or the ball it is played at is seen under the

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <iterator>
 #include <optional>
+#include <sstream>
 
 #include "child_process.h"
 #include "export_options.h"
@@ -79,6 +80,14 @@ void report_interrupted(const bsim::OutputStage& stage, const std::string& dir) 
   std::cerr << "\n";
 }
 
+/// The closing line's note on a game's replay: "; the movie 97 s with the replay" (empty without one).
+std::string replay_note(const bsim::Shot& shot) {
+  if (!shot.movie.replay()) return "";
+  std::ostringstream note;
+  note << "; the movie " << shot.movie.duration() << " s with the replay";
+  return note.str();
+}
+
 /// Everything a run writes, into the stage: the data files, then (unless --events-only) the frames'
 /// .pov files and the sound track, then (unless --no-render) the rendered frames and the movie, and
 /// run.json. Interrupted when Ctrl-C came.
@@ -97,7 +106,7 @@ bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& opti
   if (!bsim::write_frames_and_sound(shot, options, stage, summary, error)) return RunOutcome::failed;
   summary.writing = bsim::seconds_since(start);
   if (bsim::InterruptGuard::interrupted()) return RunOutcome::interrupted;
-  summary.frames_total = bsim::frame_count(shot.timeline.duration(), options.fps);
+  summary.frames_total = shot.movie.frame_count(options.fps);
   if (!options.no_render) {
     const RunOutcome rendered = bsim::render_movie(shot, options, programs, stage, summary, error);
     if (rendered != RunOutcome::done) return rendered;
@@ -123,7 +132,8 @@ int run(const bsim::ExportOptions& options) {
 
   bsim::ShotResult loaded =
       bsim::load_shot(*text, name, {.strict = options.strict},
-                      options.auto_camera ? bsim::CameraChoice::automatic : bsim::CameraChoice::scene);
+                      options.auto_camera ? bsim::CameraChoice::automatic : bsim::CameraChoice::scene,
+                      options.replay ? bsim::ReplayChoice::on : bsim::ReplayChoice::off);
   for (const bsim::Diagnostic& d : loaded.diagnostics) std::cerr << bsim::format_diagnostic(d, shown_path) << "\n";
   if (!loaded.scripted()) return 1;
   const bsim::Shot& shot = *loaded.scripted();
@@ -182,7 +192,7 @@ int run(const bsim::ExportOptions& options) {
               << summary.frames_reused << " reused)";
   else
     std::cerr << "wrote " << dir << "/ (" << shot.timeline.events().size() << " events, " << shot.timeline.duration()
-              << " s)";
+              << " s" << replay_note(shot) << ")";
   std::cerr << kept_note(stage.kept(), outdated) << "\n";
   return 0;
 }

@@ -102,12 +102,11 @@ FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& 
 
 /// frames/captions.txt for a game's movie with captions (frame_captions.h). The fonts are looked for
 /// only where the frames are rendered.
-bool write_captions(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, int frames,
-                    std::string& error) {
+bool write_captions(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, std::string& error) {
   if (!options.captions || !shot.game) return true;
   if (!options.no_render && !lower_third_fonts(error)) return false;
   const std::vector<FrameCaption> captions =
-      frame_captions(shot, plain_frame_moments(shot, frames, options.fps), options.width, options.height);
+      frame_captions(shot, movie_frame_moments(shot, options.fps), options.width, options.height);
   return write_file(
       frames_dir + "/" + kCaptionsName, [&](std::ostream& out) { out << captions_text(captions); }, error);
 }
@@ -172,21 +171,21 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
           stage.path("frames/" + std::string(kPovIncludeName)),
           [&](std::ostream& out) { write_pov_include(shot.scene, options.quality, out); }, error))
     return false;
-  const int frames = frame_count(shot.timeline.duration(), options.fps);
+  const int frames = shot.movie.frame_count(options.fps);
   for (int k = 0; k < frames; ++k) {
     if (!write_file(
             stage.path("frames/" + frame_name(k) + ".pov"),
             [&](std::ostream& out) { write_pov_frame(shot, k, options.fps, out); }, error))
       return false;
   }
-  if (!write_captions(shot, options, stage.path("frames"), frames, error)) return false;
+  if (!write_captions(shot, options, stage.path("frames"), error)) return false;
 
-  // Exactly as long as the shot; the duration is a whole number of seconds, so of frames too.
-  const auto samples = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
+  // Exactly as long as the movie; its duration is a whole number of seconds, so of frames too.
+  const auto samples = static_cast<std::size_t>(std::llround(shot.movie.duration() * kSampleRate));
   AudioBuffer audio;
-  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
-                      {.lead = options.audio_lead, .music_path = options.music_path, .level = options.level}, samples,
-                      audio, error))
+  const SoundOptions sound{.lead = options.audio_lead, .music_path = options.music_path, .level = options.level};
+  const SoundMovie movie{&shot.movie, shot.replay_camera ? &*shot.replay_camera : nullptr};
+  if (!mix_movie_soundtrack({shot.scene, shot.timeline, *shot.camera}, movie, sound, samples, audio, error))
     return false;
   summary.loudness_lufs = integrated_loudness(audio);
   summary.true_peak_dbtp = to_db(true_peak(audio));
@@ -211,7 +210,7 @@ bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std:
 RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const RunPrograms& programs,
                         const OutputStage& stage, RunSummary& summary, std::string& error) {
   const std::string frames_dir = stage.path("frames");
-  const int frames = frame_count(shot.timeline.duration(), options.fps);
+  const int frames = shot.movie.frame_count(options.fps);
   FrameCache cache(default_frame_cache_dir(), frames_dir);
   FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
   if (!options.whole_frames) plan_partial_frames(shot, options, plan.jobs);
@@ -242,7 +241,7 @@ RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const Ru
   if (outcome != RunOutcome::done) return outcome;
 
   start = std::chrono::steady_clock::now();
-  const MovieSettings movie{programs.ffmpeg, options.fps, shot.timeline.duration(), options.quiet};
+  const MovieSettings movie{programs.ffmpeg, options.fps, shot.movie.duration(), options.quiet};
   outcome = assemble_movie(stage.staging(), movie, error);
   summary.encoding = seconds_since(start);
   return outcome;

@@ -85,11 +85,11 @@ struct ShutterViews {
   std::vector<PictureProjection> views;
 };
 
-ShutterViews shutter_views(const Shot& shot, double t, double shutter) {
+ShutterViews shutter_views(const Shot& shot, const CameraScript& camera, double t, double shutter) {
   ShutterViews s;
   for (int k = 0; k <= kMeasureSteps; ++k) {
     s.instants.push_back(shutter_instant(shot, t, shutter, k, kMeasureSteps));
-    s.views.emplace_back(shot.camera->pose(s.instants.back()));
+    s.views.emplace_back(camera.pose(s.instants.back()));
   }
   return s;
 }
@@ -156,9 +156,9 @@ struct FrameBlur {
 /// the stick at each of kStickSteps + 1 instants lies, along the axis of the stick `cue` at the
 /// frame's instant; nothing (copies instead) when its tip or butt strays more than kStickSidePixels
 /// from that line in the picture.
-StickBlur sweep_stick(const Shot& shot, double t, double shutter, const CuePose& cue) {
+StickBlur sweep_stick(const Shot& shot, const CameraScript& camera, double t, double shutter, const CuePose& cue) {
   StickBlur blur;
-  const PictureProjection view(shot.camera->pose(t));
+  const PictureProjection view(camera.pose(t));
   const Vec3 axis = cue.axis.normalized(), butt = cue.tip + kCueLength * axis;
   std::vector<double> along;
   std::vector<bool> seen;
@@ -216,11 +216,11 @@ int streak_segments(const Shot& shot, int ball, double t, double shutter, double
   return 1;
 }
 
-FrameBlur plan_blur(const Shot& shot, double t, int fps) {
+/// The blur of the frame at t whose shutter is open `shutter` s of the simulation, filmed by `camera`.
+FrameBlur plan_blur(const Shot& shot, const CameraScript& camera, double t, double shutter) {
   FrameBlur blur;
-  const double shutter = kShutter / fps;
   const double radius = shot.scene.physics.ball_radius;
-  const ShutterViews views = shutter_views(shot, t, shutter);
+  const ShutterViews views = shutter_views(shot, camera, t, shutter);
   for (int i = 0; i < shot.timeline.ball_count(); ++i) {
     const double travel = picture_travel(views, [&](double u) { return shot.timeline.motion_state(i, u).position; });
     blur.ball_segments.push_back(travel < kBlurPixels ? 0 : streak_segments(shot, i, t, shutter, radius));
@@ -236,7 +236,7 @@ FrameBlur plan_blur(const Shot& shot, double t, int fps) {
                           return Vec3(p.tip + along * p.axis.normalized());
                         }));
     }
-    if (travel >= kBlurPixels) blur.stick = sweep_stick(shot, t, shutter, cue);
+    if (travel >= kBlurPixels) blur.stick = sweep_stick(shot, camera, t, shutter, cue);
     if (blur.stick.travel.empty()) blur.stick.copies = copies_for(travel, 4.0);
   }
   return blur;
@@ -346,14 +346,13 @@ BoundCapsule stick_bound(const CuePose& cue, double front, double back) {
 }
 
 /// Ball i at the frame's instant, drawn once or as its streak.
-FramePart ball_part(const Shot& shot, const FrameBlur& blur, int i, double t, int fps, const Vec3& eye) {
+FramePart ball_part(const Shot& shot, const FrameBlur& blur, int i, double t, double shutter, const Vec3& eye) {
   FramePart part;
   part.mirrors = true;
   const double r = shot.scene.physics.ball_radius + kBoundSlack;
   const BallState state = shot.timeline.state(i, t);
   const BoundSphere now{state.position, r};
   part.casts.push_back({now, now});
-  const double shutter = kShutter / fps;
   const int segments = blur.ball_segments[static_cast<std::size_t>(i)];
   std::ostringstream out;
   if (segments > 0 && write_streak(shot, i, t, shutter, segments, eye, out)) {
@@ -376,7 +375,7 @@ FramePart ball_part(const Shot& shot, const FrameBlur& blur, int i, double t, in
 }
 
 /// The stick at the frame's instant: none, once, swept along its axis, or as copies.
-FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps) {
+FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, double shutter) {
   FramePart part;
   std::ostringstream out;
   const CuePose now = shot.cue->pose(t);
@@ -402,7 +401,6 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
     out << "object { CueShadow " << stick_place(now) << " }  // the stick's shadow\n";
     part.casts = {stick_bound(now, 0, 0)};
   }
-  const double shutter = kShutter / fps;
   const std::string transmit = pov_number(copy_transmit(stick_copies));
   for (int k = 0; k < stick_copies; ++k) {
     const CuePose cue = shot.cue->pose(shutter_instant(shot, t, shutter, 2 * k + 1, 2 * stick_copies));
@@ -419,11 +417,16 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, int fps)
 
 FrameContent frame_content(const Shot& shot, int frame, int fps) {
   FrameContent content;
-  const double t = frame_time(frame, fps);
-  content.header = "// " + frame_name(frame) + " of " + shot.scene.name + ": t = " + pov_number(t) + " s\n" +
-                   "#version 3.7;\n#include \"" + std::string(kPovIncludeName) + "\"\n\n";
+  // The movie's frame k: the simulation time it shows and the camera filming it (frames.h); a slowed
+  // frame's shutter is open for as little of the simulation as the frame lasts of it.
+  const MovieFrame shown = shot.movie.frame(frame, fps);
+  const double t = shown.time, shutter = kShutter / fps * shown.rate;
+  const CameraScript& script = shot.camera_at(shown);
+  content.header = "// " + frame_name(frame) + " of " + shot.scene.name + ": t = " + pov_number(t) + " s" +
+                   (shown.replay ? " (replay)" : "") + "\n#version 3.7;\n#include \"" + std::string(kPovIncludeName) +
+                   "\"\n\n";
 
-  const CameraPose camera = shot.camera->pose(t);
+  const CameraPose camera = script.pose(t);
   Vec3 location = camera.location, look_at = camera.look_at;
   steady_camera(location, look_at);
   content.camera_pose = {location, look_at, false};
@@ -434,10 +437,10 @@ FrameContent frame_content(const Shot& shot, int frame, int fps) {
       << pov_vector(look_at) << "\n}\n\n";
   content.camera = cam.str();
 
-  const FrameBlur blur = plan_blur(shot, t, fps);
+  const FrameBlur blur = plan_blur(shot, script, t, shutter);
   for (int i = 0; i < shot.timeline.ball_count(); ++i)
-    content.parts.push_back(ball_part(shot, blur, i, t, fps, camera.location));
-  content.parts.push_back(stick_part(shot, blur, t, fps));
+    content.parts.push_back(ball_part(shot, blur, i, t, shutter, camera.location));
+  content.parts.push_back(stick_part(shot, blur, t, shutter));
   return content;
 }
 

@@ -91,10 +91,11 @@ struct FrameContent {
   std::vector<FramePart> parts;
 };
 
-/// Frame `frame` of the shot, which shows t = frame / fps: what write_pov_frame writes, with bounds.
+/// Movie frame `frame` of the shot (Shot::movie: for a plain shot t = frame / fps; a replay's frame
+/// shows its time from the replay's camera): what write_pov_frame writes, with bounds.
 FrameContent frame_content(const Shot& shot, int frame, int fps);
 
-/// Writes frame `frame` of the shot, which shows t = frame / fps. Pocketed balls lie in their pockets.
+/// Writes movie frame `frame` of the shot (see frame_content). Pocketed balls lie in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out);
 
 }  // namespace bsim

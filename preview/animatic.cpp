@@ -118,8 +118,9 @@ bool draw_frames(const PreviewOptions& options, const Shot& shot, HeadlessCanvas
   const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
   for (int k = 0; k < frames; ++k) {
     if (InterruptGuard::interrupted()) return false;
-    const double t = frame_time(k, options.fps);
-    const FrameState frame = scripted_frame(shot, t);
+    const MovieFrame shown = shot.movie.frame(k, options.fps);  // the movie's frame: a replay's too
+    const double t = shown.time;
+    const FrameState frame = scripted_frame(shot, shown);
     renderer.draw(shot.scene, frame, width, height);
     if (overlays) {
       ImDrawList* list = canvas.begin_2d();
@@ -138,7 +139,7 @@ bool draw_frames(const PreviewOptions& options, const Shot& shot, HeadlessCanvas
 
 int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const int fps = options.fps, width = options.width, height = options.height;
-  const int frames = frame_count(shot.timeline.duration(), fps);
+  const int frames = shot.movie.frame_count(fps);
   std::string error;
   // Ctrl-C (or SIGTERM) from here on stops ffmpeg and deletes the half-written file before dying.
   InterruptGuard guard;
@@ -147,8 +148,9 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   const auto samples = static_cast<std::size_t>(frames) * kSampleRate / static_cast<std::size_t>(fps);
   AudioBuffer audio;
   const std::filesystem::path wav = temporary_file(".wav");
-  if (!mix_soundtrack({shot.scene, shot.timeline, *shot.camera},
-                      {.lead = kAnimaticAudioLead, .music_path = {}, .level = {}}, samples, audio, error) ||
+  const SoundMovie movie{&shot.movie, shot.replay_camera ? &*shot.replay_camera : nullptr};
+  if (!mix_movie_soundtrack({shot.scene, shot.timeline, *shot.camera}, movie,
+                            {.lead = kAnimaticAudioLead, .music_path = {}, .level = {}}, samples, audio, error) ||
       !write_wav(wav.string(), audio, error)) {
     std::cerr << "billiards-preview: error: " << error << "\n";
     return 1;

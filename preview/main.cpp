@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   }
   bsim::SceneSource source = bsim::scene_source(options.scene_path, options.strict);
   source.auto_camera = options.auto_camera;
+  source.replay = options.replay;
   const bool pictures = !options.at.empty() || options.timeline || options.movie;
   if (!pictures && !options.write_camera && !options.write_scene) return bsim::run_window(options, source);
 

@@ -214,6 +214,7 @@ OptionTable preview_option_table(PreviewOptions& o) {
        kCameraChoices,
        "auto: film with the automatic director's camera script instead of the\nscene's own (default: scene)",
        {}},
+      replay_option_row(o.replay),
       {"--write-camera", "FILE",
        "write the automatic director's camera script as scene text (camera ...\n"
        "endcamera) to FILE, or to standard output for -; implies --camera auto",

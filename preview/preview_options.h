@@ -43,6 +43,7 @@ struct PreviewOptions : SharedOptions {
   std::optional<std::string> screenshot;    ///< interactive: write the last frame here on quit
   std::optional<std::string> write_camera;  ///< --write-camera FILE: the director's script as text ("-": stdout)
   std::optional<std::string> write_scene;   ///< --write-scene FILE: the scene with `pot` resolved ("-": stdout)
+  bool replay = true;  ///< --replay off: a game's movie without its winning shot again (window, animatic, timeline)
 };
 
 /// The program's option table (command_line.h): every option in --help's order, with what it does

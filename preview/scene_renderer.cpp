@@ -33,6 +33,16 @@ FrameState scripted_frame(const Shot& shot, double t) {
   return frame;
 }
 
+FrameState scripted_frame(const Shot& shot, const MovieFrame& shown) {
+  FrameState frame = scripted_frame(shot, shown.time);
+  if (shown.replay && shot.replay_camera) {
+    const CameraPose pose = shot.replay_camera->pose(shown.time);
+    frame.camera.eye = pose.location;
+    frame.camera.target = pose.look_at;
+  }
+  return frame;
+}
+
 struct SceneRenderer::Impl {
   Program programs[kMaterialCount];
   Program* current = nullptr;

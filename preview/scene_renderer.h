@@ -8,6 +8,7 @@
 
 #include "ball_state.h"
 #include "cue_script.h"
+#include "frames.h"
 #include "mesh.h"
 #include "scene.h"
 #include "view.h"
@@ -25,6 +26,9 @@ struct FrameState {
 
 /// The shot at time t, seen from its scripted camera.
 FrameState scripted_frame(const Shot& shot, double t);
+/// What the movie shows at one of its frames (frames.h): the shot at the frame's time, seen from the
+/// camera filming it (the replay's on a replay frame).
+FrameState scripted_frame(const Shot& shot, const MovieFrame& shown);
 
 class SceneRenderer {
  public:

@@ -18,7 +18,8 @@ LoadedShot load_source(const SceneSource& source) {
   }
   loaded.text = *text;
   ShotResult result = load_shot(*text, source.name, {.strict = source.strict},
-                                source.auto_camera ? CameraChoice::automatic : CameraChoice::scene);
+                                source.auto_camera ? CameraChoice::automatic : CameraChoice::scene,
+                                source.replay ? ReplayChoice::on : ReplayChoice::off);
   loaded.shot = std::move(result.shot);
   loaded.diagnostics = std::move(result.diagnostics);
   for (const Diagnostic& d : loaded.diagnostics) loaded.messages.push_back(format_diagnostic(d, source.shown_path));

@@ -15,6 +15,7 @@ namespace bsim {
 struct SceneSource : SceneOrigin {
   bool strict = false;
   bool auto_camera = false;  ///< --camera auto: film with the automatic director's script
+  bool replay = true;        ///< --replay off: a game's movie without its winning shot again
 };
 
 SceneSource scene_source(const std::optional<std::string>& path, bool strict);

@@ -33,6 +33,8 @@ constexpr ImU32 kErrorText = IM_COL32(255, 120, 110, 255);
 constexpr ImU32 kSectionEven = IM_COL32(44, 50, 64, 255);
 constexpr ImU32 kSectionOdd = IM_COL32(36, 40, 50, 255);
 constexpr ImU32 kSeparator = IM_COL32(240, 200, 110, 220);
+constexpr ImU32 kReplayFill = IM_COL32(120, 70, 150, 110);
+constexpr ImU32 kReplayEdge = IM_COL32(210, 160, 255, 230);
 
 constexpr ImU32 kPlayerColors[2] = {IM_COL32(130, 210, 255, 255), IM_COL32(180, 236, 140, 255)};
 constexpr float kToneBar = 4;  // px, the bar of a game's call along a section's foot
@@ -507,9 +509,10 @@ class TimelinePainter {
     const double step =
         tick_step(across_.axis.pixels_per_second, text_size(fonts_.small, small, "00.0 s").x + 4 * rows_.pad);
     list_.AddLine(ImVec2(across_.x0, rows_.axis_top + 1), ImVec2(across_.x1, rows_.axis_top + 1), kDim, 1.f);
+    const double last = data_.replay ? data_.duration : across_.duration;  // the replay's box has no ticks
     for (int k = 0;; ++k) {
       const double t = k * step;
-      if (t > across_.duration + 1e-9) break;
+      if (t > last + 1e-9) break;
       const float x = at(t);
       list_.AddLine(ImVec2(x, rows_.events_top), ImVec2(x, rows_.cue_bottom), kGrid, 1.f);
       list_.AddLine(ImVec2(x, rows_.axis_top + 1), ImVec2(x, rows_.axis_top + 5), kDim, 1.f);
@@ -599,6 +602,29 @@ class TimelinePainter {
     const float small = fonts_.small_size;
     list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, (rows_.cue_top + rows_.cue_bottom - small) / 2), kDim,
                   "no stick: it is placed from the camera script");
+  }
+
+  // A game's replay: a box after the game's end over every row, its label and camera inside, and the
+  // stretch it shows again marked along the axis and tied to the box.
+  void draw_replay() {
+    if (!data_.replay) return;
+    const TimelineReplay& r = *data_.replay;
+    const float a = at(data_.duration), b = at(data_.duration + r.length), top = rows_.events_top;
+    const float low = rows_.cue_bottom, small = fonts_.small_size;
+    list_.AddRectFilled(ImVec2(a, top), ImVec2(b, low), kReplayFill, 3.f);
+    list_.AddRect(ImVec2(a, top), ImVec2(b, low), kReplayEdge, 3.f, 0, 1.5f);
+    const float room = b - a - 6;
+    float y = top + 3;
+    for (const std::string& text : {r.label, r.detail, r.camera}) {
+      if (room < small || y + small > low - 2) break;
+      list_.AddText(fonts_.small, small, ImVec2(a + 3, y), text == r.label ? kText : kDim,
+                    elided(fonts_.small, small, text, room).c_str());
+      y += small + 2;
+    }
+    const float s0 = at(r.start), s1 = at(r.end), axis = rows_.axis_top + 1;
+    list_.AddLine(ImVec2(s0, axis), ImVec2(s1, axis), kReplayEdge, 3.f);
+    list_.AddBezierCubic(ImVec2((s0 + s1) / 2, axis), ImVec2((s0 + s1) / 2, axis - (low - top) * 0.4f),
+                         ImVec2(a, axis - (low - top) * 0.4f), ImVec2(a, axis - 2), with_alpha(kReplayEdge, 140), 1.f);
   }
 
   // Shaded across every row, the event instant marked.
@@ -882,7 +908,7 @@ class TimelinePainter {
     a.zone_right = right_ - pad;
     a.zone_left = a.zone_right - a.zone;
     a.x1 = a.zone > 0 ? a.zone_left - 2 * pad : right_ - pad * 2.5f;
-    a.duration = std::max(data_.duration, 1e-6);
+    a.duration = std::max(data_.duration + (data_.replay ? data_.replay->length : 0.0), 1e-6);
     a.axis = {a.x0, static_cast<float>((a.x1 - a.x0) / a.duration)};
     return a;
   }
@@ -1004,6 +1030,18 @@ void add_events_and_camera(const Shot& shot, TimelineData& data) {
   if (shot.cue) data.cue = shot.cue->phases();
 }
 
+/// A game's replay (Shot::movie), and the movie's length in the title.
+void add_replay(const Shot& shot, TimelineData& data) {
+  const std::optional<MovieSegment> replay = shot.movie.replay();
+  if (!replay) return;
+  const int shot_number = shot.timeline.shot_at(replay->end) + 1;
+  data.replay = TimelineReplay{replay->start, replay->end, replay->length(), "replay",
+                               "shot " + std::to_string(shot_number) + " at half speed", shot.replay_what};
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "; the movie %.0f s with the replay", shot.movie.duration());
+  data.title += buffer;
+}
+
 }  // namespace
 
 TimelineData timeline_data(const Shot& shot) {
@@ -1034,6 +1072,7 @@ TimelineData timeline_data(const Shot& shot) {
   }
   if (shot.game) data.title += "  \xE2\x80\x94  " + game_title(*shot.game);
   add_events_and_camera(shot, data);
+  add_replay(shot, data);
   return data;
 }
 
@@ -1066,6 +1105,7 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   painter.draw_shot_separators();
   painter.draw_events();
   painter.draw_pocket_drops();
+  painter.draw_replay();
   painter.draw_cursor();
   if (layout.compact) return painter.axis();
   float y = painter.draw_script_errors();

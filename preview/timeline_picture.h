@@ -67,6 +67,17 @@ struct TimelineWindow {
   double begin = 0, event_time = 0, end = 0;  ///< s
 };
 
+/// A game's replay (Shot::movie): after the game's end, its winning shot again, slowed. The picture's
+/// time axis is then the movie's: the replay is a box after the end, and the stretch it shows again is
+/// marked on the axis.
+struct TimelineReplay {
+  double start = 0, end = 0;  ///< s of simulation shown again
+  double length = 0;          ///< s of movie it lasts
+  std::string label;          ///< "replay"
+  std::string detail;         ///< "shot 11 at half speed"
+  std::string camera;         ///< the replay's camera in words
+};
+
 /// What the picture shows, as plain values (so it can be drawn for a made-up shot too).
 struct TimelineData {
   std::string title;
@@ -88,6 +99,7 @@ struct TimelineData {
   /// A scene of several shots: one section per shot, drawn as a band of labelled sections above the
   /// rows and separators through them; empty for a scene of one shot (its picture as before).
   std::vector<TimelineShotSection> shots;
+  std::optional<TimelineReplay> replay;  ///< a game's replay, drawn after the game's end
 };
 
 TimelineData timeline_data(const Shot& shot);

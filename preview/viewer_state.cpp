@@ -39,12 +39,31 @@ void OrbitCamera::zoom(double steps) {
 
 double ViewerState::duration() const { return shot ? shot->timeline.duration() : 0; }
 
-void ViewerState::set_time(double t) { time = std::clamp(t, 0.0, duration()); }
+void ViewerState::set_time(double t) {
+  time = std::clamp(t, 0.0, duration());
+  replay = false;
+}
+
+MovieFrame ViewerState::shown() const {
+  if (!shot || !replay) return {time, false, 1.0};
+  return shot->movie.at(movie_time());
+}
+
+double ViewerState::movie_duration() const { return shot ? shot->movie.duration() : 0; }
+
+double ViewerState::movie_time() const { return shot ? shot->movie.movie_time(time, replay) : time; }
+
+void ViewerState::set_movie_time(double t) {
+  if (!shot) return;
+  const MovieFrame frame = shot->movie.at(std::clamp(t, 0.0, movie_duration()));
+  time = frame.time;
+  replay = frame.replay;
+}
 
 void ViewerState::step_frames(int frames) {
   // Land on frame boundaries, as the movie samples them.
-  const double frame = std::round(time * fps) + frames;
-  set_time(frame / fps);
+  const double frame = std::round(movie_time() * fps) + frames;
+  set_movie_time(frame / fps);
   playing = false;
 }
 

@@ -37,7 +37,8 @@ struct ViewerState {
   TimelineData timeline;  ///< the scrub bar's contents, for the current shot
   OverlayPaths paths;     ///< the overlays' paths, for the current shot
 
-  double time = 0;  ///< s
+  double time = 0;      ///< s, the simulation's
+  bool replay = false;  ///< the time is shown in the game's replay (Shot::movie), from the replay's camera
   bool playing = false;
   double speed = 1.0;
   int fps = 30;  ///< step size of the frame keys
@@ -50,7 +51,17 @@ struct ViewerState {
   bool notice_is_error = false;
 
   double duration() const;
+  /// Shows simulation time t (out of the replay).
   void set_time(double t);
+  /// The movie's frame shown: the time, in the replay or not (frames.h).
+  MovieFrame shown() const;
+  /// s of the movie: the simulation, then a game's replay at half speed.
+  double movie_duration() const;
+  /// s into the movie where the window is.
+  double movie_time() const;
+  /// Shows what the movie shows `t` s into it: past the game's end, the replay.
+  void set_movie_time(double t);
+  /// Steps by frames of the movie (into and through the replay).
   void step_frames(int frames);
   /// Jumps to the next (+1) or previous (-1) event.
   void step_event(int direction);

@@ -46,7 +46,7 @@ void transport(ViewerState& state) {
   if (ImGui::Button("< frame")) state.step_frames(-1);
   ImGui::SameLine();
   if (ImGui::Button(state.playing ? "  pause  " : "  play  ")) {
-    if (!state.playing && state.time >= state.duration()) state.set_time(0);
+    if (!state.playing && state.movie_time() >= state.movie_duration()) state.set_time(0);
     state.playing = !state.playing;
   }
   ImGui::SameLine();
@@ -54,7 +54,7 @@ void transport(ViewerState& state) {
   ImGui::SameLine();
   if (ImGui::Button("event >>")) state.step_event(1);
   ImGui::SameLine();
-  if (ImGui::Button(">|")) state.set_time(state.duration());
+  if (ImGui::Button(">|")) state.set_movie_time(state.movie_duration());
   if (state.shot_count() > 1) shot_buttons(state);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
@@ -68,8 +68,8 @@ void transport(ViewerState& state) {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  ImGui::Text("t = %.3f s / %.3f s   frame %d", state.time, state.duration(),
-              static_cast<int>(std::lround(state.time * state.fps)));
+  ImGui::Text("t = %.3f s / %.3f s   frame %d%s", state.time, state.duration(),
+              static_cast<int>(std::lround(state.movie_time() * state.fps)), state.replay ? "   replay" : "");
 }
 
 void switches(ViewerState& state) {
@@ -96,10 +96,11 @@ void scrub_bar(ViewerState& state, const UiFonts& fonts) {
   const float width = ImGui::GetContentRegionAvail().x;
   const float height = compact_timeline_height(fonts);
   ImGui::InvisibleButton("scrub", ImVec2(width, height));
-  TimelineLayout layout{at.x, at.y, width, height, true, state.time};
+  // The bar runs over the movie's time: past the game's end, its replay.
+  TimelineLayout layout{at.x, at.y, width, height, true, state.movie_time()};
   const TimelineAxis axis = draw_timeline(*ImGui::GetWindowDrawList(), state.timeline, fonts, layout);
   if (ImGui::IsItemActive() && state.shot) {
-    state.set_time(axis.time_at(ImGui::GetIO().MousePos.x));
+    state.set_movie_time(axis.time_at(ImGui::GetIO().MousePos.x));
     state.playing = false;
   }
 }

@@ -113,7 +113,7 @@ bool handle_keys(ViewerState& state, GLFWwindow* window, const ViewRect& view) {
   if (io.WantCaptureKeyboard) return false;
   const bool shift = io.KeyShift;
   if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) {
-    if (state.time >= state.duration()) state.set_time(0);
+    if (state.movie_time() >= state.movie_duration()) state.set_time(0);
     state.playing = !state.playing;
   }
   if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) shift ? state.step_event(1) : state.step_frames(1);
@@ -123,7 +123,7 @@ bool handle_keys(ViewerState& state, GLFWwindow* window, const ViewRect& view) {
   if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET)) state.step_shot(1);
   if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET)) state.step_shot(-1);
   if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) state.set_time(0);
-  if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) state.set_time(state.duration());
+  if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) state.set_movie_time(state.movie_duration());
   if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) state.free_camera = !state.free_camera;
   if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state.overlays.paths = !state.overlays.paths;
   if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.overlays.events = !state.overlays.events;
@@ -303,12 +303,13 @@ bool advance_time(ViewerState& state, const PreviewOptions& options, double sinc
   // A test drives the window by itself: it scrubs from start to end over --quit-after seconds.
   if (options.quit_after > 0) {
     const double progress = std::min(since_start / options.quit_after, 1.0);
-    state.set_time(progress * state.duration());
+    state.set_movie_time(progress * state.movie_duration());
     return progress >= 1.0;
   }
   if (state.playing) {
-    state.set_time(state.time + delta * state.speed);
-    if (state.time >= state.duration()) state.playing = false;
+    // On through the movie: past the game's end into its replay, at the replay's half speed.
+    state.set_movie_time(state.movie_time() + delta * state.speed);
+    if (state.movie_time() >= state.movie_duration()) state.playing = false;
   }
   return false;
 }
@@ -320,7 +321,7 @@ void draw_view(ViewerState& state, SceneRenderer& renderer, const ViewRect& view
   // ImGui works in window units, GL in framebuffer pixels; they differ on high-density screens.
   const double sx = fb_width / std::max(1.0, double(io.DisplaySize.x));
   const double sy = fb_height / std::max(1.0, double(io.DisplaySize.y));
-  FrameState frame = scripted_frame(*state.shot, state.time);
+  FrameState frame = scripted_frame(*state.shot, state.shown());
   if (state.free_camera) frame.camera = state.orbit.view();
   renderer.set_multisampling(state.antialias ? 4 : 0);
   const int w = static_cast<int>(view.width * sx), h = static_cast<int>(view.height * sy);

@@ -215,4 +215,19 @@ SharedOption apply_shared_option(ArgReader& reader, SharedOptions& o, std::strin
   return SharedOption::applied;
 }
 
+OptionRow replay_option_row(bool& replay) {
+  return {"--replay", "on|off",
+          "off: a game's movie ends with the game; on: the shot that won it follows,\n"
+          "again at half speed from a second camera (default: on)",
+          [&replay](const std::string& name, const std::string& value, std::string& message) {
+            const auto choice = choice_index("on|off", value);
+            if (!choice) {
+              message = bad_value_message(name, value, "on or off");
+              return false;
+            }
+            replay = *choice == 0;
+            return true;
+          }};
+}
+
 }  // namespace bsim

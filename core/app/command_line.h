@@ -85,6 +85,10 @@ std::optional<std::size_t> choice_index(std::string_view choices, std::string_vi
 /// --camera's values, for both programs' rows and apply_shared_option.
 inline constexpr std::string_view kCameraChoices = "auto|scene";
 
+/// --replay: whether a game's movie shows its winning shot again, slowed, after the game. One row for
+/// both programs (the export's movie, the preview's animatic, window and timeline picture).
+OptionRow replay_option_row(bool& replay);
+
 /// --strict's help, for both programs' rows: each extension the scene parser rejects under --strict.
 inline constexpr std::string_view kStrictHelp =
     "accept only the original scene language: no comments, short ball line,\n"

@@ -7,6 +7,7 @@
 
 #include "loudness.h"
 #include "music_bed.h"
+#include "resample.h"
 #include "rolling.h"
 #include "room.h"
 #include "sound_mix.h"
@@ -27,18 +28,88 @@ void add(AudioBuffer& to, const AudioBuffer& from, double gain) {
 
 }  // namespace
 
-bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
-                    std::string& error) {
-  AudioBuffer music;
-  music.sample_rate = kSampleRate;
-  if (!options.music_path.empty() && !load_music_bed(options.music_path, sample_count, music, error)) return false;
+namespace {
+
+/// The shot's effects as `shot.camera` hears them: the impacts, the rolling and the room's
+/// reverberation of them, `sample_count` samples per channel from the simulation's start.
+void mix_effects(const SoundSource& shot, double lead, std::size_t sample_count, AudioBuffer& out) {
   out.sample_rate = kSampleRate;
   out.left.assign(sample_count, 0.0f);
   out.right.assign(sample_count, 0.0f);
   std::vector<float> send(sample_count, 0.0f);
-  mix_cues(sound_cues(shot), shot.timeline.physics(), options.lead, out, &send);
+  mix_cues(sound_cues(shot), shot.timeline.physics(), lead, out, &send);
   mix_rolling(shot, out, &send);
   add_reverb(send, out);
+}
+
+/// Whether the movie is the shot as it plays: one segment from the start at rate 1, its own camera.
+bool plain_movie(const SoundMovie& movie) {
+  if (!movie.movie) return true;
+  const auto& segments = movie.movie->segments();
+  return segments.size() == 1 && segments[0].start == 0 && segments[0].rate == 1 && !segments[0].replay;
+}
+
+/// Each segment of the movie from the effects heard by its camera: `main` for the plain segments,
+/// the replay camera's (made here) for the replay's. A sound plays `lead` before its frame in a slowed
+/// segment too.
+void cut_movie_effects(const SoundSource& shot, const SoundMovie& movie, double lead, const AudioBuffer& main,
+                       AudioBuffer& out) {
+  const auto& segments = movie.movie->segments();
+  AudioBuffer replay;
+  if (movie.replay_camera) {
+    // Heard up to a second past the last replayed instant: what comes later is never played.
+    double until = 0;
+    for (const MovieSegment& segment : segments)
+      if (segment.replay) until = std::max(until, segment.end + 1.0);
+    const auto count = std::min(main.left.size(), static_cast<std::size_t>(std::llround(until * kSampleRate)));
+    mix_effects({shot.scene, shot.timeline, *movie.replay_camera}, lead, count, replay);
+  }
+  for (std::size_t j = 0; j < segments.size(); ++j) {
+    const MovieSegment& segment = segments[j];
+    const AudioBuffer& heard = segment.replay && movie.replay_camera ? replay : main;
+    const auto at = static_cast<std::size_t>(std::llround(movie.movie->segment_begin(j) * kSampleRate));
+    const std::size_t count = std::min(static_cast<std::size_t>(std::llround(segment.length() * kSampleRate)),
+                                       out.left.size() - std::min(at, out.left.size()));
+    if (segment.rate == 1) {  // as it plays: the samples themselves
+      const auto from = static_cast<std::size_t>(std::llround(segment.start * kSampleRate));
+      for (std::size_t i = 0; i < count && from + i < heard.left.size(); ++i) {
+        out.left[at + i] = heard.left[from + i];
+        out.right[at + i] = heard.right[from + i];
+      }
+      continue;
+    }
+    // Slowed: the recording read from where it holds the segment's first frame's sound, `lead` ahead.
+    const double from = (segment.start - lead * (1 - segment.rate)) * kSampleRate;
+    const std::vector<float> left = resample(heard.left, from, segment.rate, count);
+    const std::vector<float> right = resample(heard.right, from, segment.rate, count);
+    std::copy(left.begin(), left.end(), out.left.begin() + static_cast<std::ptrdiff_t>(at));
+    std::copy(right.begin(), right.end(), out.right.begin() + static_cast<std::ptrdiff_t>(at));
+  }
+}
+
+}  // namespace
+
+bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::size_t sample_count, AudioBuffer& out,
+                    std::string& error) {
+  return mix_movie_soundtrack(shot, {}, options, sample_count, out, error);
+}
+
+bool mix_movie_soundtrack(const SoundSource& shot, const SoundMovie& movie, const SoundOptions& options,
+                          std::size_t sample_count, AudioBuffer& out, std::string& error) {
+  AudioBuffer music;
+  music.sample_rate = kSampleRate;
+  if (!options.music_path.empty() && !load_music_bed(options.music_path, sample_count, music, error)) return false;
+  if (plain_movie(movie)) {
+    mix_effects(shot, options.lead, sample_count, out);
+  } else {
+    AudioBuffer main;
+    const auto simulated = static_cast<std::size_t>(std::llround(shot.timeline.duration() * kSampleRate));
+    mix_effects(shot, options.lead, simulated, main);
+    out.sample_rate = kSampleRate;
+    out.left.assign(sample_count, 0.0f);
+    out.right.assign(sample_count, 0.0f);
+    cut_movie_effects(shot, movie, options.lead, main, out);
+  }
   if (!options.music_path.empty()) {
     // The bed sits kMusicUnderEffects under the effects (or under the target if nothing is heard).
     // Calibrated, the effects are measured as they will be heard, at the calibrated gain.

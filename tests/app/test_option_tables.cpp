@@ -79,6 +79,7 @@ TEST_SUITE("option tables") {
          {"--partition=short",
           [](const E& o) { return o.sbatch_options == std::vector<std::string>{"--partition=short"}; }}},
         {"--frames", {"4-9", [](const E& o) { return o.first_frame == 4 && o.last_frame == 9; }}},
+        {"--replay", {"off", [](const E& o) { return !o.replay; }}},
     };
     check_dispatch<E>(export_option_table, samples);
   }
@@ -96,6 +97,7 @@ TEST_SUITE("option tables") {
         {"--write-scene", {"-", [](const P& o) { return o.write_scene == "-"; }}},
         {"--quit-after", {"1.5", [](const P& o) { return o.quit_after == 1.5; }}},
         {"--screenshot", {"s.png", [](const P& o) { return o.screenshot == "s.png"; }}},
+        {"--replay", {"off", [](const P& o) { return !o.replay; }}},
     };
     check_dispatch<P>(preview_option_table, samples);
   }

@@ -45,11 +45,11 @@ TEST_SUITE("camera_csv") {
     std::istringstream in(out.str());
     std::string line;
     REQUIRE(std::getline(in, line));
-    CHECK(line == "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating");
+    CHECK(line == "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay");
     int rows = 0, inside = 0;
     while (std::getline(in, line)) {
       const std::vector<std::string> f = split(line);
-      REQUIRE(f.size() == 9);
+      REQUIRE(f.size() == 10);
       CHECK(f[0] == std::to_string(rows));
       const double t = frame_time(rows, fps);
       CHECK(f[1] == format_number(t));
@@ -59,6 +59,7 @@ TEST_SUITE("camera_csv") {
         CHECK(std::strtod(f[5 + i].c_str(), nullptr) == pose.look_at[i]);
       }
       CHECK(f[8] == (pose.interpolating ? "1" : "0"));
+      CHECK(f[9] == "0");  // not a game: no replay
       inside += pose.interpolating;
       ++rows;
     }
@@ -83,7 +84,7 @@ TEST_SUITE("camera_csv") {
       else
         CHECK(text == first);
     }
-    CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating\n0,0,-1.5,-1.5,1.2,0,0,0,0\n",
+    CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay\n0,0,-1.5,-1.5,1.2,0,0,0,0,0\n",
                       0) == 0);
   }
 }

@@ -143,7 +143,7 @@ TEST_SUITE("captions") {
 
   TEST_CASE("a scene that is no game has no captions; a game's caption moves away from the cue ball") {
     const std::unique_ptr<Shot> plain = test::load_scene("ball 0 0 0\nball 1 0.5 0\ncue 0 0\nstroke 1 0 0 0\n", "plain");
-    CHECK(frame_captions(*plain, plain_frame_moments(*plain, 3, 30), 1280, 720).empty());
+    CHECK(frame_captions(*plain, movie_frame_moments(*plain, 30), 1280, 720).empty());
 
     ShotResult r = load_shot("game 9ball seed 2 shots 1\nplayer Ann\nplayer Bo\ncue 0 90\nstroke 0.4 0 0 0\n", "game");
     REQUIRE(r.shot);

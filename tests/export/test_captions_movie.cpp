@@ -150,7 +150,9 @@ TEST_SUITE("captions") {
     // Frames 12 and 13 (6 and 6.5 s): the balls at rest under the still camera, the same .pov; the
     // second a replay's frame, so its caption differs.
     const int fps = 2, total = 14;
-    std::vector<FrameMoment> moments = plain_frame_moments(*shot, total, fps);
+    std::vector<FrameMoment> moments = movie_frame_moments(*shot, fps);
+    REQUIRE(moments.size() >= static_cast<std::size_t>(total));
+    moments.resize(total);
     moments[13].replay = true;
     const std::vector<FrameCaption> captions = frame_captions(*shot, moments, 160, 90);
     dir.file(kCaptionsName, captions_text(captions));

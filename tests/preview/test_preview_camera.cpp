@@ -38,14 +38,15 @@ std::vector<CameraRow> read_camera_csv(const std::string& path) {
   std::ifstream in(path);
   std::string line;
   std::getline(in, line);
-  REQUIRE(line == "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating");
+  REQUIRE(line == "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay");
   std::vector<CameraRow> rows;
   while (std::getline(in, line)) {
     std::stringstream fields(line);
-    std::string f[9];
+    std::string f[10];
     for (std::string& field : f) std::getline(fields, field, ',');
     rows.push_back({std::stoi(f[0]), std::stod(f[1]), Vec3(std::stod(f[2]), std::stod(f[3]), std::stod(f[4])),
                     Vec3(std::stod(f[5]), std::stod(f[6]), std::stod(f[7])), f[8] == "1"});
+    CHECK(f[9] == "0");  // not a game: no replay
   }
   return rows;
 }
