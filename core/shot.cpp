@@ -23,7 +23,6 @@ FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record) {
   return notes;
 }
 
-
 namespace {
 
 /// The game's winning shot and the ball that won it (the 10, 9 or 8 made on it; none when the game
@@ -94,8 +93,8 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
   }
   // A game with no camera block of its own is filmed by the director, as a match is televised.
   if (camera == CameraChoice::automatic || (shot->game && shot->scene.camera.empty())) {
-    shot->directed = direct_camera(shot->scene, shot->timeline, shot->game ? game_filming_notes(shot->scene, *shot->game)
-                                                                           : FilmingNotes{});
+    shot->directed = direct_camera(shot->scene, shot->timeline,
+                                   shot->game ? game_filming_notes(shot->scene, *shot->game) : FilmingNotes{});
     shot->scene.camera = shot->directed->shots;
   }
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);

@@ -204,10 +204,7 @@ OptionTable export_option_table(ExportOptions& o) {
        "bring this shot's sound track to this integrated loudness, -40 to -10,\nor off: the mix's own "
        "level (default: one calibrated level for every shot,\nthe built-in break at -16 LUFS)",
        [&o](S n, S v, std::string& m) { return apply_loudness(o, n, v, m); }},
-      {"--strict",
-       "",
-       kStrictHelp,
-       {}},
+      {"--strict", "", kStrictHelp, {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",
        kCameraChoices,

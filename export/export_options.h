@@ -38,7 +38,7 @@ struct ExportOptions : SharedOptions {
   bool captions = true;       ///< --captions: a game's movie has captions
   double audio_lead = 0.0;    ///< s; set to the documented default by the parser
   std::string music_path;
-  SoundLevel level;  ///< how the sound track's level is set (default: calibrated)
+  SoundLevel level;    ///< how the sound track's level is set (default: calibrated)
   bool replay = true;  ///< --replay off: a game's movie ends with the game, without its winning shot again
   FarmMode farm = FarmMode::none;
   int chunk = 0;                            ///< --chunk: frames a farm task renders; 0: chosen from size and quality

@@ -17,7 +17,8 @@ constexpr const char* kHeader =
 
 /// A field of the file: tabs and line ends would break it, so they become spaces.
 std::string field(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
   return text;
 }
 
@@ -154,7 +155,9 @@ bool parse_caption(const std::string& line, FrameCaption& f) {
   f = {};
   Caption& c = f.caption;
   f.right = fields[0] == "right";
-  c.rules = fields[1] == "8ball" ? RackGame::eight_ball : fields[1] == "10ball" ? RackGame::ten_ball : RackGame::nine_ball;
+  c.rules = fields[1] == "8ball"    ? RackGame::eight_ball
+            : fields[1] == "10ball" ? RackGame::ten_ball
+                                    : RackGame::nine_ball;
   if (fields[2] != "0" && fields[2] != "1") return false;
   c.at_table = fields[2] == "1" ? 1 : 0;
   if (fields[3].empty() || fields[3].size() > 6 || fields[3].find_first_not_of("0123456789") != std::string::npos)
@@ -165,8 +168,8 @@ bool parse_caption(const std::string& line, FrameCaption& f) {
   c.replay = fields[8] == "replay";
   for (std::size_t i = 9; i + 2 < fields.size(); i += 3) {
     CaptionCall call{CaptionCall::Kind::foul, fields[i + 1], fields[i + 2]};
-    for (const auto kind : {CaptionCall::Kind::foul, CaptionCall::Kind::push_out, CaptionCall::Kind::winner,
-                            CaptionCall::Kind::stopped})
+    for (const auto kind :
+         {CaptionCall::Kind::foul, CaptionCall::Kind::push_out, CaptionCall::Kind::winner, CaptionCall::Kind::stopped})
       if (fields[i] == kind_word(kind)) call.kind = kind;
     c.calls.push_back(call);
   }

@@ -222,7 +222,7 @@ void draw_ball(Canvas& canvas, const Fonts& f, double s, double cx, double cy, i
     alpha = 255;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= (r - ring) * (r - ring)) return Rgb{200, 206, 218};  // a light rim: the 8 on the dark panel
-    if (d2 <= 0.25 * r * r) return ivory;                           // the number's disc
+    if (d2 <= 0.25 * r * r) return ivory;                          // the number's disc
     return stripe && (dy < -0.64 * r || dy > 0.64 * r) ? ivory : color;
   });
   const std::string text = std::to_string(number);
@@ -249,8 +249,8 @@ void draw_panel(Canvas& canvas, const Fonts& f, const Caption& c, double s, doub
     draw_text(canvas, face, kNameSize * s, x0 + pad + kAccentBar * s, centred_baseline(face, kNameSize * s, middle),
               name, up ? kWhite : kDim);
     const double w = text_width(f.bold, kSmallSize * s, corner[p]);
-    draw_text(canvas, f.bold, kSmallSize * s, x1 - pad - w, centred_baseline(f.bold, kSmallSize * s, middle),
-              corner[p], kSmallText);
+    draw_text(canvas, f.bold, kSmallSize * s, x1 - pad - w, centred_baseline(f.bold, kSmallSize * s, middle), corner[p],
+              kSmallText);
   }
   const double rule = top + 2 * kNameRow * s;
   canvas.fill(x0 + pad, rule, x1 - pad, rule + std::max(1.0, s), kSmallText, 80);

@@ -433,9 +433,9 @@ class FrameRendering {
   ProcessPool<Attempt> pool_;
   ProgressReporter progress_;
   std::deque<Attempt> waiting_;
-  std::map<int, PartialFrame> partial_;  ///< partial frames not yet developed
-  std::map<int, int> dependents_;        ///< frame -> partial frames still to be laid over it
-  std::map<int, HdrImage> kept_;         ///< pictures (before developing) that partial frames still need
+  std::map<int, PartialFrame> partial_;        ///< partial frames not yet developed
+  std::map<int, int> dependents_;              ///< frame -> partial frames still to be laid over it
+  std::map<int, HdrImage> kept_;               ///< pictures (before developing) that partial frames still need
   const std::map<int, std::string> captions_;  ///< each captioned frame's line of captions.txt
   RunOutcome outcome_ = RunOutcome::done;
   int failed_frame_ = -1;

@@ -205,10 +205,7 @@ OptionTable preview_option_table(PreviewOptions& o) {
          return true;
        },
        true, kOverlayNames},
-      {"--strict",
-       "",
-       kStrictHelp,
-       {}},
+      {"--strict", "", kStrictHelp, {}},
       {"--quiet", "", "print no progress or closing lines (errors and warnings still print)", {}},
       {"--camera",
        kCameraChoices,

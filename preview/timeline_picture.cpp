@@ -1035,8 +1035,12 @@ void add_replay(const Shot& shot, TimelineData& data) {
   const std::optional<MovieSegment> replay = shot.movie.replay();
   if (!replay) return;
   const int shot_number = shot.timeline.shot_at(replay->end) + 1;
-  data.replay = TimelineReplay{replay->start, replay->end, replay->length(), "replay",
-                               "shot " + std::to_string(shot_number) + " at half speed", shot.replay_what};
+  data.replay = TimelineReplay{replay->start,
+                               replay->end,
+                               replay->length(),
+                               "replay",
+                               "shot " + std::to_string(shot_number) + " at half speed",
+                               shot.replay_what};
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "; the movie %.0f s with the replay", shot.movie.duration());
   data.title += buffer;

@@ -26,8 +26,7 @@ CaptionCall foul_call(const GameRecord& record, const TurnVerdict& v) {
   if (v.winner && record.rules != RackGame::eight_ball) parts.push_back("third foul in a row");
   if (v.in_hand == InHand::anywhere) parts.push_back("ball in hand");
   if (v.in_hand == InHand::kitchen) parts.push_back("ball in hand behind the head string");
-  if (!v.winner && v.fouls_in_row == 2 && record.rules != RackGame::eight_ball)
-    parts.push_back("second foul in a row");
+  if (!v.winner && v.fouls_in_row == 2 && record.rules != RackGame::eight_ball) parts.push_back("second foul in a row");
   return {CaptionCall::Kind::foul, "FOUL", joined(parts, " \xC2\xB7 ")};  // a middle dot between
 }
 
@@ -48,8 +47,8 @@ std::vector<CaptionCall> aftermath(const GameRecord& record, int k) {
                      incoming + (v.continues ? " hands the table back" : " takes the table")});
   }
   if (v.foul.empty() && !v.spotted.empty() && !v.winner)
-    calls.push_back({CaptionCall::Kind::push_out, "SPOTTED", "the " + std::to_string(v.spotted.front()) +
-                                                                 " goes back on the foot spot"});
+    calls.push_back({CaptionCall::Kind::push_out, "SPOTTED",
+                     "the " + std::to_string(v.spotted.front()) + " goes back on the foot spot"});
   if (v.call == "solids" || v.call == "stripes")
     calls.push_back({CaptionCall::Kind::push_out, v.call == "solids" ? "SOLIDS" : "STRIPES",
                      name_of(record, turn.player) + " plays the " + v.call});
@@ -68,8 +67,7 @@ std::vector<int> balls_at(const GameRecord& record, const Timeline& timeline, co
   if (t >= span.rest) return record.turns[static_cast<std::size_t>(k)].on_table;
   std::vector<int> balls = k == 0 ? rack : record.turns[static_cast<std::size_t>(k - 1)].on_table;
   for (const PocketDrop& drop : timeline.pocket_drops()) {
-    if (drop.time < span.start || drop.time > t || drop.ball < 0 ||
-        drop.ball >= static_cast<int>(scene.balls.size()))
+    if (drop.time < span.start || drop.time > t || drop.ball < 0 || drop.ball >= static_cast<int>(scene.balls.size()))
       continue;
     std::erase(balls, scene.balls[static_cast<std::size_t>(drop.ball)].number);
   }

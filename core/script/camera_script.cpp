@@ -121,8 +121,8 @@ CameraShot CameraScript::default_shot(const Scene& scene) {
   const double distance = 1.15 * half_x / std::tan(0.5 * kCameraFovDeg * kDegToRad) + half_y;
   // Under the room's ceiling (a camera above it sees only the ceiling's back: a black picture): the
   // elevation comes down, the distance kept, until it is kDefaultCeilingRoom under it.
-  const double highest = std::min(distance * std::sin(kDefaultElevationDeg * kDegToRad),
-                                  kRoom.ceiling - kDefaultCeilingRoom);
+  const double highest =
+      std::min(distance * std::sin(kDefaultElevationDeg * kDegToRad), kRoom.ceiling - kDefaultCeilingRoom);
   const double elevation = std::asin(std::clamp(highest / distance, 0.0, 1.0));
   CameraShot shot;
   shot.event = 0;

@@ -19,8 +19,8 @@ constexpr double kRestHold = 0.25;
 struct PocketPlace {
   double back = 0, height = 0, turn_deg = 0;
 };
-constexpr PocketPlace kPocketPlaces[] = {{0.5, 0.2, 0},   {0.5, 0.2, 30},  {0.5, 0.2, -30},
-                                         {0.9, 0.45, 0},  {0.9, 0.45, 35}, {0.9, 0.45, -35}};
+constexpr PocketPlace kPocketPlaces[] = {{0.5, 0.2, 0},  {0.5, 0.2, 30},  {0.5, 0.2, -30},
+                                         {0.9, 0.45, 0}, {0.9, 0.45, 35}, {0.9, 0.45, -35}};
 /// The camera across the line of the shot: m from the line, m above the bed.
 constexpr double kAcrossDistance = 1.5, kAcrossHeight = 0.6;
 /// s before the winning ball drops that the camera stops turning after it and holds.

@@ -42,7 +42,8 @@ std::vector<float> resample(const std::vector<float>& samples, double from, doub
     const double at = from + static_cast<double>(j) * step;
     const auto centre = static_cast<long>(std::floor(at));
     double sum = 0;
-    for (long i = std::max(0L, centre - kResampleHalfWidth + 1); i <= std::min(n - 1, centre + kResampleHalfWidth); ++i) {
+    for (long i = std::max(0L, centre - kResampleHalfWidth + 1); i <= std::min(n - 1, centre + kResampleHalfWidth);
+         ++i) {
       // The kernel at `at - i` samples, read from its table.
       const double position = (at - static_cast<double>(i) + kResampleHalfWidth) * kTableSteps;
       const auto k = static_cast<std::size_t>(position);

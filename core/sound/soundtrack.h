@@ -31,7 +31,7 @@ bool mix_soundtrack(const SoundSource& shot, const SoundOptions& options, std::s
 /// The movie a sound track follows when it is not the shot as it plays (frames.h): its segments, and
 /// the replay's camera, which hears the replay's segment.
 struct SoundMovie {
-  const MovieTimeline* movie = nullptr;          ///< none: the shot as it plays
+  const MovieTimeline* movie = nullptr;         ///< none: the shot as it plays
   const CameraScript* replay_camera = nullptr;  ///< hears the replay's segments; none: the shot's camera does
 };
 

@@ -69,9 +69,10 @@ bool play_one(const std::string& rules, unsigned long seed, double noise, games:
   const checks::Faults f = checks::find_faults(game.scene, game.timeline);
   faults += static_cast<int>(f.total());
   if (f.total() > 0)
-    std::printf("  %s seed %lu noise %g: %ld overlaps, %ld escapes, %ld not finite, %ld missed contacts, %ld energy "
-                "gains (deepest %.3g mm)\n",
-                rules.c_str(), seed, noise, f.overlaps, f.escapes, f.nans, f.missed, f.energy_gains, f.deepest * 1e3);
+    std::printf(
+        "  %s seed %lu noise %g: %ld overlaps, %ld escapes, %ld not finite, %ld missed contacts, %ld energy "
+        "gains (deepest %.3g mm)\n",
+        rules.c_str(), seed, noise, f.overlaps, f.escapes, f.nans, f.missed, f.energy_gains, f.deepest * 1e3);
   // The independent judge reads the game as events.json has it.
   Shot shot;
   shot.scene = game.scene;

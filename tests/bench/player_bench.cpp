@@ -205,7 +205,8 @@ Scene end_position(std::uint64_t seed) {
     for (bool free = false; !free;) {
       scene.balls[i].position = Vec3(uniform(-1.2, 1.2), uniform(-0.55, 0.55), R);
       free = true;
-      for (std::size_t j = 0; j < i; ++j) free = free && (scene.balls[j].position - scene.balls[i].position).norm() > 4 * R;
+      for (std::size_t j = 0; j < i; ++j)
+        free = free && (scene.balls[j].position - scene.balls[i].position).norm() > 4 * R;
     }
   }
   return scene;
@@ -225,7 +226,8 @@ bool run_out(Scene table, double noise, bool look_ahead, std::uint64_t seed, Pla
     const Played p = play(table, plan, rules, noise, seed * 7919 + static_cast<std::uint64_t>(k));
     if (p.scratch || !p.legal_first) return false;
     bool called = false;
-    for (std::size_t i = 0; i < p.made.size(); ++i) called = called || (p.made[i] == plan.call.ball && p.pockets[i] == plan.call.pocket);
+    for (std::size_t i = 0; i < p.made.size(); ++i)
+      called = called || (p.made[i] == plan.call.ball && p.pockets[i] == plan.call.pocket);
     if (!called) return false;
     if (std::find(p.made.begin(), p.made.end(), 9) != p.made.end()) return true;
   }

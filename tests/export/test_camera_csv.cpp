@@ -84,7 +84,8 @@ TEST_SUITE("camera_csv") {
       else
         CHECK(text == first);
     }
-    CHECK(first.rfind("frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay\n0,0,-1.5,-1.5,1.2,0,0,0,0,0\n",
-                      0) == 0);
+    CHECK(first.rfind(
+              "frame,time,cam_x,cam_y,cam_z,look_x,look_y,look_z,interpolating,replay\n0,0,-1.5,-1.5,1.2,0,0,0,0,0\n",
+              0) == 0);
   }
 }

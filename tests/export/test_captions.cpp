@@ -61,7 +61,8 @@ std::vector<std::uint8_t> developed(const HdrImage& image, const FrameCaption* c
 int first_differing_row(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int width, int height) {
   const std::size_t row = 3 * static_cast<std::size_t>(width);
   for (int y = 0; y < height; ++y)
-    if (!std::equal(a.begin() + static_cast<std::ptrdiff_t>(y * row), a.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+    if (!std::equal(a.begin() + static_cast<std::ptrdiff_t>(y * row),
+                    a.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
                     b.begin() + static_cast<std::ptrdiff_t>(y * row)))
       return y;
   return height;
@@ -142,7 +143,8 @@ TEST_SUITE("captions") {
   }
 
   TEST_CASE("a scene that is no game has no captions; a game's caption moves away from the cue ball") {
-    const std::unique_ptr<Shot> plain = test::load_scene("ball 0 0 0\nball 1 0.5 0\ncue 0 0\nstroke 1 0 0 0\n", "plain");
+    const std::unique_ptr<Shot> plain =
+        test::load_scene("ball 0 0 0\nball 1 0.5 0\ncue 0 0\nstroke 1 0 0 0\n", "plain");
     CHECK(frame_captions(*plain, movie_frame_moments(*plain, 30), 1280, 720).empty());
 
     ShotResult r = load_shot("game 9ball seed 2 shots 1\nplayer Ann\nplayer Bo\ncue 0 90\nstroke 0.4 0 0 0\n", "game");

@@ -183,7 +183,8 @@ TEST_SUITE("captions") {
     std::string error;
     REQUIRE_MESSAGE(render_frames(frames, jobs, total, settings, no_store, error) == RunOutcome::done, error);
     CHECK(test::require_file(counter) == "run\n");
-    const Picture first = load(dir.path / (frame_name(12) + ".png")), replay = load(dir.path / (frame_name(13) + ".png"));
+    const Picture first = load(dir.path / (frame_name(12) + ".png")),
+                  replay = load(dir.path / (frame_name(13) + ".png"));
     const int row = first_differing_row(first, replay);
     CHECK(row >= 45);
     CHECK(row < 90);
@@ -194,17 +195,21 @@ TEST_SUITE("captions") {
     test::TempDir dir;
     const std::string scene = dir.file("game.scn", kGame);
     // A stand-in sbatch that takes every job: ids 41, 42.
-    const std::string sbatch = dir.file("bin/sbatch",
-                                        "#!/bin/sh\ncase \"$*\" in *--test-only*) echo 'sbatch: Job 7 to start'; exit 0;; "
-                                        "esac\nn=$(cat " + quoted((dir.path / "n").string()) + " 2>/dev/null || echo 40)\n"
-                                        "echo $((n + 1)) > " + quoted((dir.path / "n").string()) + "\necho $((n + 1))\n");
+    const std::string sbatch =
+        dir.file("bin/sbatch",
+                 "#!/bin/sh\ncase \"$*\" in *--test-only*) echo 'sbatch: Job 7 to start'; exit 0;; "
+                 "esac\nn=$(cat " +
+                     quoted((dir.path / "n").string()) +
+                     " 2>/dev/null || echo 40)\n"
+                     "echo $((n + 1)) > " +
+                     quoted((dir.path / "n").string()) + "\necho $((n + 1))\n");
     fs::permissions(sbatch, fs::perms::owner_all);
     const fs::path farm = dir.path / "farm", local = dir.path / "local";
     const std::string env = "BSIM_CACHE_DIR=off TMPDIR=" + quoted(dir.path.string()) + " ";
     const std::string program = quoted(test::bin("billiards-export"));
-    test::CommandResult r = test::run_command("PATH=" + quoted((dir.path / "bin").string()) + ":\"$PATH\" " + env +
-                                              program + " " + quoted(scene) + " --farm slurm -o " +
-                                              quoted(farm.string()) + kOptions);
+    test::CommandResult r =
+        test::run_command("PATH=" + quoted((dir.path / "bin").string()) + ":\"$PATH\" " + env + program + " " +
+                          quoted(scene) + " --farm slurm -o " + quoted(farm.string()) + kOptions);
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     CHECK(fs::exists(farm / "frames" / kCaptionsName));
     r = test::run_command(env + program + " " + quoted(farm.string()) + " --farm render --frames 0-13");

@@ -46,11 +46,11 @@ std::vector<Row> read_rows(const std::string& csv) {
     std::stringstream fields(line);
     for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
     REQUIRE(f.size() == 10);
-    rows.push_back({std::atoi(f[0].c_str()),
-                    std::strtod(f[1].c_str(), nullptr),
-                    {std::strtod(f[2].c_str(), nullptr), std::strtod(f[3].c_str(), nullptr),
-                     std::strtod(f[4].c_str(), nullptr)},
-                    f[9] == "1"});
+    rows.push_back(
+        {std::atoi(f[0].c_str()),
+         std::strtod(f[1].c_str(), nullptr),
+         {std::strtod(f[2].c_str(), nullptr), std::strtod(f[3].c_str(), nullptr), std::strtod(f[4].c_str(), nullptr)},
+         f[9] == "1"});
     REQUIRE((f[9] == "0" || f[9] == "1"));
   }
   return rows;
@@ -66,7 +66,8 @@ std::size_t wav_samples(const std::string& bytes) {
   const std::size_t at = bytes.find("data");
   REQUIRE(at != std::string::npos);
   std::uint32_t size = 0;
-  for (int i = 3; i >= 0; --i) size = size * 256 + static_cast<unsigned char>(bytes[at + 4 + static_cast<std::size_t>(i)]);
+  for (int i = 3; i >= 0; --i)
+    size = size * 256 + static_cast<unsigned char>(bytes[at + 4 + static_cast<std::size_t>(i)]);
   return size / 4;
 }
 
@@ -144,8 +145,9 @@ TEST_SUITE("replay") {
   }
 
   TEST_CASE("no replay for a scene that is not a game, nor for a game with no winner, nor with --replay off") {
-    CHECK(load("cue 0 0\nball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\nball 1 0.3 0 0.028575 0 0 0 1 0 0 0\n")->movie.segments().size() ==
-          1);
+    CHECK(load("cue 0 0\nball 0 -0.5 0 0.028575 1 0 0 1 0 0 0\nball 1 0.3 0 0.028575 0 0 0 1 0 0 0\n")
+              ->movie.segments()
+              .size() == 1);
     CHECK_FALSE(load("game 9ball seed 3 shots 2\n")->movie.replay());
     const auto off = load(kGame, ReplayChoice::off);
     CHECK_FALSE(off->movie.replay());
@@ -200,7 +202,8 @@ TEST_SUITE("replay") {
     CHECK(bad.err.find("bad value 'maybe' for --replay: expected on or off") != std::string::npos);
   }
 
-  TEST_CASE("--no-render: a .pov per movie frame, the replay's from its camera, and a sound track as long as the movie") {
+  TEST_CASE(
+      "--no-render: a .pov per movie frame, the replay's from its camera, and a sound track as long as the movie") {
     test::TempDir dir;
     const std::string scene = dir.file("game.scn", kGame);
     const int fps = 4;
@@ -208,13 +211,15 @@ TEST_SUITE("replay") {
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
     const auto shot = load(kGame);
     const int frames = shot->movie.frame_count(fps);
-    CHECK(fs::exists(dir.path / "out" / "frames" / ("frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') +
-                                                    std::to_string(frames - 1) + ".pov")));
-    CHECK_FALSE(fs::exists(dir.path / "out" / "frames" / ("frame_" + std::string(5 - std::to_string(frames).size(), '0') +
-                                                          std::to_string(frames) + ".pov")));
+    CHECK(fs::exists(
+        dir.path / "out" / "frames" /
+        ("frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".pov")));
+    CHECK_FALSE(
+        fs::exists(dir.path / "out" / "frames" /
+                   ("frame_" + std::string(5 - std::to_string(frames).size(), '0') + std::to_string(frames) + ".pov")));
     // The last frame is the replay's: its header says so, and its camera is the replay's.
-    const std::string last_name = "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') +
-                                  std::to_string(frames - 1) + ".pov";
+    const std::string last_name =
+        "frame_" + std::string(5 - std::to_string(frames - 1).size(), '0') + std::to_string(frames - 1) + ".pov";
     const std::string last = test::require_file(dir.path / "out" / "frames" / last_name);
     CHECK(last.find("(replay)") != std::string::npos);
     const std::vector<Row> rows = read_rows(test::require_file(dir.path / "out" / "camera.csv"));

@@ -57,8 +57,9 @@ TEST_SUITE("caption") {
     CHECK(called.calls[0].title == "FOUL");
     CHECK(called.calls[0].text == "the cue ball missed every ball \xC2\xB7 ball in hand");
     CHECK(called.at_table == 1);  // Bo's shot starts as the balls rest: the table is his
-    CHECK(caption_text(called) == "Ann | Bo* | 1 2 3 4 5 6 7 8 9 | FOUL: the cue ball missed every ball \xC2\xB7 "
-                                  "ball in hand");
+    CHECK(caption_text(called) ==
+          "Ann | Bo* | 1 2 3 4 5 6 7 8 9 | FOUL: the cue ball missed every ball \xC2\xB7 "
+          "ball in hand");
     // Bo comes to the table: the call stays until his stroke, then goes.
     const Caption next = at(*shot, 0.5 * (spans[1].start + spans[1].cue));
     CHECK(next.at_table == 1);

@@ -71,8 +71,8 @@ TEST_SUITE("preview replay") {
     REQUIRE(loaded.scripted());
     const int frames = loaded.shot->movie.frame_count(4);
     CHECK(frames > frame_count(loaded.shot->timeline.duration(), 4));
-    const auto probe = test::run_command("ffprobe -v error -show_entries stream=codec_type,nb_frames,duration -of csv=p=0 " +
-                                         movie);
+    const auto probe =
+        test::run_command("ffprobe -v error -show_entries stream=codec_type,nb_frames,duration -of csv=p=0 " + movie);
     INFO(probe.out);
     // Lines "video,DURATION,FRAMES" and "audio,DURATION,PACKETS": both streams last the movie.
     std::istringstream lines(probe.out);

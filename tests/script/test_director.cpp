@@ -580,7 +580,8 @@ TEST_SUITE("director: a pocket's jaws") {
 }
 
 TEST_SUITE("director") {
-  TEST_CASE("a game with no camera block is filmed by the director: it opens wide on the table, then cuts to the breaker") {
+  TEST_CASE(
+      "a game with no camera block is filmed by the director: it opens wide on the table, then cuts to the breaker") {
     // Both players without noise: the break wins at once; the whole game is one shot.
     const std::string text = "game 9ball seed 11\nplayer Ann noise 0\nplayer Bo noise 0\n";
     const ShotResult loaded = load_shot(text, "opening");
@@ -593,8 +594,8 @@ TEST_SUITE("director") {
     CHECK(script[0].key.kind == CameraKeyKind::start);
     CHECK(script[0].mode == CameraMode::hover);
     const TableRect bed = table_layout(shot.scene).noses;
-    for (const Vec3& corner : {Vec3(bed.x0, bed.y0, 0), Vec3(bed.x1, bed.y0, 0), Vec3(bed.x0, bed.y1, 0),
-                               Vec3(bed.x1, bed.y1, 0)})
+    for (const Vec3& corner :
+         {Vec3(bed.x0, bed.y0, 0), Vec3(bed.x1, bed.y0, 0), Vec3(bed.x0, bed.y1, 0), Vec3(bed.x1, bed.y1, 0)})
       CHECK(in_frame(shot, 0.5, corner));
     // Then a cut (no blend) to the breaker's view, kOpeningSeconds in, before the strike.
     CHECK(camera_key_text(script[1].key) == "at " + format_number(kOpeningSeconds));
