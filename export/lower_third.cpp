@@ -77,8 +77,9 @@ bool load(const char* file, Face& face, std::string& signature) {
 const Fonts& fonts() {
   static const Fonts loaded = [] {
     Fonts f;
-    if (!load("DejaVuSans.ttf", f.regular, f.signature) | !load("DejaVuSans-Bold.ttf", f.bold, f.signature))
-      f.regular.ok = f.bold.ok = false;
+    const bool regular = load("DejaVuSans.ttf", f.regular, f.signature);  // both loaded: both in the signature
+    const bool bold = load("DejaVuSans-Bold.ttf", f.bold, f.signature);
+    if (!regular || !bold) f.regular.ok = f.bold.ok = false;
     return f;
   }();
   return loaded;
