@@ -74,7 +74,8 @@ TEST_SUITE("captions") {
   TEST_CASE("a caption is drawn low in the picture, never in its upper half, the same bytes every time") {
     std::string error;
     REQUIRE_MESSAGE(lower_third_fonts(error), error);
-    for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{640, 360}, std::pair{320, 180}}) {
+    for (const std::pair<int, int>& size : {std::pair{1280, 720}, std::pair{640, 360}, std::pair{320, 180}}) {
+      const int width = size.first, height = size.second;
       CAPTURE(width);
       const HdrImage image = ramp(width, height);
       const std::vector<std::uint8_t> plain = developed(image, nullptr);

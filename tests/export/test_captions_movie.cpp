@@ -92,7 +92,9 @@ TEST_SUITE("captions") {
     const std::map<int, std::string> lines = read_caption_lines((on / "frames").string());
     const int frames = frames_in(on / "frames");
     REQUIRE(static_cast<int>(lines.size()) == frames);
-    for (const auto& [frame, line] : lines) {
+    for (const auto& entry : lines) {
+      const int frame = entry.first;
+      const std::string& line = entry.second;
       FrameCaption caption;
       REQUIRE(parse_caption(line, caption));
       CAPTURE(frame);
