@@ -15,6 +15,7 @@
 #include "frame_captions.h"
 #include "frames.h"
 #include "movie_export.h"
+#include "picture.h"
 #include "pov_frame.h"
 #include "pov_table.h"
 #include "render_jobs.h"
@@ -35,20 +36,8 @@ const char* const kGame =
     "camera\nevent 0 0 0 hover 0 -2.2 1.6  0 0 0\nendcamera\n";
 const char* const kOptions = " --size 160x90 --fps 2 --quality draft --quiet";
 
-struct Picture {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-};
-
-Picture load(const fs::path& path) {
-  Picture p;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.string().c_str(), &p.width, &p.height, &channels, 3);
-  REQUIRE_MESSAGE(data != nullptr, "cannot read " << path.string());
-  p.rgb.assign(data, data + 3 * static_cast<std::size_t>(p.width) * p.height);
-  stbi_image_free(data);
-  return p;
-}
+using test::Picture;
+const auto load = test::load_png;
 
 /// The first row in which the pictures differ (their height when none does).
 int first_differing_row(const Picture& a, const Picture& b) {

@@ -2,7 +2,6 @@
 // as the shot; a re-run renders only what changed; a missing program, a failing frame and Ctrl-C
 // end cleanly with nothing half-written left behind.
 #include <doctest/doctest.h>
-#include <stb_image.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <regex>
 
 #include "frames.h"
+#include "picture.h"
 #include "support.h"
 
 using namespace bsim;
@@ -149,14 +149,12 @@ TEST_SUITE("movie") {
     const fs::path out = dir.path / "out";
     const test::CommandResult r = run_export(path, out, "--size 64x36 --fps 1 --quality draft");
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-    int width = 0, height = 0, channels = 0;
-    unsigned char* data =
-        stbi_load((out / "frames" / "frame_00000.png").string().c_str(), &width, &height, &channels, 3);
-    REQUIRE(data);
+    const test::Picture picture = test::load_png(out / "frames" / "frame_00000.png");
+    const int width = picture.width, height = picture.height;
     double green = 0;  // the lit cloth fills the middle of the picture
     for (int y = height / 3; y < 2 * height / 3; ++y)
-      for (int x = width / 3; x < 2 * width / 3; ++x) green += data[(y * width + x) * 3 + 1];
-    stbi_image_free(data);
+      for (int x = width / 3; x < 2 * width / 3; ++x)
+        green += picture.rgb[static_cast<std::size_t>(y * width + x) * 3 + 1];
     CHECK(green / ((height / 3) * (width / 3)) > 60);
   }
 

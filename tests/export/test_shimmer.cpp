@@ -15,6 +15,7 @@
 
 #include "child_process.h"
 #include "frame_cache.h"
+#include "picture.h"
 #include "pov_frame.h"
 #include "pov_table.h"
 #include "render_jobs.h"
@@ -37,20 +38,8 @@ const char* const kScene =
     "event 0 0 0 hover 0 -2.2 1.6  0 0 0\n"
     "endcamera\n";
 
-struct Picture {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-};
-
-Picture load(const fs::path& path) {
-  Picture p;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.string().c_str(), &p.width, &p.height, &channels, 3);
-  REQUIRE_MESSAGE(data != nullptr, "cannot read " << path.string());
-  p.rgb.assign(data, data + 3 * static_cast<std::size_t>(p.width) * p.height);
-  stbi_image_free(data);
-  return p;
-}
+using test::Picture;
+const auto load = test::load_png;
 
 }  // namespace
 
