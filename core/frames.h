@@ -4,8 +4,9 @@
 // its sound track.
 //
 // The movie's own timeline (MovieTimeline) is an edit list over the simulation: one segment for a
-// plain shot, so that movie frame k shows t = k / fps as above; a game with a winner adds the winning
-// shot again, slowed, filmed by the replay's camera. Every front end reads the movie's frames from it:
+// plain shot, so that movie frame k shows t = k / fps as above; a game with a winner is cut as a
+// broadcast cuts it (no waiting while balls only spin in place) and adds the winning shot again,
+// slowed, filmed by the replay's camera. Every front end reads the movie's frames from it:
 // the .pov frames, camera.csv, the sound track's length, the movie, the farm and the animatic.
 #include <algorithm>
 #include <cmath>
@@ -83,14 +84,20 @@ class MovieTimeline {
   MovieFrame frame(int k, int fps) const { return at(frame_time(k, fps)); }
 
   /// s of movie where it shows simulation time `time` in the replay (`replay`) or in the plain
-  /// movie: the first such segment holding it, else the nearest end of the first such segment.
+  /// movie: the first such segment holding it, else the nearest end of such a segment (a time cut
+  /// out of the movie shows where the movie leaves or rejoins the simulation, whichever is nearer).
   double movie_time(double time, bool replay) const {
     double begin = 0;
     std::optional<double> nearest;
+    double distance = 0;
     for (const MovieSegment& s : segments_) {
       if (s.replay == replay) {
         if (time >= s.start && time <= s.end) return begin + (time - s.start) / s.rate;
-        if (!nearest) nearest = begin + (std::clamp(time, s.start, s.end) - s.start) / s.rate;
+        const double off = time < s.start ? s.start - time : time - s.end;
+        if (!nearest || off < distance) {
+          nearest = begin + (std::clamp(time, s.start, s.end) - s.start) / s.rate;
+          distance = off;
+        }
       }
       begin += s.length();
     }

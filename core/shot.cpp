@@ -39,8 +39,36 @@ std::optional<ReplaySubject> winning_shot(const Scene& scene, const GameRecord& 
   return subject;
 }
 
-/// The movie's frames: the simulation, then the winning shot of a game again, slowed, from the
-/// replay's own camera.
+/// s a game's movie holds on a settled table (every ball stopped but for spin in place) before it
+/// cuts to the next shot: long enough to see where the balls came to rest and the rules' call come up.
+constexpr double kSettledHold = 0.8;
+/// s it holds after the winning shot settles, before the replay: long enough to read WINNER.
+constexpr double kWinnerHold = 1.5;
+/// s: a shorter wait on spinning balls is not worth a cut.
+constexpr double kShortestCut = 0.5;
+
+}  // namespace
+
+MovieTimeline broadcast_edit(const Timeline& timeline) {
+  MovieTimeline movie;
+  double from = 0;
+  const int shots = timeline.shot_count();
+  for (int k = 0; k < shots; ++k) {
+    const bool last = k + 1 == shots;
+    const double until = last ? timeline.duration() : timeline.shots()[static_cast<std::size_t>(k) + 1].start;
+    const double held = timeline.settled(k) + (last ? kWinnerHold : kSettledHold);
+    if (until - held < kShortestCut) continue;
+    movie.add({from, held, 1.0, false});
+    from = until;
+  }
+  if (from < timeline.duration() || movie.segments().empty()) movie.add({from, timeline.duration(), 1.0, false});
+  return movie;
+}
+
+namespace {
+
+/// The movie's frames: the simulation, or for a game with a winner that the director films, its
+/// broadcast edit, then the winning shot again, slowed, from the replay's own camera.
 void plan_movie(Shot& shot, ReplayChoice replay) {
   shot.movie = MovieTimeline(shot.timeline.duration());
   if (replay == ReplayChoice::off || !shot.game || !shot.camera) return;
@@ -51,6 +79,8 @@ void plan_movie(Shot& shot, ReplayChoice replay) {
   shot.replay_camera = CameraScript::build(shot.scene, plan.camera, shot.timeline, unused);
   if (!shot.replay_camera) return;
   shot.replay_what = plan.what;
+  // The director's cuts fall where a shot ends; a camera script of the scene's own is shown whole.
+  if (shot.directed) shot.movie = broadcast_edit(shot.timeline);
   shot.movie.add({plan.start, plan.end, kReplayRate, true});
 }
 

@@ -40,8 +40,9 @@ struct Shot {
   /// A scene with a `game` line: the rules' record of the game played (`scene` is then the game as an
   /// explicit scene, one `cue` per shot).
   std::optional<GameRecord> game;
-  /// The movie's frames (frames.h): the simulation as it plays, then, for a game with a winner (unless
-  /// the replay is off), the winning shot again at half speed filmed by `replay_camera`.
+  /// The movie's frames (frames.h): the simulation as it plays; for a game with a winner (unless the
+  /// replay is off), its broadcast_edit() when the director films it, then the winning shot again at
+  /// half speed filmed by `replay_camera`.
   MovieTimeline movie;
   /// The replay's camera, the director's second camera (replay_camera.h): set when `movie` has a replay.
   std::optional<CameraScript> replay_camera;
@@ -68,6 +69,11 @@ enum class CameraChoice { scene, automatic };
 /// a safety's or a foul's point (when no ball was made) is the cue ball's path: where it hides, what it
 /// met first, where it stopped.
 FilmingNotes game_filming_notes(const Scene& scene, const GameRecord& record);
+
+/// A game's movie cut as a broadcast cuts it (frames.h): each shot from its start until it has
+/// settled (Timeline::settled) and been held on a moment, then the next shot's start; the stretches
+/// where the balls only spin in place are cut out. The last shot is held longer (its winner's call).
+MovieTimeline broadcast_edit(const Timeline& timeline);
 
 /// Whether a game with a winner is followed by its winning shot again, slowed (`--replay on|off`).
 enum class ReplayChoice { on, off };

@@ -80,11 +80,17 @@ void report_interrupted(const bsim::OutputStage& stage, const std::string& dir) 
   std::cerr << "\n";
 }
 
-/// The closing line's note on a game's replay: "; the movie 97 s with the replay" (empty without one).
+/// The closing line's note on a game's replay: "; the movie 92 s with the replay, 5 s of balls only
+/// spinning cut" (empty without one).
 std::string replay_note(const bsim::Shot& shot) {
   if (!shot.movie.replay()) return "";
+  double shown = 0;
+  for (const bsim::MovieSegment& s : shot.movie.segments())
+    if (!s.replay) shown += s.end - s.start;
+  const long cut = std::lround(shot.timeline.duration() - shown);
   std::ostringstream note;
-  note << "; the movie " << shot.movie.duration() << " s with the replay";
+  note << "; the movie " << std::lround(shot.movie.duration()) << " s with the replay";
+  if (cut > 0) note << ", " << cut << " s of balls only spinning cut";
   return note.str();
 }
 

@@ -35,6 +35,8 @@ constexpr ImU32 kSectionOdd = IM_COL32(36, 40, 50, 255);
 constexpr ImU32 kSeparator = IM_COL32(240, 200, 110, 220);
 constexpr ImU32 kReplayFill = IM_COL32(120, 70, 150, 110);
 constexpr ImU32 kReplayEdge = IM_COL32(210, 160, 255, 230);
+constexpr ImU32 kCutFill = IM_COL32(0, 0, 0, 120);
+constexpr ImU32 kCutEdge = IM_COL32(150, 150, 150, 200);
 
 constexpr ImU32 kPlayerColors[2] = {IM_COL32(130, 210, 255, 255), IM_COL32(180, 236, 140, 255)};
 constexpr float kToneBar = 4;  // px, the bar of a game's call along a section's foot
@@ -604,6 +606,19 @@ class TimelinePainter {
                   "no stick: it is placed from the camera script");
   }
 
+  // The stretches the movie cuts out: darkened over every row, edged, "cut" above them where it fits.
+  void draw_cuts() {
+    const float top = rows_.events_top, low = rows_.cue_bottom, small = fonts_.small_size;
+    for (const auto& [start, end] : data_.cuts) {
+      const float a = at(start), b = std::max(at(end), a + 1);
+      list_.AddRectFilled(ImVec2(a, top), ImVec2(b, low), kCutFill);
+      list_.AddLine(ImVec2(a, top), ImVec2(a, low), kCutEdge, 1.f);
+      list_.AddLine(ImVec2(b, top), ImVec2(b, low), kCutEdge, 1.f);
+      if (text_size(fonts_.small, small, "cut").x + 2 < b - a)
+        list_.AddText(fonts_.small, small, ImVec2(a + 2, low - small - 2), kDim, "cut");
+    }
+  }
+
   // A game's replay: a box after the game's end over every row, its label and camera inside, and the
   // stretch it shows again marked along the axis and tied to the box.
   void draw_replay() {
@@ -1044,6 +1059,15 @@ void add_replay(const Shot& shot, TimelineData& data) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "; the movie %.0f s with the replay", shot.movie.duration());
   data.title += buffer;
+  // The broadcast edit's cuts: the gaps between the movie's plain segments.
+  std::optional<double> shown_until;
+  for (const MovieSegment& s : shot.movie.segments()) {
+    if (s.replay) continue;
+    if (shown_until && s.start > *shown_until) data.cuts.emplace_back(*shown_until, s.start);
+    shown_until = s.end;
+  }
+  if (shown_until && *shown_until < shot.timeline.duration())
+    data.cuts.emplace_back(*shown_until, shot.timeline.duration());
 }
 
 }  // namespace
@@ -1109,6 +1133,7 @@ TimelineAxis draw_timeline(ImDrawList& list, const TimelineData& data, const UiF
   painter.draw_shot_separators();
   painter.draw_events();
   painter.draw_pocket_drops();
+  painter.draw_cuts();
   painter.draw_replay();
   painter.draw_cursor();
   if (layout.compact) return painter.axis();

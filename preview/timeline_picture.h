@@ -100,6 +100,9 @@ struct TimelineData {
   /// rows and separators through them; empty for a scene of one shot (its picture as before).
   std::vector<TimelineShotSection> shots;
   std::optional<TimelineReplay> replay;  ///< a game's replay, drawn after the game's end
+  /// Stretches of the simulation (s, start and end) the movie cuts out: a game's broadcast edit drops
+  /// the waits on balls that only spin in place (shot.h, broadcast_edit). Drawn darkened over every row.
+  std::vector<std::pair<double, double>> cuts;
 };
 
 TimelineData timeline_data(const Shot& shot);

@@ -60,11 +60,11 @@ std::vector<CaptionCall> aftermath(const GameRecord& record, int k) {
 }
 
 /// The balls on the table at t within shot k: those up before it, less those dropped so far; once it
-/// rests, the rules' count.
+/// has settled, the rules' count.
 std::vector<int> balls_at(const GameRecord& record, const Timeline& timeline, const Scene& scene,
                           const std::vector<int>& rack, int k, double t) {
   const ShotSpan& span = timeline.shots()[static_cast<std::size_t>(k)];
-  if (t >= span.rest) return record.turns[static_cast<std::size_t>(k)].on_table;
+  if (t >= timeline.settled(k)) return record.turns[static_cast<std::size_t>(k)].on_table;
   std::vector<int> balls = k == 0 ? rack : record.turns[static_cast<std::size_t>(k - 1)].on_table;
   for (const PocketDrop& drop : timeline.pocket_drops()) {
     if (drop.time < span.start || drop.time > t || drop.ball < 0 || drop.ball >= static_cast<int>(scene.balls.size()))
@@ -93,11 +93,13 @@ Caption caption_at(const GameRecord& record, const Timeline& timeline, const Sce
     c.shot = k;
     c.at_table = turn.player;
     c.on_table = balls_at(record, timeline, scene, c.rack, k, t);
-    if (t >= span.rest)
+    // The referee calls a shot once its balls have stopped (spin in place changes nothing).
+    const bool decided = t >= timeline.settled(k);
+    if (decided)
       c.calls = aftermath(record, k);
     else if (k > 0 && t < span.cue)
       c.calls = aftermath(record, k - 1);  // the last shot's call stays until this shot's stroke
-    if (t < span.rest && turn.verdict.push_out)
+    if (!decided && turn.verdict.push_out)
       c.calls.push_back({CaptionCall::Kind::push_out, "PUSH-OUT", name_of(record, turn.player) + " pushes out"});
   }
   const auto has_winner = [&c] {

@@ -5,14 +5,14 @@
 // frame is part of the replay, so the movie's frames may show the game's times in any order.
 //
 // When a call shows, and for how long (README, "Games"):
-//  - a foul (its reason, a spotted ball, ball in hand, a second foul in a row) once the shot's balls
-//    rest, until the next shot's stroke;
-//  - a push-out from the shot's start (it is announced), and once its balls rest the incoming
+//  - a foul (its reason, a spotted ball, ball in hand, a second foul in a row) once the shot has
+//    settled (its balls stopped but for spin in place: Timeline::settled), until the next shot's stroke;
+//  - a push-out from the shot's start (it is announced), and once it has settled the incoming
 //    player's answer, until the next shot's stroke;
-//  - the winner (or the game stopped at its shot limit) once the last shot's balls rest, to the end,
+//  - the winner (or the game stopped at its shot limit) once the last shot has settled, to the end,
 //    and on every replay frame.
 // The marker moves to the next shooter as the next shot starts. A ball leaves the rack's row as it
-// drops; after the shot rests the row is the rules' count (a spotted ball is back on it).
+// drops; after the shot has settled the row is the rules' count (a spotted ball is back on it).
 #include <string>
 #include <vector>
 

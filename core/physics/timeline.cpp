@@ -76,6 +76,20 @@ int Timeline::shot_at(double t) const {
   return k;
 }
 
+double Timeline::settled(int shot) const {
+  BSIM_EXPECT(shot >= 0 && shot < shot_count(), "no such shot in the timeline");
+  const ShotSpan& span = shots_[static_cast<std::size_t>(shot)];
+  double last = span.cue;
+  for (const std::vector<MotionSegment>& segs : segments_)
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const Motion m = segs[i].start.motion;
+      if (m != Motion::sliding && m != Motion::rolling && m != Motion::falling) continue;
+      const double end = i + 1 < segs.size() ? segs[i + 1].t0 : duration();
+      if (segs[i].t0 < span.rest && end > span.cue) last = std::max(last, std::min(end, span.rest));
+    }
+  return last;
+}
+
 BallState Timeline::segment_state(const MotionSegment& seg, const SegmentSteps* steps, double t,
                                   bool orientation) const {
   static const std::vector<Quat> kNone;

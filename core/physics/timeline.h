@@ -37,6 +37,10 @@ class Timeline {
   int shot_count() const { return static_cast<int>(shots_.size()); }
   /// The shot whose stretch holds t: the last one starting at or before it (0 before the first).
   int shot_at(double t) const;
+  /// s, when shot `shot` is settled: its last ball stops moving over the cloth or in a pocket (from
+  /// then until its rest, balls at most spin in place; the rules' verdict is known). Its strike when
+  /// nothing moves after it.
+  double settled(int shot) const;
   const std::vector<Event>& events() const { return events_; }
   const std::vector<PocketDrop>& pocket_drops() const { return drops_; }
   int ball_count() const { return static_cast<int>(segments_.size()); }

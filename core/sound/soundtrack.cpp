@@ -49,6 +49,23 @@ bool plain_movie(const SoundMovie& movie) {
   return segments.size() == 1 && segments[0].start == 0 && segments[0].rate == 1 && !segments[0].replay;
 }
 
+/// s over which a cut in the sound fades the sound that was cut out into the sound that follows: a
+/// splice of two stretches of one recording, as an editor makes it, with no click.
+constexpr double kCutFade = 0.01;
+
+/// Fades, over kCutFade from movie sample `at`, the sound that would have followed the outgoing
+/// stretch (from `outgoing` on in `heard`) into the incoming one (from `incoming` on), in `out`.
+void crossfade_cut(const AudioBuffer& heard, std::size_t outgoing, std::size_t incoming, std::size_t at,
+                   AudioBuffer& out) {
+  const auto fade = static_cast<std::size_t>(std::llround(kCutFade * kSampleRate));
+  for (std::size_t i = 0; i < fade && at + i < out.left.size(); ++i) {
+    if (outgoing + i >= heard.left.size() || incoming + i >= heard.left.size()) break;
+    const float in = static_cast<float>(i + 1) / static_cast<float>(fade + 1), away = 1.0f - in;
+    out.left[at + i] = away * heard.left[outgoing + i] + in * heard.left[incoming + i];
+    out.right[at + i] = away * heard.right[outgoing + i] + in * heard.right[incoming + i];
+  }
+}
+
 /// Each segment of the movie from the effects heard by its camera: `main` for the plain segments,
 /// the replay camera's (made here) for the replay's. A sound plays `lead` before its frame in a slowed
 /// segment too.
@@ -76,6 +93,8 @@ void cut_movie_effects(const SoundSource& shot, const SoundMovie& movie, double 
         out.left[at + i] = heard.left[from + i];
         out.right[at + i] = heard.right[from + i];
       }
+      if (j > 0 && !segments[j - 1].replay && segments[j - 1].rate == 1 && !segment.replay)
+        crossfade_cut(heard, static_cast<std::size_t>(std::llround(segments[j - 1].end * kSampleRate)), from, at, out);
       continue;
     }
     // Slowed: the recording read from where it holds the segment's first frame's sound, `lead` ahead.

@@ -12,12 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "builtin_scene.h"
 #include "camera_clearance.h"
 #include "files.h"
 #include "frames.h"
+#include "mastering.h"
 #include "number_format.h"
 #include "replay_camera.h"
 #include "shot.h"
+#include "soundtrack.h"
 #include "support.h"
 
 using namespace bsim;
@@ -112,6 +115,97 @@ TEST_SUITE("replay") {
     CHECK(movie.at(99.0).time == 6.5);  // past the end: the movie's last instant
   }
 
+  TEST_CASE("a time the movie cuts out is shown where the movie leaves or rejoins the simulation, the nearer") {
+    MovieTimeline movie;
+    movie.add({0.0, 4.0, 1.0, false});
+    movie.add({6.0, 9.0, 1.0, false});
+    CHECK(movie.duration() == 7.0);
+    CHECK(movie.at(4.5).time == doctest::Approx(6.5));  // after the cut: the simulation from 6 s
+    CHECK(movie.movie_time(7.0, false) == doctest::Approx(5.0));
+    CHECK(movie.movie_time(4.5, false) == doctest::Approx(4.0));  // nearer the cut's start
+    CHECK(movie.movie_time(5.8, false) == doctest::Approx(4.0));  // nearer its end: where 6 s is shown
+  }
+
+  TEST_CASE("a game's broadcast edit cuts only the waits on balls that only spin in place, after a moment's hold") {
+    const auto shot = load(kGame);
+    const Timeline& timeline = shot->timeline;
+    const MovieTimeline edit = broadcast_edit(timeline);
+    const auto& segments = edit.segments();
+    CHECK(segments.front().start == 0.0);
+    // The cuts: between the segments, and after the last one up to the simulation's end.
+    std::vector<std::pair<double, double>> cuts;
+    for (std::size_t j = 0; j < segments.size(); ++j)
+      if (const double to = j + 1 < segments.size() ? segments[j + 1].start : timeline.duration(); to > segments[j].end)
+        cuts.emplace_back(segments[j].end, to);
+    REQUIRE_FALSE(cuts.empty());
+    const auto translating = [&](double t) {
+      for (int b = 0; b < timeline.ball_count(); ++b) {
+        const Motion m = timeline.motion_state(b, t).motion;
+        if (m == Motion::sliding || m == Motion::rolling || m == Motion::falling) return true;
+      }
+      return false;
+    };
+    int spinning = 0;
+    for (const auto& cut : cuts) {
+      const double from = cut.first, to = cut.second;
+      CAPTURE(from);
+      const int k = timeline.shot_at(from);
+      // From its shot's settling plus the hold (longer on the winning shot: its call is read) to the
+      // next shot's start, where the director cuts, or to the end, where the replay follows.
+      const bool last = k + 1 == timeline.shot_count();
+      CHECK(from == doctest::Approx(timeline.settled(k) + (last ? 1.5 : 0.8)));
+      CHECK(to == (last ? timeline.duration() : timeline.shots()[static_cast<std::size_t>(k) + 1].start));
+      CHECK(translating(timeline.settled(k) - 0.01));
+      for (double t = timeline.settled(k) + 1e-6; t < to; t += 0.01) {
+        CHECK_FALSE(translating(t));
+        for (int b = 0; b < timeline.ball_count(); ++b)
+          if (timeline.motion_state(b, t).motion == Motion::spinning) ++spinning;
+      }
+    }
+    CHECK(spinning > 0);  // what is cut is a wait on a spinning ball
+    // A scene's own camera script is shown whole: the edit is the director's.
+    const auto scripted = load(kGame + "camera\nevent 0 0 0 hover 0 -2 2 0 0 0\nendcamera\n");
+    REQUIRE(scripted->movie.replay());
+    CHECK(scripted->movie.segments().size() == 2);
+    CHECK(scripted->movie.segments().front().end == scripted->timeline.duration());
+  }
+
+  TEST_CASE("a cut in the sound is a splice: the cut-out sound fades into the sound that follows, no click") {
+    // The built-in break cut just after its loudest moment, so the sound on the two sides differs.
+    ShotResult r = load_shot(builtin_scene_text(), "break");
+    REQUIRE(r.scripted());
+    const Shot& shot = *r.shot;
+    const double cut_from = 2.70, cut_to = 3.20;
+    MovieTimeline cut;
+    cut.add({0.0, cut_from, 1.0, false});
+    cut.add({cut_to, shot.timeline.duration(), 1.0, false});
+    MovieTimeline whole;  // the sound uncut, in two segments that join, as long as the cut one
+    whole.add({0.0, cut_from, 1.0, false});
+    whole.add({cut_from, shot.timeline.duration() - (cut_to - cut_from), 1.0, false});
+    SoundOptions options;
+    options.level.mode = LevelMode::off;  // no level stage: the tracks differ only where the sound does
+    const auto track = [&](const MovieTimeline& movie) {
+      AudioBuffer out;
+      std::string error;
+      const auto n = static_cast<std::size_t>(std::llround(movie.duration() * kSampleRate));
+      REQUIRE(
+          mix_movie_soundtrack({shot.scene, shot.timeline, *shot.camera}, {&movie, nullptr}, options, n, out, error));
+      return out;
+    };
+    const AudioBuffer a = track(whole), b = track(cut);
+    // Both tracks hold the same room tone sample by sample (they are as long), and the same sound up
+    // to the cut, so from
+    // the cut on their difference is the incoming sound less what the cut-out stretch would have been.
+    const auto at = static_cast<std::size_t>(std::llround(cut_from * kSampleRate));
+    for (std::size_t i = 0; i < at; i += 97) REQUIRE(a.left[i] == b.left[i]);
+    double later = 0;  // after the 10 ms fade: the whole difference
+    for (std::size_t i = 480; i < 960; ++i) later = std::max(later, double(std::abs(b.left[at + i] - a.left[at + i])));
+    REQUIRE(later > 1e-3);
+    // At the splice, the outgoing sound still holds: the difference starts near zero and grows.
+    CHECK(std::abs(b.left[at] - a.left[at]) < 0.02 * later);
+    CHECK(std::abs(b.left[at + 1] - a.left[at + 1]) < 0.05 * later);
+  }
+
   TEST_CASE("a game with a winner gets a replay of its winning shot from another camera, clear of everything") {
     const auto shot = load(kGame);
     REQUIRE(shot->game);
@@ -120,8 +214,11 @@ TEST_SUITE("replay") {
     REQUIRE(replay);
     REQUIRE(shot->replay_camera);
     CHECK(replay->rate == kReplayRate);
-    CHECK(shot->movie.segments().size() == 2);
-    CHECK(shot->movie.duration() == doctest::Approx(shot->timeline.duration() + replay->length()));
+    // The game as the broadcast edit cuts it, then the replay.
+    const MovieTimeline edit = broadcast_edit(shot->timeline);
+    CHECK(shot->movie.segments().size() == edit.segments().size() + 1);
+    CHECK(shot->movie.segments().back().replay);
+    CHECK(shot->movie.duration() == doctest::Approx(edit.duration() + replay->length()));
     // A whole number of seconds of movie, from before the strike of the winning shot to after its rest
     // or a second after the winning ball drops.
     CHECK(replay->length() == std::round(replay->length()));
@@ -163,39 +260,52 @@ TEST_SUITE("replay") {
     REQUIRE_MESSAGE(on.exit_code == 0, on.err);
     const auto said = test::run_command(test::bin("billiards-export") + " " + test::quoted(scene) + " -o " +
                                         test::quoted((dir.path / "said").string()) + " --events-only");
-    CHECK(said.err.find(" s with the replay)") != std::string::npos);
+    CHECK(said.err.find(" s with the replay, ") != std::string::npos);
+    CHECK(said.err.find(" s of balls only spinning cut)") != std::string::npos);
     const std::string csv = test::require_file(dir.path / "on" / "camera.csv");
     const std::vector<Row> rows = read_rows(csv);
     const auto shot = load(kGame);
     const MovieSegment replay = *shot->movie.replay();
     REQUIRE(static_cast<int>(rows.size()) == shot->movie.frame_count(fps));
-    const int plain = frame_count(shot->timeline.duration(), fps);
+    // The game's frames show the broadcast edit's times: the simulation less its cuts.
+    const MovieTimeline edit = broadcast_edit(shot->timeline);
+    REQUIRE(edit.duration() < shot->timeline.duration());  // this game has a wait on spinning balls to cut
+    const int game_frames = frame_count(edit.duration(), fps);
     int replayed = 0;
     for (const Row& row : rows) {
       CHECK(row.frame == &row - rows.data());
-      if (row.frame < plain) {
+      if (row.frame < game_frames) {
         CHECK_FALSE(row.replay);
-        CHECK(row.time == frame_time(row.frame, fps));
+        CHECK(row.time == edit.frame(row.frame, fps).time);
         continue;
       }
       CHECK(row.replay);
       ++replayed;
       // Back to the replay's start, then half a frame's time of the simulation per frame.
-      CHECK(row.time == doctest::Approx(replay.start + 0.5 * (row.frame - plain) / fps));
+      CHECK(row.time == doctest::Approx(replay.start + 0.5 * (frame_time(row.frame, fps) - edit.duration())));
       CHECK(row.time <= replay.end);
       CHECK(row.location == shot->replay_camera->pose(row.time).location);
     }
-    CHECK(replayed == static_cast<int>(std::lround(replay.length() * fps)));
-    CHECK(rows[static_cast<std::size_t>(plain)].time < rows[static_cast<std::size_t>(plain) - 1].time);  // it goes back
+    CHECK(std::abs(replayed - replay.length() * fps) <= 1);
+    // It goes back where the replay starts.
+    CHECK(rows[static_cast<std::size_t>(game_frames)].time < rows[static_cast<std::size_t>(game_frames) - 1].time);
 
-    // The same bytes every run; --replay off: the plain movie, the same rows up to the game's end.
+    // The same bytes every run; --replay off: the plain movie, every frame of the game as it plays, the
+    // same rows up to the first cut.
     REQUIRE(run_export(scene, dir.path / "again", "--events-only --fps " + std::to_string(fps)).exit_code == 0);
     CHECK(test::require_file(dir.path / "again" / "camera.csv") == csv);
     const auto off = run_export(scene, dir.path / "off", "--events-only --replay off --fps " + std::to_string(fps));
     REQUIRE_MESSAGE(off.exit_code == 0, off.err);
-    const std::string plain_csv = test::require_file(dir.path / "off" / "camera.csv");
-    CHECK(static_cast<int>(read_rows(plain_csv).size()) == plain);
-    CHECK(plain_csv == csv.substr(0, plain_csv.size()));
+    const std::vector<Row> plain = read_rows(test::require_file(dir.path / "off" / "camera.csv"));
+    CHECK(static_cast<int>(plain.size()) == frame_count(shot->timeline.duration(), fps));
+    for (const Row& row : plain) {
+      CHECK_FALSE(row.replay);
+      CHECK(row.time == frame_time(row.frame, fps));
+      if (frame_time(row.frame, fps) < edit.segments().front().end) {
+        CHECK(row.time == rows[static_cast<std::size_t>(row.frame)].time);
+        CHECK(row.location == rows[static_cast<std::size_t>(row.frame)].location);
+      }
+    }
     CHECK(test::require_file(dir.path / "off" / "events.json") == test::require_file(dir.path / "on" / "events.json"));
     const auto bad = run_export(scene, dir.path / "bad", "--events-only --replay maybe");
     CHECK(bad.exit_code == 2);

@@ -1,6 +1,6 @@
 // What a game movie's caption says at each moment: the player at the table, the balls left, the
-// referee's calls shown from the moment the shot rests until the next stroke, the winner to the end,
-// the replay's tag.
+// referee's calls shown from the moment the shot settles (its balls stopped but for spin in place)
+// until the next stroke, the winner to the end, the replay's tag.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -91,6 +91,33 @@ TEST_SUITE("caption") {
     CHECK(has_call(last, CaptionCall::Kind::stopped));
     CHECK(has_call(at(*shot, t.shots().back().rest), CaptionCall::Kind::stopped));
     CHECK_FALSE(has_call(at(*shot, t.shots().back().rest - 0.01), CaptionCall::Kind::stopped));
+  }
+
+  TEST_CASE("the winner is called as the winning shot settles, not after its balls stop spinning") {
+    const auto shot = game("game 9ball seed 11\nplayer Ann noise 0\nplayer Bo noise 0\n");
+    REQUIRE(shot->game->winner);
+    const Timeline& t = shot->timeline;
+    const int last = t.shot_count() - 1;
+    const double settled = t.settled(last);
+    REQUIRE(t.shots().back().rest - settled > 1.0);  // a ball spins on in place for a while
+    CHECK_FALSE(has_call(at(*shot, settled - 0.01), CaptionCall::Kind::winner));
+    CHECK(has_call(at(*shot, settled), CaptionCall::Kind::winner));
+    CHECK(at(*shot, settled).on_table == shot->game->turns.back().on_table);
+  }
+
+  TEST_CASE("the replay's ball row is the table at the replayed moment: the 9 is up until it drops again") {
+    const auto shot = game("game 9ball seed 11\nplayer Ann noise 0\nplayer Bo noise 0\n");
+    REQUIRE(shot->game->winner);
+    double drop = -1;
+    for (const PocketDrop& d : shot->timeline.pocket_drops())
+      if (shot->scene.ball(d.ball).number == 9) drop = d.time;
+    REQUIRE(drop > shot->timeline.shots().back().cue);
+    const auto nine_up = [](const Caption& c) {
+      return std::find(c.on_table.begin(), c.on_table.end(), 9) != c.on_table.end();
+    };
+    CHECK(nine_up(at(*shot, drop - 0.05, true)));
+    CHECK_FALSE(nine_up(at(*shot, drop + 0.05, true)));
+    CHECK(has_call(at(*shot, drop - 0.05, true), CaptionCall::Kind::winner));  // the replay names the winner
   }
 
   TEST_CASE("the replay's frames carry its tag and the winner") {

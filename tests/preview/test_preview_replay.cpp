@@ -3,6 +3,7 @@
 // the end, and --replay off leaves it out.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -33,12 +34,14 @@ TEST_SUITE("preview replay") {
     REQUIRE(load_into(state));
     const Shot& shot = *state.shot;
     const MovieSegment replay = *shot.movie.replay();
-    CHECK(state.movie_duration() == doctest::Approx(state.duration() + replay.length()));
+    const double game = broadcast_edit(shot.timeline).duration();  // the game as the movie cuts it
+    CHECK(game < state.duration());
+    CHECK(state.movie_duration() == doctest::Approx(game + replay.length()));
 
-    state.set_movie_time(state.duration() + 1.0);  // one second of movie into the replay
+    state.set_movie_time(game + 1.0);  // one second of movie into the replay
     CHECK(state.replay);
     CHECK(state.time == doctest::Approx(replay.start + 0.5));
-    CHECK(state.movie_time() == doctest::Approx(state.duration() + 1.0));
+    CHECK(state.movie_time() == doctest::Approx(game + 1.0));
     const FrameState frame = scripted_frame(shot, state.shown());
     const CameraPose pose = shot.replay_camera->pose(state.time);
     CHECK((frame.camera.eye - pose.location).norm() < 1e-12);
@@ -46,9 +49,10 @@ TEST_SUITE("preview replay") {
 
     // A frame on is a half frame of the simulation on; the end of the movie is the replay's end.
     state.fps = 30;
-    const double before = state.time;
+    const double next_frame = (std::round(state.movie_time() * 30) + 1) / 30;  // on the movie's frames
     state.step_frames(1);
-    CHECK(state.time == doctest::Approx(before + 0.5 / 30));
+    CHECK(state.movie_time() == doctest::Approx(next_frame));
+    CHECK(state.time == doctest::Approx(replay.start + 0.5 * (next_frame - game)));
     state.set_movie_time(1e9);
     CHECK(state.replay);
     CHECK(state.time == replay.end);
@@ -100,10 +104,17 @@ TEST_SUITE("preview replay") {
     CHECK(data.replay->length == loaded.shot->movie.replay()->length());
     CHECK(data.replay->label == "replay");
     CHECK(data.replay->detail.find("half speed") != std::string::npos);
+    // What the movie cuts out of the game is marked: here the wait on spinning balls after the
+    // winning shot, up to the game's end.
+    const Timeline& timeline = loaded.shot->timeline;
+    REQUIRE(data.cuts.size() == 1);
+    CHECK(data.cuts[0].first == doctest::Approx(timeline.settled(timeline.shot_count() - 1) + 1.5));
+    CHECK(data.cuts[0].second == timeline.duration());
     source.replay = false;
     LoadedShot plain = load_source(source);
     REQUIRE(plain.scripted());
     CHECK_FALSE(timeline_data(*plain.shot).replay);
+    CHECK(timeline_data(*plain.shot).cuts.empty());
     CHECK_FALSE(plain.shot->movie.replay());
 
     const auto r = test::run_command(test::bin("billiards-preview") + " " + path + " --timeline -o " +
