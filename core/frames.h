@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace bsim {
@@ -102,6 +103,20 @@ class MovieTimeline {
       begin += s.length();
     }
     return nearest.value_or(std::max(0.0, time));
+  }
+
+  /// The stretches of the simulation from 0 to `end` s that the plain segments leave out (each its
+  /// start and end, s): the gaps between them and after the last.
+  std::vector<std::pair<double, double>> cuts(double end) const {
+    std::vector<std::pair<double, double>> gaps;
+    std::optional<double> shown_until;
+    for (const MovieSegment& s : segments_) {
+      if (s.replay) continue;
+      if (shown_until && s.start > *shown_until) gaps.emplace_back(*shown_until, s.start);
+      shown_until = s.end;
+    }
+    if (shown_until && *shown_until < end) gaps.emplace_back(*shown_until, end);
+    return gaps;
   }
 
   /// The replay's segment, if the movie has one.

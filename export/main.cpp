@@ -84,10 +84,9 @@ void report_interrupted(const bsim::OutputStage& stage, const std::string& dir) 
 /// spinning cut" (empty without one).
 std::string replay_note(const bsim::Shot& shot) {
   if (!shot.movie.replay()) return "";
-  double shown = 0;
-  for (const bsim::MovieSegment& s : shot.movie.segments())
-    if (!s.replay) shown += s.end - s.start;
-  const long cut = std::lround(shot.timeline.duration() - shown);
+  double seconds_cut = 0;
+  for (const auto& [from, to] : shot.movie.cuts(shot.timeline.duration())) seconds_cut += to - from;
+  const long cut = std::lround(seconds_cut);
   std::ostringstream note;
   note << "; the movie " << std::lround(shot.movie.duration()) << " s with the replay";
   if (cut > 0) note << ", " << cut << " s of balls only spinning cut";

@@ -1059,15 +1059,7 @@ void add_replay(const Shot& shot, TimelineData& data) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "; the movie %.0f s with the replay", shot.movie.duration());
   data.title += buffer;
-  // The broadcast edit's cuts: the gaps between the movie's plain segments.
-  std::optional<double> shown_until;
-  for (const MovieSegment& s : shot.movie.segments()) {
-    if (s.replay) continue;
-    if (shown_until && s.start > *shown_until) data.cuts.emplace_back(*shown_until, s.start);
-    shown_until = s.end;
-  }
-  if (shown_until && *shown_until < shot.timeline.duration())
-    data.cuts.emplace_back(*shown_until, shot.timeline.duration());
+  data.cuts = shot.movie.cuts(shot.timeline.duration());  // the broadcast edit's
 }
 
 }  // namespace

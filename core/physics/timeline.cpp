@@ -34,6 +34,7 @@ Timeline::Timeline(const Scene& scene, std::vector<std::vector<MotionSegment>> s
       }
     shots_.push_back(only);
   }
+  find_settled();
   for (const Pocket& pocket : scene.pockets) {
     pocket_centres_.push_back(pocket.center);
     pocket_radii_.push_back(pocket.radius);
@@ -78,16 +79,22 @@ int Timeline::shot_at(double t) const {
 
 double Timeline::settled(int shot) const {
   BSIM_EXPECT(shot >= 0 && shot < shot_count(), "no such shot in the timeline");
-  const ShotSpan& span = shots_[static_cast<std::size_t>(shot)];
-  double last = span.cue;
-  for (const std::vector<MotionSegment>& segs : segments_)
-    for (std::size_t i = 0; i < segs.size(); ++i) {
-      const Motion m = segs[i].start.motion;
-      if (m != Motion::sliding && m != Motion::rolling && m != Motion::falling) continue;
-      const double end = i + 1 < segs.size() ? segs[i + 1].t0 : duration();
-      if (segs[i].t0 < span.rest && end > span.cue) last = std::max(last, std::min(end, span.rest));
-    }
-  return last;
+  return settled_[static_cast<std::size_t>(shot)];
+}
+
+void Timeline::find_settled() {
+  settled_.clear();
+  for (const ShotSpan& span : shots_) {
+    double last = span.cue;
+    for (const std::vector<MotionSegment>& segs : segments_)
+      for (std::size_t i = 0; i < segs.size(); ++i) {
+        const Motion m = segs[i].start.motion;
+        if (m != Motion::sliding && m != Motion::rolling && m != Motion::falling) continue;
+        const double end = i + 1 < segs.size() ? segs[i + 1].t0 : duration();
+        if (segs[i].t0 < span.rest && end > span.cue) last = std::max(last, std::min(end, span.rest));
+      }
+    settled_.push_back(last);
+  }
 }
 
 BallState Timeline::segment_state(const MotionSegment& seg, const SegmentSteps* steps, double t,

@@ -78,6 +78,9 @@ class Timeline {
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
   std::vector<ShotSpan> shots_;
+  std::vector<double> settled_;  ///< per shot, settled(): found once from the segments
+  /// Fills settled_ from the segments and shots.
+  void find_settled();
   /// Per ball and segment, the integration steps saved at construction (shared by copies: it never
   /// changes once built).
   std::shared_ptr<const std::vector<std::vector<SegmentSteps>>> steps_;
