@@ -340,7 +340,7 @@ RegionScene region_scene(const Scene& scene) {
   // Where the lamp's light goes down through each pocket, and its cup below. A cut pocket's shelf is
   // cloth like the bed, so only its hole in the slate opens (with the slate's rounded lip); the cup
   // under it (the include's PocketLiner) lies within the hole and its liner. Any other pocket opens
-  // through its drop circle, its throat and its jaws, as the include's PocketBound, and its cup is
+  // through its drop circle, its throat and its jaws, as the include's PocketBox, and its cup is
   // that opening carried down. All the lamp lights below the cloth through an opening lies in the
   // upright box round its cup's disc.
   const PocketJaws& jaws = kStandardTable.jaws;

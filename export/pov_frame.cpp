@@ -422,13 +422,14 @@ FrameContent frame_content(const Shot& shot, int frame, int fps) {
   const MovieFrame shown = shot.movie.frame(frame, fps);
   const double t = shown.time, shutter = kShutter / fps * shown.rate;
   const CameraScript& script = shot.camera_at(shown);
-  content.header = "// " + frame_name(frame) + " of " + shot.scene.name + ": t = " + pov_number(t) + " s" +
-                   (shown.replay ? " (replay)" : "") + "\n#version 3.7;\n#include \"" + std::string(kPovIncludeName) +
-                   "\"\n\n";
-
   const CameraPose camera = script.pose(t);
   Vec3 location = camera.location, look_at = camera.look_at;
   steady_camera(location, look_at);
+  // The include's cloth fades its weave with the distance from the camera (materials.inc), so the
+  // camera's place comes before it.
+  content.header = "// " + frame_name(frame) + " of " + shot.scene.name + ": t = " + pov_number(t) + " s" +
+                   (shown.replay ? " (replay)" : "") + "\n#version 3.7;\n#declare CamPos = " + pov_vector(location) +
+                   ";\n#include \"" + std::string(kPovIncludeName) + "\"\n\n";
   content.camera_pose = {location, look_at, false};
   // right is -x for z-up right-handed coordinates; angle is the horizontal field of view.
   std::ostringstream cam;

@@ -1,5 +1,6 @@
 // frame_00000 of tiny: t = 0.0 s
 #version 3.7;
+#declare CamPos = <-1.8, -1.2, 1.1>;
 #include "billiards.inc"
 
 camera {
