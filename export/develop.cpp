@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "depth_of_field.h"
+#include "frame_lens.h"
 #include "lower_third.h"
 #include "png_file.h"
 
@@ -16,7 +18,7 @@ namespace bsim {
 namespace {
 
 /// Bumped whenever the pipeline's code changes what it makes from the same .hdr.
-constexpr const char* kDevelopVersion = "develop 1";
+constexpr const char* kDevelopVersion = "develop 2";
 
 /// The glare's point-spread function: a sum of Gaussians of growing radius, after the shape of a
 /// lens's (and an eye's) glare PSF, a narrow core with a wide skirt falling off roughly as a power
@@ -32,6 +34,14 @@ constexpr double kGlareReferenceWidth = 1280.0;
 
 /// Rec. 709 / sRGB luminance weights (ITU-R BT.709-6; IEC 61966-2-1 shares its primaries).
 constexpr float kLumaR = 0.2126f, kLumaG = 0.7152f, kLumaB = 0.0722f;
+
+/// SplitMix64's finaliser (Steele, Lea & Flood 2014): a 64-bit hash that spreads every input bit.
+std::uint64_t mix64(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
 
 /// e^-a for a >= 0 from basic arithmetic alone, the same bits on every CPU (glibc's exp picks an
 /// FMA variant at run time, which may differ in the last bit).
@@ -298,7 +308,11 @@ std::string develop_signature() {
   std::string s = std::string(kDevelopVersion) + " exposure " + number(kExposure) + " white " + number(kToneWhite) +
                   " glare " + number(kGlareThreshold) + " " + number(kGlareShare);
   for (const GlareLobe& lobe : kGlareLobes) s += " " + number(lobe.sigma) + ":" + number(lobe.weight);
-  return s + " vignette " + number(kVignetteCornerTan) + " saturation " + number(kSaturation);
+  s += " vignette " + number(kVignetteCornerTan) + " " + number(kOpenVignette) + " " + number(kClearVignetteAperture);
+  s += " blur " + number(kMaxBlurRadius) + " " + number(kTapArea) + " " + std::to_string(kBlurTile);
+  s += " aberration " + number(kRedScale) + " " + number(kBlueScale);
+  s += " grain " + number(kGrainShot) + " " + number(kGrainFloor) + " " + number(kGrainChroma);
+  return s + " saturation " + number(kSaturation);
 }
 
 bool read_hdr(const std::string& path, HdrImage& image, std::string& error) {
@@ -351,13 +365,87 @@ float vignette(int x, int y, int width, int height) {
   return static_cast<float>(c2 * c2);
 }
 
-void expose(HdrImage& image) {
+float vignette(int x, int y, int width, int height, double aperture) {
+  // The cos^4 law and, wide open, the lens's own fall-off (its barrel's rims cut the oblique pencils):
+  // 1 - k r^2, k falling linearly with the f-number to nothing at kClearVignetteAperture.
+  const double k = kOpenVignette * std::clamp((kClearVignetteAperture - aperture) /
+                                                  (kClearVignetteAperture - kOpenAperture), 0.0, 1.0);
+  const double cx = 0.5 * width, cy = 0.5 * height;
+  const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
+  return static_cast<float>(vignette(x, y, width, height) * (1.0 - k * (dx * dx + dy * dy) / (cx * cx + cy * cy)));
+}
+
+void expose(HdrImage& image) { expose(image, kClearVignetteAperture); }
+
+void expose(HdrImage& image, double aperture) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const float f = kExposure * vignette(x, y, image.width, image.height);
+      const float f = kExposure * vignette(x, y, image.width, image.height, aperture);
       float* p = image.rgb.data() + 3 * (static_cast<std::size_t>(y) * image.width + x);
       for (int c = 0; c < 3; ++c) p[c] *= f;
     }
+}
+
+double chromatic_shift(double x, double y, int width, int height, bool red) {
+  const double dx = x - 0.5 * width, dy = y - 0.5 * height;
+  return std::sqrt(dx * dx + dy * dy) * (1.0 - 1.0 / (red ? kRedScale : kBlueScale));
+}
+
+void chromatic_aberration(HdrImage& image) {
+  const int w = image.width, h = image.height;
+  if (w <= 0 || h <= 0) return;
+  const std::vector<float> source = image.rgb;
+  const double cx = 0.5 * w, cy = 0.5 * h;
+  for (const auto& [channel, scale] : {std::pair{0, kRedScale}, std::pair{2, kBlueScale}}) {
+    // Pixel (x, y) of a picture `scale` times larger shows what lies at the centre + offset / scale.
+    const std::vector<Tap> xs = [&] {
+      std::vector<Tap> taps(static_cast<std::size_t>(w));
+      for (int x = 0; x < w; ++x) {
+        const double f = std::clamp(cx + (x + 0.5 - cx) / scale - 0.5, 0.0, w - 1.0);
+        taps[static_cast<std::size_t>(x)] = {static_cast<int>(f), std::min(static_cast<int>(f) + 1, w - 1),
+                                             static_cast<float>(f - static_cast<int>(f))};
+      }
+      return taps;
+    }();
+    for (int y = 0; y < h; ++y) {
+      const double fy = std::clamp(cy + (y + 0.5 - cy) / scale - 0.5, 0.0, h - 1.0);
+      const int y0 = static_cast<int>(fy), y1 = std::min(y0 + 1, h - 1);
+      const float ty = static_cast<float>(fy - y0);
+      for (int x = 0; x < w; ++x) {
+        const Tap& tx = xs[static_cast<std::size_t>(x)];
+        auto at = [&](int px, int py) { return source[3 * (static_cast<std::size_t>(py) * w + px) + channel]; };
+        const float top = at(tx.lo, y0) + tx.t * (at(tx.hi, y0) - at(tx.lo, y0));
+        const float bottom = at(tx.lo, y1) + tx.t * (at(tx.hi, y1) - at(tx.lo, y1));
+        image.rgb[3 * (static_cast<std::size_t>(y) * w + x) + channel] = top + ty * (bottom - top);
+      }
+    }
+  }
+}
+
+void add_grain(HdrImage& image, int frame) {
+  // A normal deviate from four 16-bit uniforms of a 64-bit hash (their sum, centred and scaled to unit
+  // variance: the Irwin-Hall distribution, close to normal), so no log or cosine is called.
+  constexpr double kSqrt3 = 1.7320508075688772;
+  auto normal = [](std::uint64_t h) {
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) sum += (static_cast<double>((h >> (16 * k)) & 0xffff) + 0.5) / 65536.0;
+    return static_cast<float>((sum - 2.0) * kSqrt3);
+  };
+  // The frame's seed: a hash of its number (salted, so frame 0 is no special pattern).
+  const std::uint64_t number = static_cast<std::uint32_t>(frame);
+  const std::uint64_t seed = mix64(0x6772061696e5f31ULL ^ number);
+  const float luma = static_cast<float>(1.0 / std::sqrt(1.0 + kGrainChroma * kGrainChroma));
+  const float chroma = static_cast<float>(kGrainChroma) * luma;
+  const std::size_t pixels = image.rgb.size() / 3;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const std::uint64_t base = seed + 4 * static_cast<std::uint64_t>(i);
+    const float shared = luma * normal(mix64(base));
+    for (int c = 0; c < 3; ++c) {
+      float& v = image.rgb[3 * i + c];
+      const double sigma = std::sqrt(kGrainShot * std::max(0.0f, v) + kGrainFloor);
+      v += static_cast<float>(sigma) * (shared + chroma * normal(mix64(base + 1 + c)));
+    }
+  }
 }
 
 void add_glare(HdrImage& image) {
@@ -418,15 +506,31 @@ std::vector<std::uint8_t> tone_map(const HdrImage& image) {
   return out;
 }
 
-std::vector<std::uint8_t> develop(HdrImage image) {
-  expose(image);
+std::vector<std::uint8_t> develop(HdrImage image, const DevelopLens& lens) {
+  if (!lens.frame || !lens.scene) {
+    expose(image);
+    add_glare(image);
+    return tone_map(image);
+  }
+  const FrameLens& frame = *lens.frame;
+  expose(image, frame.lens.aperture);
+  // The camera POV-Ray renders from, its field of view from the lens (the sensor's half width over
+  // the focal length), so no tangent is taken here.
+  const CameraView view(frame.pose, CameraView::HalfWidth{0.5 * kSensorWidthMm / frame.lens.focal_mm},
+                        static_cast<double>(image.width) / image.height);
+  const DepthPicture depth =
+      nearest_of_neighbours(cast_depth(*lens.scene, frame.moving, view, image.width, image.height));
+  gather_blur(image, depth, blur_radii(depth, frame.lens));
+  chromatic_aberration(image);
   add_glare(image);
+  add_grain(image, frame.frame);
   return tone_map(image);
 }
 
-bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error, const FrameCaption* caption) {
+bool develop_to_png(HdrImage image, const std::string& png_path, std::string& error, const FrameCaption* caption,
+                    const DevelopLens& lens) {
   const int width = image.width, height = image.height;
-  std::vector<std::uint8_t> picture = develop(std::move(image));
+  std::vector<std::uint8_t> picture = develop(std::move(image), lens);
   if (caption && !draw_lower_third(picture, width, height, *caption, error)) return false;
   return write_png(png_path, picture, width, height, error);
 }

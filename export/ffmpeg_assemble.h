@@ -8,6 +8,9 @@
 
 namespace bsim {
 
+/// x264's constant rate factor for the movie: low enough to keep every frame's grain (develop.h).
+inline constexpr const char* kMovieCrf = "16";
+
 struct MovieSettings {
   std::string ffmpeg;  ///< full path of the program
   int fps = 30;

@@ -17,6 +17,7 @@
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
 #include "frame_captions.h"
+#include "frame_lens.h"
 #include "frames.h"
 #include "loudness.h"
 #include "output_stage.h"
@@ -111,6 +112,12 @@ bool write_captions(const Shot& shot, const ExportOptions& options, const std::s
       frames_dir + "/" + kCaptionsName, [&](std::ostream& out) { out << captions_text(captions); }, error);
 }
 
+/// frames/lens.txt: each frame's lens and what it sees, for the develop stage (frame_lens.h).
+bool write_lens(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, std::string& error) {
+  const std::string text = lens_text(depth_scene(shot.scene), frame_lenses(shot, options.fps));
+  return write_file(frames_dir + "/" + kLensName, [&](std::ostream& out) { out << text; }, error);
+}
+
 bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
   for (const auto& [frame, source] : plan.duplicates) {
     std::error_code ec;
@@ -156,6 +163,7 @@ std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int f
   for (int k = 0; k < frames; ++k)
     keys.push_back(fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common));
   add_caption_keys(frames_dir, keys);  // a frame's caption is part of its picture
+  add_lens_keys(frames_dir, keys);     // and its lens, focus and grain
   return keys;
 }
 
@@ -179,6 +187,7 @@ bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, cons
       return false;
   }
   if (!write_captions(shot, options, stage.path("frames"), error)) return false;
+  if (!write_lens(shot, options, stage.path("frames"), error)) return false;
 
   // Exactly as long as the movie; its duration is a whole number of seconds, so of frames too.
   const auto samples = static_cast<std::size_t>(std::llround(shot.movie.duration() * kSampleRate));

@@ -14,6 +14,7 @@
 #include "child_process.h"
 #include "develop.h"
 #include "frame_captions.h"
+#include "frame_lens.h"
 #include "pov_frame.h"
 #include "process_pool.h"
 #include "progress_reporter.h"
@@ -166,7 +167,10 @@ class FrameRendering {
         pool_(settings.processes, kPovraySettle),
         progress_("billiards-export", "rendering", total, total - static_cast<int>(jobs.size()),
                   progress_style(settings.quiet)),
-        captions_(read_caption_lines(frames_dir)) {
+        captions_(read_caption_lines(frames_dir)),
+        lenses_(read_lens_file(frames_dir)) {
+    if (!lenses_.frames.empty() && !parse_depth_scene(lenses_.scene, depth_scene_, depth_scene_error_))
+      depth_scene_error_ = std::string(kLensName) + " does not describe the scene: " + depth_scene_error_;
     // The time left is reckoned from the pixels still to trace (and each POV-Ray run's start), so a
     // run of cheap partial frames after a whole one does not make it look short or long.
     double work = 0;
@@ -387,7 +391,18 @@ class FrameRendering {
       fail(frame, shown_frame(frame) + " could not be developed: its line in " + kCaptionsName + " is not a caption");
       return;
     }
-    if (!develop_to_png(std::move(image), dir_ + png, develop_error, line != captions_.end() ? &caption : nullptr)) {
+    FrameLens lens;
+    const auto lens_line = lenses_.frames.find(frame);
+    const bool has_lens = lens_line != lenses_.frames.end();
+    if (has_lens && (!depth_scene_error_.empty() || !parse_frame_lens(lens_line->second, lens))) {
+      fail(frame, shown_frame(frame) + " could not be developed: " +
+                      (depth_scene_error_.empty() ? "its line in " + std::string(kLensName) + " is not a frame's lens"
+                                                  : depth_scene_error_));
+      return;
+    }
+    const DevelopLens develop_lens = has_lens ? DevelopLens{&lens, &depth_scene_} : DevelopLens{};
+    if (!develop_to_png(std::move(image), dir_ + png, develop_error, line != captions_.end() ? &caption : nullptr,
+                        develop_lens)) {
       fail(frame, shown_frame(frame) + " could not be developed: " + develop_error);
       return;
     }
@@ -437,6 +452,9 @@ class FrameRendering {
   std::map<int, int> dependents_;              ///< frame -> partial frames still to be laid over it
   std::map<int, HdrImage> kept_;               ///< pictures (before developing) that partial frames still need
   const std::map<int, std::string> captions_;  ///< each captioned frame's line of captions.txt
+  const LensFile lenses_;                       ///< lens.txt: the fixed scene and each frame's line
+  DepthScene depth_scene_;                      ///< the fixed scene, read
+  std::string depth_scene_error_;               ///< why it could not be read
   RunOutcome outcome_ = RunOutcome::done;
   int failed_frame_ = -1;
   /// Each running POV-Ray's log size and since when it has had it.

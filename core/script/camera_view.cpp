@@ -41,6 +41,15 @@ CameraView::CameraView(const CameraPose& pose, double hfov_deg, double aspect)
       aspect_(aspect),
       half_width_(std::tan(0.5 * hfov_deg * kDegToRad)) {}
 
+CameraView::CameraView(const CameraPose& pose, HalfWidth half_width, double aspect)
+    : eye_(pose.location),
+      forward_(view_direction(pose.location, pose.look_at)),
+      right_(forward_.cross(picture_up(forward_)).normalized()),
+      up_(right_.cross(forward_)),
+      hfov_deg_(2 * std::atan(half_width.tangent) / kDegToRad),  // for pan() alone
+      aspect_(aspect),
+      half_width_(half_width.tangent) {}
+
 std::optional<PicturePoint> CameraView::project(const Vec3& p) const {
   const Vec3 d = p - eye_;
   const double ahead = d.dot(forward_);

@@ -46,6 +46,13 @@ struct PicturePoint {
 class CameraView {
  public:
   explicit CameraView(const CameraPose& pose, double hfov_deg = kCameraFovDeg, double aspect = kPictureAspect);
+  /// The tangent of half the horizontal field of view (a lens's half sensor width over its focal length).
+  struct HalfWidth {
+    double tangent = 0;
+  };
+  /// The same camera from that tangent instead of the angle: no trigonometric function is called, so
+  /// the develop stage gets the same view on every machine.
+  CameraView(const CameraPose& pose, HalfWidth half_width, double aspect);
 
   const Vec3& eye() const { return eye_; }
   const Vec3& forward() const { return forward_; }  ///< unit, view_direction()

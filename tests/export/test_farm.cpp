@@ -21,7 +21,7 @@ namespace {
 std::string sh(const std::string& s) { return bsim::test::quoted(s); }
 
 /// A 5-second shot: 10 frames at 2 fps, 32x18, draft; the ball rests from frame 8 on, under a still
-/// camera, so frame 9 is the same as frame 8.
+/// camera, so frame 9's .pov is frame 8's (each has its own grain: frame 9 is no copy of frame 8).
 const char* const kScene =
     "cue 0 0\n"
     "ball 0 -0.3 0 0.028575  0.15 0 0  1 0 0 0\n"
@@ -141,20 +141,18 @@ TEST_SUITE("rendering on a Slurm cluster") {
     Farm farm;
     const bsim::test::CommandResult submitted = farm.submit(" --chunk 3 --sbatch-option=--time=5");
     REQUIRE_MESSAGE(submitted.exit_code == 0, submitted.err);
-    // Frame 9 is frame 8's picture: rendered once.
-    CHECK(has(submitted.out,
-              "submitted job 41: 3 tasks render 9 of 10 frames, up to 3 a task; 1 more frame is the same as one of "
-              "them and is copied"));
+    // Frame 9 traces frame 8's .pov, but it gets its own grain: no frame is a copy of another.
+    CHECK(has(submitted.out, "submitted job 41: 4 tasks render 10 of 10 frames, up to 3 a task\n"));
     CHECK(has(submitted.out, "submitted job 42: checks every frame"));
     const std::string args = farm.sbatch_args();
-    CHECK(has(args, "--array=0-2"));
+    CHECK(has(args, "--array=0-3"));
     CHECK(has(args, "--dependency=afterany:41"));
     CHECK(has(args, "--time=5"));
     for (const char* file : {"farm/farm.conf", "farm/chunks.txt", "farm/copies.txt", "farm/task.sh", "farm/movie.sh",
                              "farm/billiards-export", "frames/frame_00002.pov", "soundtrack.wav"})
       CHECK_MESSAGE(fs::exists(farm.out / file), file);
-    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "0-2\n3-5\n6-8\n");
-    CHECK(bsim::test::read_file(farm.out / "farm/copies.txt") == "9 8\n");
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "0-2\n3-5\n6-7\n8-9\n");
+    CHECK(bsim::test::read_file(farm.out / "farm/copies.txt") == "");
     CHECK(has(bsim::test::read_file(farm.out / "farm/farm.conf").value_or(""), "frames_job=41\nmovie_job=42\n"));
 
     const std::string dir = sh(farm.out.string());
@@ -165,21 +163,22 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(has(early.err,
               "frame 6 (frames/frame_00006.png) was not rendered; see its task's log, "
               "farm/logs/frames-41_2.log"));
-    CHECK_FALSE(has(early.err, "frame 9 (frames/frame_00009.png)"));  // a copy: counted, not named
+    CHECK(has(early.err,
+              "frame 9 (frames/frame_00009.png) was not rendered; see its task's log, farm/logs/frames-41_3.log"));
     CHECK(has(early.err, "no movie: 4 of 10 frames are missing"));
     CHECK_FALSE(fs::exists(farm.out / "movie.mp4"));
     const bsim::test::CommandResult status = farm.run(dir + " --farm status", false);
     CHECK(has(status.out, "6 of 10 frames rendered"));
 
-    // Submitted again, only the missing frames are rendered; the task that renders frame 8 copies it
-    // to frame 9.
+    // Submitted again, only the missing frames are rendered; frame 9 from frame 8's trace, with its own
+    // grain.
     const bsim::test::CommandResult again = farm.submit();
     REQUIRE_MESSAGE(again.exit_code == 0, again.err);
-    CHECK(has(again.out, "1 task render 3 of 10 frames"));
-    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "6-8\n");
-    CHECK(farm.run(dir + " --farm render --frames 6-8", false).exit_code == 0);
-    CHECK(bsim::test::require_file(farm.out / "frames/frame_00009.png") ==
-          bsim::test::require_file(farm.out / "frames/frame_00008.png"));
+    CHECK(has(again.out, "1 task render 4 of 10 frames"));
+    CHECK(bsim::test::read_file(farm.out / "farm/chunks.txt") == "6-9\n");
+    CHECK(farm.run(dir + " --farm render --frames 6-9", false).exit_code == 0);
+    const std::string nine = bsim::test::require_file(farm.out / "frames/frame_00009.png");
+    CHECK(nine != bsim::test::require_file(farm.out / "frames/frame_00008.png"));
     CHECK(has(farm.run(dir + " --farm status", false).out, "10 of 10 frames rendered"));
     const bsim::test::CommandResult movie = farm.run(dir + " --farm assemble", false);
     REQUIRE_MESSAGE(movie.exit_code == 0, movie.err);
@@ -192,12 +191,13 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(bsim::test::leftovers(farm.out).empty());
     CHECK(fs::is_empty(farm.tmp));
 
-    // A copy gone, its frame there: nothing to render, the copy is made again at once.
+    // A frame gone: it alone is rendered again, now traced whole, and comes out the same.
     fs::remove(farm.out / "frames/frame_00009.png");
-    const bsim::test::CommandResult copy = farm.submit();
-    REQUIRE_MESSAGE(copy.exit_code == 0, copy.err);
-    CHECK(has(copy.out, "all 10 frames are rendered already"));
-    CHECK(fs::exists(farm.out / "frames/frame_00009.png"));
+    const bsim::test::CommandResult lost = farm.submit();
+    REQUIRE_MESSAGE(lost.exit_code == 0, lost.err);
+    CHECK(has(lost.out, "1 task render 1 of 10 frames"));
+    CHECK(farm.run(dir + " --farm render --frames 9-9", false).exit_code == 0);
+    CHECK(bsim::test::require_file(farm.out / "frames/frame_00009.png") == nine);
 
     // The movie job keeps the frames in the frame store, and a submission takes what the store has.
     farm.store = (farm.dir.path / "store").string();
@@ -211,7 +211,7 @@ TEST_SUITE("rendering on a Slurm cluster") {
 
   TEST_CASE("the jobs run the billiards-export installed on the node when it is this version, else the copy") {
     Farm farm;
-    REQUIRE(farm.submit(" --chunk 3").exit_code == 0);  // chunks 0-2, 3-5, 6-8; task 1 renders 3-5
+    REQUIRE(farm.submit(" --chunk 3").exit_code == 0);  // chunks 0-2, 3-5, 6-7, 8-9; task 1 renders 3-5
     const std::string dir = farm.out.string();
     // A stand-in for the installed program: answers --version with `version`, records any other run.
     const fs::path record = farm.dir.path / "installed.args";
