@@ -52,18 +52,10 @@ work=${keep:-$(mktemp -d)}
 mkdir -p "$work"
 [ -n "$keep" ] || trap 'rm -rf "$work"' EXIT
 
-# The baseline's exporter, built from its own sources (ccache makes a second build quick).
-src=$work/base-src
-if [ ! -x "$src/build/bin/billiards-export" ]; then
-  rm -rf "$src" && mkdir -p "$src"
-  git -C "$root" archive "$base" | tar -x -C "$src"
-  launcher=()
-  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  cmake -S "$src" -B "$src/build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >"$work/base-build.log" 2>&1
-  cmake --build "$src/build" --target billiards-export -j2 >>"$work/base-build.log" 2>&1 ||
-    { echo "look_cost: the baseline did not build; see $work/base-build.log" >&2; exit 1; }
-fi
-export_a=$src/build/bin/billiards-export
+# The baseline's exporter, built from its own sources.
+# shellcheck source=baseline_exporter.sh
+. "$root/tests/bench/baseline_exporter.sh"
+export_a=$(baseline_exporter "$root" "$base" "$work") || { echo "look_cost: giving up" >&2; exit 1; }
 
 for side in A B; do
   exporter=$export_a
