@@ -1,5 +1,8 @@
-# Sourced by the look's scripts: builds an earlier commit's billiards-export from its own sources.
+# shellcheck shell=bash
+# Sourced by the look's scripts (look_cost.sh, look_gallery.sh): their scratch folder, and an earlier
+# commit's billiards-export built from its own sources.
 #
+#   bench_work KEEP                     # sets $work: KEEP, or a temporary folder removed at exit
 #   baseline_exporter ROOT COMMIT DIR   # prints the exporter's path
 #
 # `git archive COMMIT` of the repository at ROOT is unpacked into DIR/base-src and built there
@@ -18,4 +21,11 @@ baseline_exporter() {
       { echo "the baseline $commit did not build; see $dir/base-build.log" >&2; return 1; }
   fi
   echo "$src/build/bin/billiards-export"
+}
+
+bench_work() {
+  work=${1:-$(mktemp -d)}
+  mkdir -p "$work"
+  # shellcheck disable=SC2064 # the folder is known now
+  [ -n "$1" ] || trap "rm -rf '$work'" EXIT
 }

@@ -48,13 +48,9 @@ command -v povray >/dev/null || { echo "look_cost: povray is needed" >&2; exit 1
 width=${size%x*}
 height=${size#*x}
 
-work=${keep:-$(mktemp -d)}
-mkdir -p "$work"
-[ -n "$keep" ] || trap 'rm -rf "$work"' EXIT
-
-# The baseline's exporter, built from its own sources.
 # shellcheck source=baseline_exporter.sh
 . "$root/tests/bench/baseline_exporter.sh"
+bench_work "$keep"
 export_a=$(baseline_exporter "$root" "$base" "$work") || { echo "look_cost: giving up" >&2; exit 1; }
 
 for side in A B; do

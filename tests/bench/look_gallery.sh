@@ -52,12 +52,9 @@ font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 width=${size%x*}
 height=${size#*x}
 
-work=${keep:-$(mktemp -d)}
-mkdir -p "$work"
-[ -n "$keep" ] || trap 'rm -rf "$work"' EXIT
-
 # shellcheck source=baseline_exporter.sh
 . "$root/tests/bench/baseline_exporter.sh"
+bench_work "$keep"
 export_a=$(baseline_exporter "$root" "$base" "$work") || { echo "look_gallery: giving up" >&2; exit 1; }
 
 # scene (empty: the built-in break), its name, its frames.
@@ -98,30 +95,25 @@ for name in break runout follow; do
     --out "$work/B/$name" >"$work/B/$name/develop.txt"
 done
 
-# The sheet: a row an instant, the baseline left and this tree right, each at half size, labelled.
+# The sheet: a row an instant, the baseline left and this tree right, each at half size, labelled;
+# then the focus's close-up again at full size: the middle of its top half, where the far rail and
+# the ball beyond lie.
 cell_w=$((width / 2)) cell_h=$((height / 2)) text=$((height / 36))
+head=$(git -C "$root" rev-parse --short HEAD)
 inputs=() filters='' k=0
-for i in "${instants[@]}"; do
-  name=${i% *} f=${i#* }
-  n=$(printf 'frame_%05d' "$f")
-  for side in A B; do
-    label="$name frame $f, $base"
-    [ $side = B ] && label="$name frame $f, $(git -C "$root" rev-parse --short HEAD)"
-    inputs+=(-i "$work/$side/$name/$n.png")
-    filters+="[$k:v]scale=$cell_w:$cell_h,drawtext=fontfile=$font:text='$label':x=8:y=8:fontsize=$text:fontcolor=white:box=1:boxcolor=black@0.5:boxborderw=4[c$k];"
-    k=$((k + 1))
-  done
-done
-# And the focus's close-up again at full size: the middle of its top half, where the far rail and the
-# ball beyond lie.
-close=${instants[-1]}
-for side in A B; do
-  n=$(printf 'frame_%05d' "${close#* }")
-  label="${close% *} frame ${close#* } at full size, $base"
-  [ $side = B ] && label="${close% *} frame ${close#* } at full size, $(git -C "$root" rev-parse --short HEAD)"
-  inputs+=(-i "$work/$side/${close% *}/$n.png")
-  filters+="[$k:v]crop=$cell_w:$cell_h:$((width / 4)):0,drawtext=fontfile=$font:text='$label':x=8:y=8:fontsize=$text:fontcolor=white:box=1:boxcolor=black@0.5:boxborderw=4[c$k];"
+add_cell() {  # picture label filter
+  inputs+=(-i "$1")
+  filters+="[$k:v]$3,drawtext=fontfile=$font:text='$2':x=8:y=8:fontsize=$text:fontcolor=white:box=1:boxcolor=black@0.5:boxborderw=4[c$k];"
   k=$((k + 1))
+}
+close=${instants[-1]}
+for i in "${instants[@]}" "$close full"; do
+  read -r name f whole <<<"$i"
+  n=$(printf 'frame_%05d' "$f")
+  filter=scale=$cell_w:$cell_h what="$name frame $f"
+  [ -z "$whole" ] || filter=crop=$cell_w:$cell_h:$((width / 4)):0 what="$name frame $f at full size"
+  add_cell "$work/A/$name/$n.png" "$what, $base" "$filter"
+  add_cell "$work/B/$name/$n.png" "$what, $head" "$filter"
 done
 rows=
 for ((r = 0; r < k / 2; ++r)); do
