@@ -396,7 +396,9 @@ void chromatic_aberration(HdrImage& image) {
   if (w <= 0 || h <= 0) return;
   const std::vector<float> source = image.rgb;
   const double cx = 0.5 * w, cy = 0.5 * h;
-  for (const auto& [channel, scale] : {std::pair{0, kRedScale}, std::pair{2, kBlueScale}}) {
+  for (const auto& [channel_index, channel_scale] : {std::pair{0, kRedScale}, std::pair{2, kBlueScale}}) {
+    const int channel = channel_index;  // lambdas capture a variable, not a structured binding
+    const double scale = channel_scale;
     // Pixel (x, y) of a picture `scale` times larger shows what lies at the centre + offset / scale.
     const std::vector<Tap> xs = [&] {
       std::vector<Tap> taps(static_cast<std::size_t>(w));
