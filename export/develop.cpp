@@ -368,8 +368,8 @@ float vignette(int x, int y, int width, int height) {
 float vignette(int x, int y, int width, int height, double aperture) {
   // The cos^4 law and, wide open, the lens's own fall-off (its barrel's rims cut the oblique pencils):
   // 1 - k r^2, k falling linearly with the f-number to nothing at kClearVignetteAperture.
-  const double k = kOpenVignette * std::clamp((kClearVignetteAperture - aperture) /
-                                                  (kClearVignetteAperture - kOpenAperture), 0.0, 1.0);
+  const double k = kOpenVignette *
+                   std::clamp((kClearVignetteAperture - aperture) / (kClearVignetteAperture - kOpenAperture), 0.0, 1.0);
   const double cx = 0.5 * width, cy = 0.5 * height;
   const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
   return static_cast<float>(vignette(x, y, width, height) * (1.0 - k * (dx * dx + dy * dy) / (cx * cx + cy * cy)));

@@ -115,7 +115,8 @@ bool write_captions(const Shot& shot, const ExportOptions& options, const std::s
 /// frames/lens.txt: each frame's lens and what it sees, for the develop stage (frame_lens.h).
 bool write_lens(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, std::string& error) {
   const std::string text = lens_text(depth_scene(shot.scene), frame_lenses(shot, options.fps));
-  return write_file(frames_dir + "/" + kLensName, [&](std::ostream& out) { out << text; }, error);
+  return write_file(
+      frames_dir + "/" + kLensName, [&](std::ostream& out) { out << text; }, error);
 }
 
 bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {

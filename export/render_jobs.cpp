@@ -452,9 +452,9 @@ class FrameRendering {
   std::map<int, int> dependents_;              ///< frame -> partial frames still to be laid over it
   std::map<int, HdrImage> kept_;               ///< pictures (before developing) that partial frames still need
   const std::map<int, std::string> captions_;  ///< each captioned frame's line of captions.txt
-  const LensFile lenses_;                       ///< lens.txt: the fixed scene and each frame's line
-  DepthScene depth_scene_;                      ///< the fixed scene, read
-  std::string depth_scene_error_;               ///< why it could not be read
+  const LensFile lenses_;                      ///< lens.txt: the fixed scene and each frame's line
+  DepthScene depth_scene_;                     ///< the fixed scene, read
+  std::string depth_scene_error_;              ///< why it could not be read
   RunOutcome outcome_ = RunOutcome::done;
   int failed_frame_ = -1;
   /// Each running POV-Ray's log size and since when it has had it.
