@@ -77,24 +77,33 @@ SweptBox swept_box(const Path& path, double horizon) {
   return box;
 }
 
-bool boxes_within(const SweptBox& a, const SweptBox& b, double margin) {
-  for (int k = 0; k < 2; ++k)
-    if (a.lo[k] > b.hi[k] + margin || b.lo[k] > a.hi[k] + margin) return false;
-  return true;
-}
-
 std::optional<double> next_ball_ball(const Path& a, const Path& b, double distance, double horizon) {
   return circle_contact(b.p - a.p, b.v - a.v, 0.5 * (b.a - a.a), distance, horizon);
 }
 
 double cushion_reach(double ball_radius, double nose_height) { return nose_reach(ball_radius, nose_height); }
 
-std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon) {
+NoseLine nose_line(const Rail& rail) {
+  NoseLine line;
+  line.rail = rail;
   const Vec3 along(rail.b.x() - rail.a.x(), rail.b.y() - rail.a.y(), 0);
-  const double length = along.norm();
+  line.length = along.norm();
+  if (line.length == 0) return line;
+  line.dir = along / line.length;
+  line.inward = Vec3(line.dir.y(), -line.dir.x(), 0);  // the playing side: right of a -> b
+  return line;
+}
+
+std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon) {
+  return next_ball_cushion(ball, nose_line(rail), reach, horizon);
+}
+
+std::optional<double> next_ball_cushion(const Path& ball, const NoseLine& line, double reach, double horizon) {
+  const Rail& rail = line.rail;
+  const double length = line.length;
   if (length == 0) return std::nullopt;
-  const Vec3 dir = along / length;
-  const Vec3 inward(dir.y(), -dir.x(), 0);  // the playing side: right of a -> b
+  const Vec3& dir = line.dir;
+  const Vec3& inward = line.inward;
   const Vec3 rel(ball.p.x() - rail.a.x(), ball.p.y() - rail.a.y(), 0);
   // s(t): distance of the centre from the nose line beyond the contact reach.
   Poly s{{inward.dot(rel) - reach, inward.dot(ball.v), 0.5 * inward.dot(ball.a), 0, 0}};

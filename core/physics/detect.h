@@ -35,7 +35,11 @@ struct SweptBox {
   Vec3 lo, hi;
 };
 SweptBox swept_box(const Path& path, double horizon);
-bool boxes_within(const SweptBox& a, const SweptBox& b, double margin);
+/// Whether the two boxes come within `margin` of each other in the bed plane.
+inline bool boxes_within(const SweptBox& a, const SweptBox& b, double margin) {
+  return !(a.lo.x() > b.hi.x() + margin || b.lo.x() > a.hi.x() + margin || a.lo.y() > b.hi.y() + margin ||
+           b.lo.y() > a.hi.y() + margin);
+}
 
 /// First contact of two balls whose centres must stay `distance` (2R) apart, in the bed plane.
 std::optional<double> next_ball_ball(const Path& a, const Path& b, double distance, double horizon);
@@ -47,6 +51,18 @@ double cushion_reach(double ball_radius, double nose_height);
 
 /// First contact of the ball with the nose line of `rail` between its end points (from the playing side).
 std::optional<double> next_ball_cushion(const Path& ball, const Rail& rail, double reach, double horizon);
+
+/// A nose line as next_ball_cushion meets it, worked out once for many balls: the rail, its unit direction
+/// a -> b and its playing side's normal in the bed plane, and its length.
+struct NoseLine {
+  Rail rail;
+  Vec3 dir{0, 0, 0};
+  Vec3 inward{0, 0, 0};
+  double length = 0;
+};
+NoseLine nose_line(const Rail& rail);
+/// next_ball_cushion(ball, line.rail, reach, horizon), the same to the bit.
+std::optional<double> next_ball_cushion(const Path& ball, const NoseLine& line, double reach, double horizon);
 
 /// First contact of the ball with a cushion end point (a pocket jaw), from any side.
 std::optional<double> next_ball_point(const Path& ball, const Vec3& point, double reach, double horizon);

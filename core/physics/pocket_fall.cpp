@@ -1,6 +1,7 @@
 #include "pocket_fall.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace bsim {
@@ -149,6 +150,32 @@ BallState finish_fall(Fall& fall, long done, double dt) {
 BallState fall_state(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt) {
   Fall fall(entry, pocket, params);
   return finish_fall(fall, 0, dt);
+}
+
+FallEnd fall_end(const BallState& entry, const Pocket& pocket, const PhysicsParams& params) {
+  // fall_duration's integration, keeping the state after each of its last few whole steps.
+  constexpr long kKeep = 4;
+  std::array<FallPath::Saved, kKeep> last{};
+  Fall fall(entry, pocket, params);
+  long count = 0;  ///< steps taken; last[c % kKeep] is the state after c of them
+  last[0] = fall.saved();
+  while (!fall.settled() && fall.time() < kMaxFall) {
+    fall.step(kFallStep);
+    ++count;
+    last[static_cast<std::size_t>(count % kKeep)] = fall.saved();
+  }
+  FallEnd end;
+  end.duration = fall.time();
+  // fall_state at that duration takes floor(duration / step) whole steps (fewer where the ball settles),
+  // then the part step left: resumed from the same steps here, or integrated again if they are gone.
+  const long done = std::min(static_cast<long>(std::floor(end.duration / kFallStep)), count);
+  if (count - done < kKeep) {
+    fall.resume(last[static_cast<std::size_t>(done % kKeep)]);
+    end.state = finish_fall(fall, done, end.duration);
+  } else {
+    end.state = fall_state(entry, pocket, params, end.duration);
+  }
+  return end;
 }
 
 FallPath::FallPath(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt_max)

@@ -25,6 +25,14 @@ double fall_duration(const BallState& entry, const Pocket& pocket, const Physics
 /// The falling ball dt seconds after it entered (state `falling`; `pocketed` from fall_duration on).
 BallState fall_state(const BallState& entry, const Pocket& pocket, const PhysicsParams& params, double dt);
 
+/// A fall to its end: its duration, fall_duration, and fall_state at that duration, the same to the bit
+/// as those two give, from one integration instead of two.
+struct FallEnd {
+  double duration = 0;  ///< s
+  BallState state;
+};
+FallEnd fall_end(const BallState& entry, const Pocket& pocket, const PhysicsParams& params);
+
 /// One fall's integration saved every few steps up to dt_max: fall_state at any dt then repeats at
 /// most kSaveEvery steps from the last save before it, and gives the same state to the bit (the
 /// steps it takes are the ones fall_state takes from the entry). Past dt_max it steps on from the end.

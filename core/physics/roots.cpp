@@ -16,17 +16,28 @@ struct Bracket {
   double lo, hi;
 };
 
-/// Narrows [lo, hi] around the one root of f inside, keeping which side is positive:
+/// f(x) for f of degree D, by Horner's rule over c[0..D] alone. The same bits as Poly::operator(): there
+/// the coefficients above D are zeros, and adding a zero to the nonzero c[D] changes no bit.
+template <int D>
+double value(const Poly& f, double x) {
+  double v = f.c[D];
+  for (int k = D - 1; k >= 0; --k) v = f.c[static_cast<std::size_t>(k)] + x * v;
+  return v;
+}
+
+/// Narrows [lo, hi] around the one root of f (of degree D) inside, keeping which side is positive:
 /// (f(lo) > 0) == lo_positive and (f(hi) > 0) != lo_positive throughout.
-Bracket refine(const Poly& f, const Poly& df, double lo, double hi, bool lo_positive) {
+template <int D>
+Bracket refine(const Poly& f, double lo, double hi, bool lo_positive) {
+  const Poly df = f.derivative();
   double x = 0.5 * (lo + hi);
   for (int i = 0; i < 200 && hi - lo > tolerance(hi); ++i) {
-    const double fx = f(x);
+    const double fx = value<D>(f, x);
     if ((fx > 0) == lo_positive)
       lo = x;
     else
       hi = x;
-    const double d = df(x);
+    const double d = value<D - 1>(df, x);
     double next = d != 0 ? x - fx / d : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) {
       next = 0.5 * (lo + hi);
@@ -34,13 +45,23 @@ Bracket refine(const Poly& f, const Poly& df, double lo, double hi, bool lo_posi
       // Newton has converged from one side: probe just either side of its answer to close the bracket.
       const double tol = tolerance(next);
       const double l = std::max(lo, next - tol), h = std::min(hi, next + tol);
-      if (l > lo && (f(l) > 0) == lo_positive) lo = l;
-      if (h < hi && (f(h) > 0) != lo_positive) hi = h;
+      if (l > lo && (value<D>(f, l) > 0) == lo_positive) lo = l;
+      if (h < hi && (value<D>(f, h) > 0) != lo_positive) hi = h;
       next = 0.5 * (lo + hi);
     }
     x = next;
   }
   return {lo, hi};
+}
+
+/// refine for f of degree 1 to 4, f's degree given.
+Bracket refine(const Poly& f, int degree, double lo, double hi, bool lo_positive) {
+  switch (degree) {
+    case 1: return refine<1>(f, lo, hi, lo_positive);
+    case 2: return refine<2>(f, lo, hi, lo_positive);
+    case 3: return refine<3>(f, lo, hi, lo_positive);
+    default: return refine<4>(f, lo, hi, lo_positive);
+  }
 }
 
 void push(Roots& roots, double t) {
@@ -65,6 +86,20 @@ int breakpoints(const Poly& f, double lo, double hi, std::array<double, 6>& out)
 
 }  // namespace
 
+bool clearly_positive(const Poly& f, double h) {
+  std::array<double, 5> p{};
+  double power = 1, size = 0;
+  for (std::size_t k = 0; k < 5; ++k) {
+    p[k] = f.c[k] * power;
+    size += std::abs(p[k]);
+    power *= h;
+  }
+  const double margin = 1e-12 * size;
+  const double b1 = p[0] + p[1] / 4, b2 = p[0] + p[1] / 2 + p[2] / 6;
+  const double b3 = p[0] + 0.75 * p[1] + p[2] / 2 + p[3] / 4, b4 = p[0] + p[1] + p[2] + p[3] + p[4];
+  return p[0] > margin && b1 > margin && b2 > margin && b3 > margin && b4 > margin;
+}
+
 int Poly::degree() const {
   for (int d = 4; d > 0; --d)
     if (c[static_cast<std::size_t>(d)] != 0) return d;
@@ -82,7 +117,6 @@ Roots roots_in(const Poly& f, double lo, double hi) {
   }
   std::array<double, 6> points{};
   const int n = breakpoints(f, lo, hi, points);
-  const Poly df = f.derivative();
   double a = points[0], fa = f(a);
   if (fa == 0) push(roots, a);
   for (int i = 1; i < n; ++i) {
@@ -90,7 +124,7 @@ Roots roots_in(const Poly& f, double lo, double hi) {
     if (fb == 0) {
       push(roots, b);
     } else if (fa != 0 && (fa > 0) != (fb > 0)) {
-      const Bracket r = refine(f, df, a, b, fa > 0);
+      const Bracket r = refine(f, degree, a, b, fa > 0);
       push(roots, 0.5 * (r.lo + r.hi));
     }
     a = b;
@@ -100,13 +134,16 @@ Roots roots_in(const Poly& f, double lo, double hi) {
 }
 
 std::optional<double> first_descent(const Poly& f, double lo, double hi) {
-  if (f.degree() == 0 || !(lo <= hi)) return std::nullopt;
+  const int degree = f.degree();
+  if (degree == 0 || !(lo <= hi)) return std::nullopt;
+  // Clearly positive all along: the search below could only find no descent.
+  if (lo == 0 && hi > 0 && clearly_positive(f, hi)) return std::nullopt;
   std::array<double, 6> points{};
   const int n = breakpoints(f, lo, hi, points);
   double a = points[0];
   for (int i = 1; i < n; ++i) {
     const double b = points[static_cast<std::size_t>(i)];
-    if (f(b) <= 0) return refine(f, f.derivative(), a, b, true).lo;
+    if (f(b) <= 0) return refine(f, degree, a, b, true).lo;
     a = b;
   }
   return std::nullopt;

@@ -26,6 +26,12 @@ struct Roots {
 /// The real roots of f in [lo, hi], ascending; a root of even multiplicity counts when f reaches 0 there.
 Roots roots_in(const Poly& f, double lo, double hi);
 
+/// Whether f is clearly above zero all over [0, h], h > 0: every Bernstein coefficient of f on [0, h]
+/// (whose least is a lower bound of f there) exceeds 1e-12 of the sum of the sizes of f's terms at h.
+/// Evaluating f by Horner's rule anywhere in [0, h] errs by far less than that, so then f as evaluated
+/// is > 0 at every point of [0, h].
+bool clearly_positive(const Poly& f, double h);
+
 /// The first time in [lo, hi] at which f comes down to <= 0, given f(lo) > 0: the last time before it
 /// at which f is still > 0 (within 1e-12 max(1, t)), or nullopt when f stays > 0 on [lo, hi].
 std::optional<double> first_descent(const Poly& f, double lo, double hi);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
-#include <queue>
+#include <memory>
+#include <span>
 #include <tuple>
 
 #include "check.h"
@@ -43,15 +45,184 @@ struct Later {
 
 bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
 
+/// One jaw of a cut pocket (table.h, PocketMouth): its facing, a straight cushion from the rounding into
+/// the pocket, and its rounded jaw point, a round one; both answered by the cushion model.
+struct Jaw {
+  int pocket = -1;
+  int rail = -1;  ///< the rail whose end it is (its nose height, its reach)
+  Rail face;      ///< playing side on the right of a -> b, as a rail's
+  Vec3 round{0, 0, 0};
+  double round_radius = 0;
+  SweptBox box{};  ///< both, seen from above
+};
+
+/// A feature of the table seen from above (a cushion, a jaw, a pocket's circle) for the cheap test of
+/// whether a ball's swept box comes within `margin` of its box: `hi` already has the margin added.
+struct Reach {
+  double lo_x = 0, lo_y = 0, hi_x = 0, hi_y = 0, margin = 0;
+};
+Reach reach_of(const SweptBox& box, double margin) {
+  return {box.lo.x(), box.lo.y(), box.hi.x() + margin, box.hi.y() + margin, margin};
+}
+/// m a ball's swept box is grown by when it is tested against a feature: far beyond the round-off of the
+/// box and of the contact (1e-15 m), so a test passes wherever the ball's centre can meet the feature.
+constexpr double kBoxSlack = 1e-9;
+
+/// Whether a ball whose centre sweeps `box` can come within a feature's margin of its box: what
+/// boxes_within(box, the feature's box, its margin) tests, kBoxSlack looser.
+bool within_reach(const SweptBox& box, const Reach& r) {
+  return !(box.lo.x() - kBoxSlack > r.hi_x || r.lo_x > box.hi.x() + r.margin + kBoxSlack ||
+           box.lo.y() - kBoxSlack > r.hi_y || r.lo_y > box.hi.y() + r.margin + kBoxSlack);
+}
+
+/// What the event loop meets of a table, worked out from the scene's rails and pockets and the balls'
+/// radius: each cushion's reach and box, the nose lines as the physics meets them (a cut pocket's jaw
+/// end stops where its rounding begins) and the cut pockets' jaws.
+struct TableGeometry {
+  double ball_radius = 0;
+  std::vector<Rail> rails;  ///< the scene's, and its pockets: what it was worked out from
+  std::vector<Pocket> pockets;
+  std::vector<double> reach;
+  std::vector<SweptBox> rail_boxes;
+  std::vector<Rail> contact_rails;
+  std::vector<std::array<char, 2>> rail_end_is_jaw;  ///< a rail end that is a jaw point: its rounding stands for it
+  std::vector<Jaw> jaws;
+  // For the tests of schedule_own: each rail's and jaw's box within its reach, each pocket's circle, the
+  // contact rails' and the jaws' facings' nose lines.
+  std::vector<Reach> rail_reach, jaw_reach, pocket_reach;
+  std::vector<NoseLine> rail_lines, jaw_lines;
+};
+
+void add_jaws(TableGeometry& g, int pocket, const PocketMouth& m) {
+  if (!m.cut) return;
+  for (int i = 0; i < 2; ++i) {
+    const auto r = static_cast<std::size_t>(m.rail[i]);
+    const double h = g.rails[r].a.z();
+    Jaw jaw;
+    jaw.pocket = pocket;
+    jaw.rail = m.rail[i];
+    jaw.face = m.facing_line(i, h);
+    jaw.round = Vec3(m.round_centre[i].x(), m.round_centre[i].y(), h);
+    jaw.round_radius = m.round_radius;
+    const Vec3 grow(m.round_radius, m.round_radius, 0);
+    jaw.box = {jaw.face.a.cwiseMin(jaw.face.b).cwiseMin(jaw.round - grow),
+               jaw.face.a.cwiseMax(jaw.face.b).cwiseMax(jaw.round + grow)};
+    g.jaws.push_back(jaw);
+    (m.at_b[i] ? g.contact_rails[r].b : g.contact_rails[r].a) = Vec3(m.nose_end[i].x(), m.nose_end[i].y(), h);
+    g.rail_end_is_jaw[r][m.at_b[i] ? 1 : 0] = 1;
+  }
+}
+
+std::shared_ptr<const TableGeometry> work_out_table(const Scene& scene) {
+  auto g = std::make_shared<TableGeometry>();
+  g->ball_radius = scene.physics.ball_radius;
+  g->rails = scene.rails;
+  g->pockets = scene.pockets;
+  for (const Rail& rail : scene.rails) {
+    g->reach.push_back(cushion_reach(g->ball_radius, rail.a.z()));
+    g->rail_boxes.push_back({rail.a.cwiseMin(rail.b), rail.a.cwiseMax(rail.b)});
+  }
+  g->contact_rails = scene.rails;
+  g->rail_end_is_jaw.assign(scene.rails.size(), {0, 0});
+  for (int p = 0; p < static_cast<int>(scene.pockets.size()); ++p)
+    add_jaws(*g, p, pocket_mouth(scene.pockets[static_cast<std::size_t>(p)], scene.rails));
+  for (std::size_t r = 0; r < g->rails.size(); ++r) {
+    g->rail_reach.push_back(reach_of(g->rail_boxes[r], g->reach[r]));
+    g->rail_lines.push_back(nose_line(g->contact_rails[r]));
+  }
+  for (const Jaw& jaw : g->jaws) {
+    g->jaw_reach.push_back(reach_of(jaw.box, g->reach[static_cast<std::size_t>(jaw.rail)]));
+    g->jaw_lines.push_back(nose_line(jaw.face));
+  }
+  for (const Pocket& pocket : g->pockets)
+    g->pocket_reach.push_back(reach_of({pocket.center, pocket.center}, pocket.radius));
+  return g;
+}
+
+/// The same bits (so -0 and 0 differ, and a NaN matches itself).
+bool same(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+bool same(const Vec3& a, const Vec3& b) { return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z()); }
+
+/// Whether `g` was worked out from this scene's table: every value it depends on is the same to the bit.
+bool same_table(const TableGeometry& g, const Scene& scene) {
+  if (!same(g.ball_radius, scene.physics.ball_radius) || g.rails.size() != scene.rails.size() ||
+      g.pockets.size() != scene.pockets.size())
+    return false;
+  for (std::size_t r = 0; r < g.rails.size(); ++r)
+    if (!same(g.rails[r].a, scene.rails[r].a) || !same(g.rails[r].b, scene.rails[r].b)) return false;
+  for (std::size_t p = 0; p < g.pockets.size(); ++p) {
+    const Pocket &a = g.pockets[p], &b = scene.pockets[p];
+    if (!same(a.center, b.center) || !same(a.radius, b.radius) || a.cut != b.cut || a.kind != b.kind ||
+        !same(a.jaw[0], b.jaw[0]) || !same(a.jaw[1], b.jaw[1]) || !same(a.axis, b.axis) ||
+        !same(a.jaw_radius, b.jaw_radius))
+      return false;
+  }
+  return true;
+}
+
+/// The table's geometry, worked out once for a run of shots on the same table (a player trying strokes
+/// simulates thousands): the last one worked out on this thread is kept and used again while its table
+/// is the same to the bit, so every shot sees exactly the values it would have worked out itself.
+std::shared_ptr<const TableGeometry> table_geometry(const Scene& scene) {
+  thread_local std::shared_ptr<const TableGeometry> last;
+  if (!last || !same_table(*last, scene)) last = work_out_table(scene);
+  return last;
+}
+
+/// Each ball's path and the box it sweeps until its next event of its own, cached for the pair tests.
+struct Track {
+  Path path;  ///< from t0
+  double t0 = 0;
+  SweptBox box{};    ///< from the last scheduling time to the ball's next event of its own
+  bool live = true;  ///< on the bed
+};
+
+/// The event loop's working storage: each ball's version, next own event, track and scratch, and the
+/// queue of candidates (a heap, kept as std::priority_queue keeps one: std::push_heap, std::pop_heap).
+struct Workspace {
+  std::vector<unsigned> version;
+  std::vector<double> own_time;
+  std::vector<Track> tracks;
+  std::vector<char> done;
+  std::vector<Path> now;
+  std::vector<unsigned> now_epoch;
+  std::vector<char> in_group;
+  std::vector<int> group, changed;
+  std::vector<Candidate> queue;
+};
+
+/// Storage kept from shot to shot on this thread and lent to one simulation at a time, so that a shot
+/// allocates none of its working storage (a player trying strokes simulates thousands of shots). Every
+/// shot sets all it reads.
+Workspace& spare_storage() {
+  thread_local Workspace spare;
+  return spare;
+}
+
 class Simulator {
  public:
   explicit Simulator(const Scene& scene)
-      : scene_(scene), params_(scene.physics), n_(static_cast<int>(scene.balls.size())) {
+      : scene_(scene),
+        params_(scene.physics),
+        n_(static_cast<int>(scene.balls.size())),
+        table_(table_geometry(scene)),
+        reach_(table_->reach),
+        rail_boxes_(table_->rail_boxes),
+        contact_rails_(table_->contact_rails),
+        rail_end_is_jaw_(table_->rail_end_is_jaw),
+        jaws_(table_->jaws) {
     const double R = params_.ball_radius;
-    segments_.resize(static_cast<std::size_t>(n_));
-    version_.assign(static_cast<std::size_t>(n_), 0);
-    own_time_.assign(static_cast<std::size_t>(n_), kInf);
-    tracks_.resize(static_cast<std::size_t>(n_));
+    const auto n = static_cast<std::size_t>(n_);
+    trade_storage();
+    segments_.resize(n);
+    version_.assign(n, 0);
+    own_time_.assign(n, kInf);
+    tracks_.assign(n, Track{});
+    done_.assign(n, 0);
+    now_.resize(n);
+    now_epoch_.assign(n, 0);
+    in_group_.assign(n, 0);
+    queue_.clear();
     for (int i = 0; i < n_; ++i) {
       const Ball& ball = scene.balls[static_cast<std::size_t>(i)];
       BallState s;
@@ -63,19 +234,18 @@ class Simulator {
       } else {
         s.position.z() = R;  // on the bed (the parser allows round-off)
       }
-      segments_[static_cast<std::size_t>(i)].push_back({0.0, s, ball.pocket});
+      auto& list = segments_[static_cast<std::size_t>(i)];
+      list.reserve(8);
+      list.push_back({0.0, s, ball.pocket});
       tracks_[static_cast<std::size_t>(i)].path.p = s.position;
       tracks_[static_cast<std::size_t>(i)].box = {s.position, s.position};
     }
-    for (const Rail& rail : scene.rails) {
-      reach_.push_back(cushion_reach(R, rail.a.z()));
-      rail_boxes_.push_back({rail.a.cwiseMin(rail.b), rail.a.cwiseMax(rail.b)});
-    }
-    contact_rails_ = scene.rails;
-    rail_end_is_jaw_.assign(scene.rails.size(), {0, 0});
-    for (int p = 0; p < static_cast<int>(scene.pockets.size()); ++p)
-      add_jaws(p, pocket_mouth(scene.pockets[static_cast<std::size_t>(p)], scene.rails));
+    events_.reserve(16 + n);
   }
+
+  ~Simulator() { trade_storage(); }
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
 
   SimulationResult run() {
     add_event(EventType::start, 0.0, {}, -1, 0.0, Vec3(0, 0, 0), {}, {});
@@ -84,8 +254,9 @@ class Simulator {
     strike(t_cue);
     long handled = 0;
     while (!queue_.empty()) {
-      const Candidate c = queue_.top();
-      queue_.pop();
+      std::pop_heap(queue_.begin(), queue_.end(), Later{});
+      const Candidate c = queue_.back();
+      queue_.pop_back();
       if (c.version_a != version(c.a) || (c.kind == Kind::ball_ball && c.version_b != version(c.b))) continue;
       if (++handled > kMaxSteps) {
         cut_off_ = true;  // a safety net: no known scene comes near it
@@ -114,14 +285,6 @@ class Simulator {
   std::vector<std::vector<MotionSegment>> segments_;
   std::vector<unsigned> version_;
   std::vector<double> own_time_;  ///< s, each ball's next event of its own: its paths hold until then
-
-  /// Each ball's path and the box it sweeps until own_time_, cached for the pair tests.
-  struct Track {
-    Path path;  ///< from t0
-    double t0 = 0;
-    SweptBox box{};    ///< from the last scheduling time to own_time_
-    bool live = true;  ///< on the bed
-  };
   std::vector<Track> tracks_;
 
   Path path_from(int i, double t) const {
@@ -129,44 +292,38 @@ class Simulator {
     const double dt = t - track.t0;
     return {track.path.at(dt), track.path.velocity_at(dt), track.path.a};
   }
-  std::vector<double> reach_;
-  std::vector<SweptBox> rail_boxes_;
+  std::shared_ptr<const TableGeometry> table_;
+  const std::vector<double>& reach_;
+  const std::vector<SweptBox>& rail_boxes_;
   /// The rails' nose lines as the physics meets them: a cut pocket's jaw end stops where its rounding begins.
-  std::vector<Rail> contact_rails_;
-  std::vector<std::array<char, 2>> rail_end_is_jaw_;  ///< a rail end that is a jaw point: its rounding stands for it
+  const std::vector<Rail>& contact_rails_;
+  const std::vector<std::array<char, 2>>& rail_end_is_jaw_;
+  const std::vector<Jaw>& jaws_;
 
-  /// One jaw of a cut pocket (table.h, PocketMouth): its facing, a straight cushion from the rounding into
-  /// the pocket, and its rounded jaw point, a round one; both answered by the cushion model.
-  struct Jaw {
-    int pocket = -1;
-    int rail = -1;  ///< the rail whose end it is (its nose height, its reach)
-    Rail face;      ///< playing side on the right of a -> b, as a rail's
-    Vec3 round{0, 0, 0};
-    double round_radius = 0;
-    SweptBox box{};  ///< both, seen from above
-  };
-  std::vector<Jaw> jaws_;
+  // Scratch, kept from event to event so that handling one allocates nothing of its own.
+  std::vector<char> done_;  ///< reschedule: the balls whose pairs are scheduled
+  std::vector<Path> now_;   ///< path_now: each ball's path from the time of the current scheduling
+  std::vector<unsigned> now_epoch_;
+  unsigned epoch_ = 0;      ///< a now_ entry is current while its now_epoch_ equals this
+  std::vector<int> group_;  ///< gather_group's answer
+  std::vector<char> in_group_;
+  std::vector<int> changed_;  ///< resolve_group_event's changed balls
+  std::vector<Candidate> queue_;
 
-  void add_jaws(int pocket, const PocketMouth& m) {
-    if (!m.cut) return;
-    for (int i = 0; i < 2; ++i) {
-      const auto r = static_cast<std::size_t>(m.rail[i]);
-      const double h = scene_.rails[r].a.z();
-      Jaw jaw;
-      jaw.pocket = pocket;
-      jaw.rail = m.rail[i];
-      jaw.face = m.facing_line(i, h);
-      jaw.round = Vec3(m.round_centre[i].x(), m.round_centre[i].y(), h);
-      jaw.round_radius = m.round_radius;
-      const Vec3 grow(m.round_radius, m.round_radius, 0);
-      jaw.box = {jaw.face.a.cwiseMin(jaw.face.b).cwiseMin(jaw.round - grow),
-                 jaw.face.a.cwiseMax(jaw.face.b).cwiseMax(jaw.round + grow)};
-      jaws_.push_back(jaw);
-      (m.at_b[i] ? contact_rails_[r].b : contact_rails_[r].a) = Vec3(m.nose_end[i].x(), m.nose_end[i].y(), h);
-      rail_end_is_jaw_[r][m.at_b[i] ? 1 : 0] = 1;
-    }
+  /// Swaps the working storage with this thread's spare: borrowed at the start, given back at the end.
+  void trade_storage() {
+    Workspace& spare = spare_storage();
+    version_.swap(spare.version);
+    own_time_.swap(spare.own_time);
+    tracks_.swap(spare.tracks);
+    done_.swap(spare.done);
+    now_.swap(spare.now);
+    now_epoch_.swap(spare.now_epoch);
+    in_group_.swap(spare.in_group);
+    group_.swap(spare.group);
+    changed_.swap(spare.changed);
+    queue_.swap(spare.queue);
   }
-  std::priority_queue<Candidate, std::vector<Candidate>, Later> queue_;
   std::vector<Event> events_;
   std::vector<PocketDrop> drops_;
   long tests_ = 0;
@@ -243,20 +400,51 @@ class Simulator {
     reschedule(changed, t);
   }
 
-  void reschedule(const std::vector<int>& changed, double t) {
+  void reschedule(std::span<const int> changed, double t) {
     for (int i : changed) schedule_own(i, t);
-    std::vector<char> done(static_cast<std::size_t>(n_), 0);
+    ++epoch_;
     for (int i : changed) {
       for (int j = 0; j < n_; ++j)
-        if (j != i && !done[static_cast<std::size_t>(j)]) schedule_pair(std::min(i, j), std::max(i, j), t);
-      done[static_cast<std::size_t>(i)] = 1;
+        if (j != i && !done_[static_cast<std::size_t>(j)]) schedule_pair(std::min(i, j), std::max(i, j), t);
+      done_[static_cast<std::size_t>(i)] = 1;
     }
+    for (int i : changed) done_[static_cast<std::size_t>(i)] = 0;
+  }
+  void reschedule(std::initializer_list<int> changed, double t) {
+    reschedule(std::span<const int>(changed.begin(), changed.size()), t);
   }
 
-  void push(Candidate c) {
-    c.version_a = version(c.a);
-    if (c.kind == Kind::ball_ball) c.version_b = version(c.b);
-    queue_.push(c);
+  /// path_from(i, t) at the time of the current scheduling (epoch_), worked out once for all its pairs.
+  const Path& path_now(int i, double t) {
+    const auto k = static_cast<std::size_t>(i);
+    if (now_epoch_[k] != epoch_) {
+      now_[k] = path_from(i, t);
+      now_epoch_[k] = epoch_;
+    }
+    return now_[k];
+  }
+
+  /// Queues c, with the versions of its balls now: std::push_heap's sift-up, step for step (so the
+  /// heap is the same), with c written once, member by member, into the place it ends in (a copy of c
+  /// whole, just written member by member, would wait on the processor's store forwarding).
+  void push(const Candidate& c) {
+    std::size_t hole = queue_.size();
+    queue_.emplace_back();
+    while (hole > 0) {
+      const std::size_t parent = (hole - 1) / 2;
+      if (!Later{}(queue_[parent], c)) break;
+      queue_[hole] = queue_[parent];
+      hole = parent;
+    }
+    Candidate& d = queue_[hole];
+    d.time = c.time;
+    d.rank = c.rank;
+    d.a = c.a;
+    d.b = c.b;
+    d.end = c.end;
+    d.kind = c.kind;
+    d.version_a = version(c.a);
+    d.version_b = c.kind == Kind::ball_ball ? version(c.b) : c.version_b;
   }
 
   /// The ball's next transition, cushion contact or pocket entry.
@@ -279,7 +467,9 @@ class Simulator {
       found = true;
     }
     const Path path = path_from(i, t);
-    const SweptBox box = swept_box(path, horizon);
+    // The box the centre sweeps until the horizon, which shrinks to each earlier event found: a feature
+    // it cannot reach in that time has no event before the one found, so it is not tested.
+    SweptBox box = swept_box(path, horizon);
     auto consider = [&](std::optional<double> dt, Kind kind, int rank, int b, int end) {
       ++tests_;
       if (!dt || (found && *dt >= best.time)) return;
@@ -290,34 +480,37 @@ class Simulator {
       best.end = end;
       horizon = *dt;
       found = true;
+      box = swept_box(path, horizon);
     };
+    const TableGeometry& table = *table_;
     if (path.moves()) {
-      for (int r = 0; r < static_cast<int>(scene_.rails.size()); ++r) {
-        const double reach = reach_[static_cast<std::size_t>(r)];
-        if (!boxes_within(box, rail_boxes_[static_cast<std::size_t>(r)], reach)) continue;
-        consider(next_ball_cushion(path, contact_rail(r), reach, horizon), Kind::cushion, 1, n_ + r, 0);
-        const auto& jawed = rail_end_is_jaw_[static_cast<std::size_t>(r)];
-        if (!jawed[0]) consider(next_ball_point(path, rail(r).a, reach, horizon), Kind::cushion_end, 1, n_ + r, 0);
-        if (!jawed[1]) consider(next_ball_point(path, rail(r).b, reach, horizon), Kind::cushion_end, 1, n_ + r, 1);
+      for (std::size_t r = 0; r < table.rails.size(); ++r) {
+        if (!within_reach(box, table.rail_reach[r])) continue;
+        const double reach = table.reach[r];
+        const int b = n_ + static_cast<int>(r);
+        consider(next_ball_cushion(path, table.rail_lines[r], reach, horizon), Kind::cushion, 1, b, 0);
+        const auto& jawed = table.rail_end_is_jaw[r];
+        if (!jawed[0]) consider(next_ball_point(path, table.rails[r].a, reach, horizon), Kind::cushion_end, 1, b, 0);
+        if (!jawed[1]) consider(next_ball_point(path, table.rails[r].b, reach, horizon), Kind::cushion_end, 1, b, 1);
       }
-      for (int j = 0; j < static_cast<int>(jaws_.size()); ++j) {
-        const Jaw& jaw = jaws_[static_cast<std::size_t>(j)];
-        const double reach = reach_[static_cast<std::size_t>(jaw.rail)];
-        if (!boxes_within(box, jaw.box, reach)) continue;
-        consider(next_ball_cushion(path, jaw.face, reach, horizon), Kind::jaw_face, 1, jaw.pocket, j);
+      for (std::size_t j = 0; j < table.jaws.size(); ++j) {
+        if (!within_reach(box, table.jaw_reach[j])) continue;
+        const Jaw& jaw = table.jaws[j];
+        const double reach = table.reach[static_cast<std::size_t>(jaw.rail)];
+        const int k = static_cast<int>(j);
+        consider(next_ball_cushion(path, table.jaw_lines[j], reach, horizon), Kind::jaw_face, 1, jaw.pocket, k);
         consider(next_ball_point(path, jaw.round, reach + jaw.round_radius, horizon), Kind::jaw_round, 1, jaw.pocket,
-                 j);
+                 k);
       }
     }
     // Pockets even for a ball at rest: one left over a hole drops.
-    for (int p = 0; p < static_cast<int>(scene_.pockets.size()); ++p) {
-      const Pocket& pocket = scene_.pockets[static_cast<std::size_t>(p)];
-      if (!boxes_within(box, {pocket.center, pocket.center}, pocket.radius)) continue;
-      consider(next_pocket_entry(path, pocket, horizon), Kind::pocket, 2, p, 0);
+    for (std::size_t p = 0; p < table.pockets.size(); ++p) {
+      if (!within_reach(box, table.pocket_reach[p])) continue;
+      consider(next_pocket_entry(path, table.pockets[p], horizon), Kind::pocket, 2, static_cast<int>(p), 0);
     }
     if (found) horizon = best.time;
     own_time_[static_cast<std::size_t>(i)] = t + horizon;
-    track.box = swept_box(path, horizon);
+    track.box = box;  // swept_box(path, horizon): the last found, or the first if none
     if (!found) return;
     best.time += t;
     push(best);
@@ -330,7 +523,7 @@ class Simulator {
     if (!boxes_within(ti.box, tj.box, distance)) return;
     const double horizon = std::min(own_time_[static_cast<std::size_t>(i)], own_time_[static_cast<std::size_t>(j)]) - t;
     ++tests_;
-    const std::optional<double> dt = next_ball_ball(path_from(i, t), path_from(j, t), distance, horizon);
+    const std::optional<double> dt = next_ball_ball(path_now(i, t), path_now(j, t), distance, horizon);
     if (!dt) return;
     Candidate c;
     c.time = t + *dt;
@@ -345,7 +538,10 @@ class Simulator {
   /// (detect.h) lets balls overlap, by at most kMaxPushOverlap, so this moves them by a micrometre at most.
   void separate(BallState& a, BallState& b) const {
     Vec3 n(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0);
-    const double d = n.norm(), overlap = 2 * params_.ball_radius - d;
+    const double touching = 2 * params_.ball_radius;
+    // Farther than touching by a part in 1e9 (far beyond round-off): no overlap, as the norm would find.
+    if (n.x() * n.x() + n.y() * n.y() > touching * touching * (1 + 1e-9)) return;
+    const double d = n.norm(), overlap = touching - d;
     if (!(overlap > 0) || d == 0) return;
     n /= d;
     a.position -= 0.5 * overlap * n;
@@ -367,30 +563,36 @@ class Simulator {
   }
 
   /// The balls a contact of a and b closing at `speed` resolves together: a and b, and every ball on the
-  /// bed within group_gap(speed) of one already in, in ascending order. Just a and b when they are alone.
-  std::vector<int> gather_group(int a, int b, double t, double speed) const {
+  /// bed within group_gap(speed) of one already in, in ascending order (in group_). Just a and b when
+  /// they are alone.
+  const std::vector<int>& gather_group(int a, int b, double t, double speed) {
     const double reach = 2 * params_.ball_radius + group_gap(speed, params_);
-    std::vector<int> group = {a, b};
-    std::vector<Vec3> where(static_cast<std::size_t>(n_));
-    std::vector<char> in(static_cast<std::size_t>(n_), 0), live(static_cast<std::size_t>(n_), 0);
-    for (int i = 0; i < n_; ++i) {
-      live[static_cast<std::size_t>(i)] = tracks_[static_cast<std::size_t>(i)].live;
-      if (live[static_cast<std::size_t>(i)]) where[static_cast<std::size_t>(i)] = path_from(i, t).p;
-    }
-    in[static_cast<std::size_t>(a)] = in[static_cast<std::size_t>(b)] = 1;
-    for (std::size_t k = 0; k < group.size(); ++k) {
-      const Vec3& p = where[static_cast<std::size_t>(group[k])];
+    ++epoch_;
+    group_.assign({a, b});
+    in_group_[static_cast<std::size_t>(a)] = in_group_[static_cast<std::size_t>(b)] = 1;
+    for (std::size_t k = 0; k < group_.size(); ++k) {
+      const Vec3 p = path_now(group_[k], t).p;
       for (int j = 0; j < n_; ++j) {
-        if (in[static_cast<std::size_t>(j)] || !live[static_cast<std::size_t>(j)]) continue;
-        const Vec3& q = where[static_cast<std::size_t>(j)];
-        if (std::hypot(q.x() - p.x(), q.y() - p.y()) < reach) {
-          in[static_cast<std::size_t>(j)] = 1;
-          group.push_back(j);
+        if (in_group_[static_cast<std::size_t>(j)] || !tracks_[static_cast<std::size_t>(j)].live) continue;
+        const Vec3& q = path_now(j, t).p;
+        if (within(q.x() - p.x(), q.y() - p.y(), reach)) {
+          in_group_[static_cast<std::size_t>(j)] = 1;
+          group_.push_back(j);
         }
       }
     }
-    std::sort(group.begin(), group.end());
-    return group;
+    for (int i : group_) in_group_[static_cast<std::size_t>(i)] = 0;
+    std::sort(group_.begin(), group_.end());
+    return group_;
+  }
+
+  /// std::hypot(dx, dy) < reach, with hypot only where the squares lie within a part in 1e9 of the
+  /// boundary (hypot errs by under an ulp, the squares by a few: elsewhere both give the same answer).
+  static bool within(double dx, double dy, double reach) {
+    const double d2 = dx * dx + dy * dy, r2 = reach * reach;
+    if (d2 > r2 * (1 + 1e-9)) return false;
+    if (d2 < r2 * (1 - 1e-9)) return true;
+    return std::hypot(dx, dy) < reach;
   }
 
   /// Several balls in contact at once (group.h): resolved together as one numbered event listing every
@@ -405,8 +607,9 @@ class Simulator {
     ++groups_;
     group_steps_ += result.steps;
 
-    std::vector<int> balls, changed;
+    std::vector<int> balls;
     std::vector<BallState> was, now;
+    changed_.clear();
     for (std::size_t k = 0; k < group.size(); ++k) {
       const int i = group[k];
       if (result.touched[k]) {
@@ -417,7 +620,7 @@ class Simulator {
       // A ball only moved back to touching starts a segment too (its velocity unchanged).
       if (result.touched[k] || before[k].position != state_at(i, t).position) {
         begin_segment(i, t, result.after[k]);
-        changed.push_back(i);
+        changed_.push_back(i);
       }
     }
     std::vector<Contact> contacts;
@@ -436,7 +639,7 @@ class Simulator {
     add_event(EventType::ball_ball, t, balls, -1, speed, where, std::move(was), std::move(now));
     events_.back().contacts = std::move(contacts);
     events_.back().grouped = true;
-    reschedule(changed, t);
+    reschedule(changed_, t);
   }
 
   BallState resolve_cushion(const BallState& s, const Vec3& toward, double h) const {
@@ -472,11 +675,12 @@ class Simulator {
     const double speed = closing_speed(a, b);
     if (!(speed > 0)) {
       // A resting contact that did not press after all: nothing to resolve.
+      ++epoch_;
       schedule_pair(c.a, c.b, t);
       return;
     }
     if (speed >= kMinEventSpeed) {
-      std::vector<int> group = gather_group(c.a, c.b, t, speed);
+      const std::vector<int>& group = gather_group(c.a, c.b, t, speed);
       if (group.size() > 2) {
         resolve_group_event(group, c.a, c.b, t);
         return;
@@ -556,8 +760,9 @@ class Simulator {
     BallState s = state_at(c.a, t);
     s.motion = Motion::falling;
     begin_segment(c.a, t, s, c.b);
-    const double fall = fall_duration(s, pocket, params_);
-    BallState rest = fall_state(s, pocket, params_, fall);
+    const FallEnd end = fall_end(s, pocket, params_);
+    const double fall = end.duration;
+    BallState rest = end.state;
     rest.velocity.setZero();
     rest.spin.setZero();
     rest.motion = Motion::pocketed;

@@ -2,8 +2,16 @@
 //   bench                 figures for a break, a two-ball shot and a 100-ball table; a 1,000-break soak
 //   bench --soak N        the soak over N seeded breaks (100000 for the full run)
 //   bench --runs N        timed runs per scene (default 2000, fewer for the stress table)
+//   bench --no-soak       the figures alone
+//   bench --fingerprint N a hash of every bit the physics gives (segments, events, drops) for each scene
+//                         and for N seeded random breaks and 100-ball tables: the same hashes from two
+//                         builds mean the same events to the bit (tests/bench/physics_ab.sh)
+//   bench --scene NAME    one scene's physics alone (break, tight-break, two-ball, stress-100): its events
+//                         and the median us per shot, on one line; for tests/bench/physics_ab.sh and
+//                         for profiling
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -12,6 +20,7 @@
 
 #include "group.h"
 #include "motion.h"
+#include "physics_fingerprint.h"
 #include "random_scenes.h"
 #include "shot_checks.h"
 #include "simulate.h"
@@ -51,6 +60,58 @@ void figures(const char* name, const bsim::Scene& scene, int runs) {
       "events/s  %ld groups, %ld group steps\n",
       name, scene.balls.size(), events, segments, probe.candidates_tested, physics, full,
       static_cast<double>(events) / (physics * 1e-6), probe.groups, probe.group_steps);
+}
+
+/// One scene's physics alone, as physics_ab.sh compares two builds: its events and the median us per
+/// shot of `runs` (4 + runs shots in all, so valgrind's count at two values of `runs` gives a shot's
+/// instructions).
+void one_scene(const char* name, const bsim::Scene& scene, int runs) {
+  const long events = static_cast<long>(bsim::simulate_events(scene).events.size());
+  volatile std::size_t sink = 0;
+  for (int k = 0; k < 3; ++k) sink = sink + bsim::simulate_events(scene).events.size();  // warm the caches
+  const double us = median_us(runs, [&] { sink = sink + bsim::simulate_events(scene).events.size(); });
+  std::printf("%s events %ld us %.3f\n", name, events, us);
+}
+
+/// The fingerprints of the bench's scenes and of `count` seeded random breaks and 100-ball tables.
+void fingerprints(long count) {
+  const std::pair<const char*, bsim::Scene> scenes[] = {{"break", bsim::scenes::standard_break()},
+                                                        {"tight-break", bsim::scenes::tight_break()},
+                                                        {"two-ball", bsim::scenes::two_ball_shot()},
+                                                        {"stress-100", bsim::scenes::stress_table(100, 7)}};
+  for (const auto& [name, scene] : scenes) {
+    bsim::test::PhysicsFingerprint f;
+    f.add(bsim::simulate_events(scene));
+    std::printf("fingerprint %s %016llx\n", name, static_cast<unsigned long long>(f.hash()));
+  }
+  bsim::test::PhysicsFingerprint breaks, tables;
+  long events = 0;
+  for (long seed = 1; seed <= count; ++seed) {
+    const bsim::SimulationResult r =
+        bsim::simulate_events(bsim::scenes::random_break(static_cast<std::uint64_t>(seed)));
+    events += static_cast<long>(r.events.size());
+    breaks.add(r);
+    if (seed <= count / 20 + 1)
+      tables.add(bsim::simulate_events(bsim::scenes::stress_table(100, static_cast<std::uint64_t>(seed))));
+  }
+  std::printf("fingerprint %ld-random-breaks %016llx (%ld events)\n", count,
+              static_cast<unsigned long long>(breaks.hash()), events);
+  std::printf("fingerprint %ld-stress-tables %016llx\n", count / 20 + 1,
+              static_cast<unsigned long long>(tables.hash()));
+}
+
+bool scene_named(const std::string& name, bsim::Scene& scene) {
+  if (name == "break")
+    scene = bsim::scenes::standard_break();
+  else if (name == "tight-break")
+    scene = bsim::scenes::tight_break();
+  else if (name == "two-ball")
+    scene = bsim::scenes::two_ball_shot();
+  else if (name == "stress-100")
+    scene = bsim::scenes::stress_table(100, 7);
+  else
+    return false;
+  return true;
 }
 
 /// The group phase alone: the cue ball at 10 m/s touching the apex of the first `count` - 1 balls of a
@@ -115,14 +176,23 @@ int soak(long count) {
 int main(int argc, char** argv) {
   long soak_count = 1000;
   int runs = 2000;
-  bool soak_only = false;
+  bool soak_only = false, figures_only = false;
+  std::string only;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
-    if ((arg == "--soak" || arg == "--runs") && k + 1 < argc) {
+    if (arg == "--scene" && k + 1 < argc) {
+      only = argv[++k];
+    } else if (arg == "--no-soak") {
+      figures_only = true;
+    } else if ((arg == "--soak" || arg == "--runs" || arg == "--fingerprint") && k + 1 < argc) {
       const long value = std::strtol(argv[++k], nullptr, 10);
       if (value <= 0) {
         std::fprintf(stderr, "bench: %s needs a positive count\n", arg.c_str());
         return 2;
+      }
+      if (arg == "--fingerprint") {
+        fingerprints(value);
+        return 0;
       }
       if (arg == "--soak") {
         soak_count = value;
@@ -131,9 +201,18 @@ int main(int argc, char** argv) {
         runs = static_cast<int>(value);
       }
     } else {
-      std::fprintf(stderr, "usage: bench [--soak N] [--runs N]\n");
+      std::fprintf(stderr, "usage: bench [--soak N | --no-soak] [--runs N] [--scene NAME] [--fingerprint N]\n");
       return 2;
     }
+  }
+  if (!only.empty()) {
+    bsim::Scene scene;
+    if (!scene_named(only, scene)) {
+      std::fprintf(stderr, "bench: no scene %s (break, tight-break, two-ball, stress-100)\n", only.c_str());
+      return 2;
+    }
+    one_scene(only.c_str(), scene, runs);
+    return 0;
   }
   if (!soak_only) {
     figures("break", bsim::scenes::standard_break(), runs);
@@ -142,5 +221,5 @@ int main(int argc, char** argv) {
     figures("stress-100", bsim::scenes::stress_table(100, 7), std::max(5, runs / 50));
     group_cost(std::max(5, runs / 4));
   }
-  return soak(soak_count);
+  return figures_only ? 0 : soak(soak_count);
 }

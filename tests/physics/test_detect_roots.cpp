@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "random_scenes.h"
 #include "roots.h"
 
 using namespace bsim;
@@ -85,5 +86,42 @@ TEST_SUITE("detect: roots") {
     REQUIRE(r.count == 4);
     CHECK(r.t[0] == doctest::Approx(1e-6).epsilon(1e-5));
     CHECK(r.t[3] == doctest::Approx(1e3).epsilon(1e-12));
+  }
+
+  TEST_CASE("clearly_positive: never where the polynomial comes to zero, and it does answer for one far above it") {
+    // Random quartics of every scale, and each lowered until it grazes zero inside [0, h]: whenever
+    // clearly_positive says so, f as evaluated is > 0 all over [0, h] and no root is found there, so
+    // first_descent's shortcut changes no answer.
+    scenes::Rng rng(7);
+    int clear = 0, grazing = 0;
+    for (int k = 0; k < 4000; ++k) {
+      Poly f;
+      for (double& c : f.c) c = rng.uniform(-1, 1) * std::pow(10.0, rng.uniform(-6, 3));
+      f.c[4] = std::abs(f.c[4]);
+      const double h = std::pow(10.0, rng.uniform(-4, 1));
+      double least = INFINITY;
+      for (int i = 0; i <= 1000; ++i) least = std::min(least, f(h * i / 1000));
+      // Half of them lowered to touch zero at the least of the samples: a grazing contact.
+      if (k % 2 == 1 && least > 0) {
+        f.c[0] -= least;
+        ++grazing;
+      }
+      if (!clearly_positive(f, h)) continue;
+      ++clear;
+      CAPTURE(k);
+      bool above = true;
+      for (int i = 0; i <= 10000; ++i) above = above && f(h * i / 10000) > 0;
+      REQUIRE(above);
+      REQUIRE(roots_in(f, 0, h).count == 0);
+      REQUIRE_FALSE(first_descent(f, 0, h).has_value());
+    }
+    CHECK(clear > 500);
+    CHECK(grazing > 500);
+    // A gap of a millimetre closing at 1 m/s over 0.5 ms is clear; over 2 ms it is not (it closes at 1 ms).
+    const Poly gap{{1e-3, -1, 0, 0, 0}};
+    CHECK(clearly_positive(gap, 0.5e-3));
+    CHECK_FALSE(clearly_positive(gap, 2e-3));
+    // A polynomial that touches zero inside (a double root) is never clear.
+    CHECK_FALSE(clearly_positive(from_roots(0.5, 0.5, 3, 4), 1));
   }
 }

@@ -230,6 +230,32 @@ TEST_SUITE("simulate") {
     CHECK(std::hypot(fall_state(entry, pocket, params, settle).position.x(), 0) < pocket.radius);
   }
 
+  TEST_CASE("fall_end is fall_duration and fall_state at that duration, bit for bit, from one integration") {
+    // Creeping over the lip (pivoting), slow, fast, straight at the wall and glancing; the pocket's
+    // wall far and near; a fall long enough to reach the 5 s limit (no wall, no floor within it).
+    const PhysicsParams params;
+    int compared = 0;
+    for (const double radius : {0.03, 0.06, 0.1})
+      for (const double speed : {0.0, 1e-4, 0.1, 0.4, 0.53, 1.0, 3.0, 9.0})
+        for (const double angle : {0.0, 0.7, 1.5}) {
+          const Pocket pocket{Vec3(0, 0, 0), radius, {}};
+          BallState entry;
+          entry.position = Vec3(-radius, 0.001, kR);
+          entry.velocity = speed * Vec3(std::cos(angle), std::sin(angle), 0);
+          entry.spin = Vec3(0.5, -2, 3);
+          entry.motion = Motion::falling;
+          const FallEnd end = fall_end(entry, pocket, params);
+          const double duration = fall_duration(entry, pocket, params);
+          CAPTURE(radius);
+          CAPTURE(speed);
+          CAPTURE(angle);
+          CHECK(end.duration == duration);
+          CHECK(end.state == fall_state(entry, pocket, params, duration));
+          ++compared;
+        }
+    CHECK(compared == 72);
+  }
+
   TEST_CASE("the same scene gives the same timeline, bit for bit") {
     const Scene scene = scenes::random_break(42);
     const Timeline a = simulate(scene), b = simulate(scene);
