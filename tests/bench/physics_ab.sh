@@ -7,17 +7,21 @@
 #
 # It builds the baseline's `bench` from `git archive COMMIT` (default 3bf1808, the physics before the
 # speed work of issue 40) in a scratch folder, with this tree's tests/bench/bench.cpp (and
-# tests/support/physics_fingerprint.h), so both sides are timed and hashed by the same code. First it compares `bench --fingerprint 2000` of both (a hash of every bit of
-# every segment, event and drop of the bench's scenes, 2,000 seeded breaks and 101 seeded 100-ball
-# tables) and stops if they differ. Then it runs `bench --scene S --runs N` (the median microseconds of
-# N shots of the physics alone) for each scene, A (the baseline) and B (this tree) alternately, in K
-# blocks (A B, then B A, ...), so both see the same machine load, and prints the median and the least
-# over the blocks of each side's figure, and their ratios.
+# tests/support/physics_fingerprint.h), so both sides are timed and hashed by the same code. First it
+# compares `bench --fingerprint 2000` of both (a hash of every bit of every segment, event and drop of
+# the bench's scenes, 2,000 seeded breaks and 101 seeded 100-ball tables) and stops if they differ.
+# Then it runs `bench --scene S --runs N` (the median microseconds of N shots of the physics alone)
+# for each scene, A (the baseline) and B (this tree) alternately, in K blocks (A B, then B A, ...), so
+# both see the same machine load, and prints the median and the least over the blocks of each side's
+# figure, and their ratio. On a shared machine the least is the steadier: other work only ever adds.
 #
-# --fastfiz DIR: also FastFiz 0.2, built from DIR (a copy of github.com/ekiefl/FastFiz's FastFiz-0.2/
-# FastFiz folder; needs g++ and GSL, Debian's libgsl-dev, which this project does not use) with
-# tests/bench/fastfiz_shots.cpp, timed in the same blocks on its own 8-ball break (8 m/s) and on
-# bench's two-ball shot scaled to its table, and each side's ratio to it. --instructions: also the
+# --fastfiz DIR: also the ratio to FastFiz 0.2, built from DIR (a copy of github.com/ekiefl/FastFiz's
+# FastFiz-0.2/FastFiz folder; needs g++ and GSL, Debian's libgsl-dev, which this project does not use)
+# with tests/bench/fastfiz_shots.cpp and `g++ -O2 -fpermissive`, and linked with each side's libraries
+# into tests/bench/fastfiz_side_by_side.cpp: one process that shoots ours and FastFiz's in alternating
+# blocks (ours, FastFiz's; FastFiz's, ours; ...), FastFiz's own 8-ball break (8 m/s, rack seed 8)
+# beside both our breaks and its two-ball shot beside ours. The two processes (A's and B's) run K times
+# in turn; it prints the median of each side's ratios and their range. --instructions: also the
 # instructions a shot takes on each side (valgrind's cachegrind, the difference of N and 2N shots),
 # which other work on the machine does not change. --keep DIR keeps the baseline's build there (a
 # second run with the same DIR does not build it again). Never run by ctest.
@@ -31,7 +35,8 @@ scenes="break tight-break two-ball"
 fastfiz=
 instructions=
 keep=
-usage="usage: $0 [--base COMMIT] [--blocks K] [--runs N] [--scenes \"S ...\"] [--fastfiz DIR] [--instructions] [--keep DIR]"
+usage="usage: $0 [--base COMMIT] [--blocks K] [--runs N] [--scenes \"S ...\"] [--fastfiz DIR] [--instructions]"
+usage+=" [--keep DIR]"
 while [ $# -gt 0 ]; do
   case $1 in
     --base) base=$2; shift 2 ;;
@@ -68,11 +73,25 @@ if [ ! -x "$src/build/bin/bench" ] || [ "$(cat "$src/commit" 2>/dev/null)" != "$
 fi
 bench_a=$src/build/bin/bench
 
+# FastFiz's objects once, and the side-by-side program linked with each side's libraries.
 if [ -n "$fastfiz" ]; then
-  ff=$work/fastfiz_shots
-  g++ -O2 -fpermissive -w -I"$fastfiz" "$root/tests/bench/fastfiz_shots.cpp" \
-    "$fastfiz"/{FastFiz,Rules,Noise,Stopwatch}.cpp -lgsl -lgslcblas -o "$ff" 2>"$work/fastfiz-build.log" ||
+  mkdir -p "$work/fastfiz"
+  for name in FastFiz Rules Noise Stopwatch; do
+    g++ -O2 -fpermissive -w -I"$fastfiz" -c "$fastfiz/$name.cpp" -o "$work/fastfiz/$name.o"
+  done 2>"$work/fastfiz-build.log" ||
     { echo "physics_ab: FastFiz did not build; see $work/fastfiz-build.log" >&2; exit 1; }
+  g++ -O2 -fpermissive -w -I"$fastfiz" -c "$root/tests/bench/fastfiz_shots.cpp" -o "$work/fastfiz/shots.o"
+  for side in A B; do
+    tree=$root
+    [ $side = A ] && tree=$src
+    includes=()
+    for dir in core/physics core/scene core tests/support; do includes+=(-I"$tree/$dir"); done
+    mapfile -t libraries < <(find "$tree/build/core" -name '*.a')
+    g++ -std=c++20 -O2 "${includes[@]}" -I/usr/include/eigen3 "$root/tests/bench/fastfiz_side_by_side.cpp" \
+      "$work"/fastfiz/*.o -Wl,--start-group "${libraries[@]}" -Wl,--end-group -lgsl -lgslcblas \
+      -o "$work/side_by_side_$side" 2>>"$work/fastfiz-build.log" ||
+      { echo "physics_ab: the side-by-side program did not build; see $work/fastfiz-build.log" >&2; exit 1; }
+  done
 fi
 
 echo "A: $base   B: $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- core/physics || echo ' + changes')"
@@ -86,28 +105,16 @@ fi
 echo "same events to the bit: $(tail -2 "$work/fingerprint_B" | head -1 | cut -d' ' -f2-) and the bench's scenes"
 
 # Each timed run appends its median us per shot to samples_SIDE_SCENE.
-rm -f "$work"/samples_*
-time_scene() {  # side scene
-  local line
-  if [ "$1" = FF ]; then
-    if [ "$2" = two-ball ]; then line=$("$ff" two-ball "$runs"); else line=$("$ff" break $((runs / 20 + 5))); fi
-  else
-    line=$("$([ "$1" = A ] && echo "$bench_a" || echo "$bench_b")" --scene "$2" --runs "$runs")
-  fi
-  echo "$line" | awk '{ for (i = 1; i < NF; ++i) if ($i == "us") print $(i + 1) }' >>"$work/samples_$1_$2"
-}
-sides="A B"
-[ -z "$fastfiz" ] || sides="A B FF"
+rm -f "$work"/samples_* "$work"/ratios_*
 for block in $(seq 1 "$blocks"); do
-  order=$sides
-  [ $((block % 2)) = 0 ] && order=$(echo "$sides" | tr ' ' '\n' | tac | tr '\n' ' ')
+  order="A B"
+  [ $((block % 2)) = 0 ] && order="B A"
   for side in $order; do
-    if [ "$side" = FF ]; then
-      time_scene FF break
-      time_scene FF two-ball
-    else
-      for scene in $scenes; do time_scene "$side" "$scene"; done
-    fi
+    bench=$bench_b
+    [ "$side" = A ] && bench=$bench_a
+    for scene in $scenes; do
+      "$bench" --scene "$scene" --runs "$runs" | awk '{ print $5 }' >>"$work/samples_${side}_$scene"
+    done
   done
   echo "block $block of $blocks done" >&2
 done
@@ -115,29 +122,39 @@ done
 median() { sort -g "$1" | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 least() { sort -g "$1" | head -1; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", b / a }'; }
-row() {  # label statistic scene
-  local a b f
-  a=$($2 "$work/samples_A_$3")
-  b=$($2 "$work/samples_B_$3")
-  if [ -z "$fastfiz" ]; then
-    printf '%-20s %10s %10s %8s\n' "$1" "$a" "$b" "$(ratio "$a" "$b")"
-    return
-  fi
-  # FastFiz's own break stands beside both breaks (its rack is neither), its two-ball beside the two-ball.
-  f=$($2 "$work/samples_FF_$([ "$3" = two-ball ] && echo two-ball || echo break)")
-  printf '%-20s %10s %10s %8s %12s %8s %8s\n' "$1" "$a" "$b" "$(ratio "$a" "$b")" "$f" "$(ratio "$f" "$a")" "$(ratio "$f" "$b")"
-}
-echo "us per shot: each run's median of $runs shots (FastFiz's break: of $((runs / 20 + 5))), over $blocks blocks their median"
-echo "and their least (on a shared machine the least is the steadier: other work only ever adds time)"
-if [ -z "$fastfiz" ]; then
-  printf '%-20s %10s %10s %8s\n' scene "A us" "B us" "B/A"
-else
-  printf '%-20s %10s %10s %8s %12s %8s %8s\n' scene "A us" "B us" "B/A" "FastFiz us" "A/FF" "B/FF"
-fi
+echo "us per shot: each run's median of $runs shots, over $blocks blocks their median and their least"
+printf '%-20s %10s %10s %8s\n' scene "A us" "B us" "B/A"
 for scene in $scenes; do
-  row "$scene, median" median "$scene"
-  row "$scene, least" least "$scene"
+  for statistic in median least; do
+    a=$($statistic "$work/samples_A_$scene")
+    b=$($statistic "$work/samples_B_$scene")
+    printf '%-20s %10s %10s %8s\n' "$scene, $statistic" "$a" "$b" "$(ratio "$a" "$b")"
+  done
 done
+
+if [ -n "$fastfiz" ]; then
+  # Each run prints "NAME us U fastfiz_us F ratio R ..." for the break, the tight break and the two-ball.
+  for block in $(seq 1 "$blocks"); do
+    order="A B"
+    [ $((block % 2)) = 0 ] && order="B A"
+    for side in $order; do
+      "$work/side_by_side_$side" 2>/dev/null | while read -r name _ us _ ff _ r _; do
+        echo "$r" >>"$work/ratios_${side}_$name"
+        echo "$us $ff" >>"$work/times_${side}_$name"
+      done
+    done
+    echo "FastFiz block $block of $blocks done" >&2
+  done
+  echo "FastFiz 0.2 beside ours in one process: the ratio of the medians of a shot, ours over FastFiz's;"
+  echo "over $blocks runs of each side their median [least, greatest]"
+  printf '%-12s %-24s %-24s %14s\n' scene "A/FastFiz" "B/FastFiz" "FastFiz us (B)"
+  for name in break tight-break two-ball; do
+    cell() { printf '%s [%s, %s]' "$(median "$1")" "$(least "$1")" "$(sort -g "$1" | tail -1)"; }
+    awk '{ print $2 }' "$work/times_B_$name" >"$work/ff_us_$name"
+    printf '%-12s %-24s %-24s %14s\n' "$name" "$(cell "$work/ratios_A_$name")" "$(cell "$work/ratios_B_$name")" \
+      "$(median "$work/ff_us_$name")"
+  done
+fi
 
 if [ -n "$instructions" ]; then
   count() {  # bench scene runs: instructions of the whole process
