@@ -24,6 +24,7 @@
 namespace bsim {
 
 struct Shot;
+struct StagedFrames;
 class OutputStage;
 
 /// Seconds of work a task gets by default: long enough that Slurm's scheduling (seconds) and
@@ -48,9 +49,11 @@ class SlurmSubmission {
   /// Before any work: finds sbatch and checks that no job of an earlier submission into `dir` is
   /// still queued or running.
   bool prepare(const ExportOptions& options, const std::string& dir, std::string& error);
-  /// After the inputs are staged: keeps the frames an earlier submission finished whose inputs are
-  /// unchanged, stages farm/ and asks sbatch (--test-only) whether it would take the jobs.
-  bool stage(const Shot& shot, const ExportOptions& options, const OutputStage& stage, std::string& error);
+  /// After the inputs are staged (`frames`: the frames folder as written): keeps the frames an
+  /// earlier submission finished whose inputs are unchanged, stages farm/ and asks sbatch
+  /// (--test-only) whether it would take the jobs.
+  bool stage(const Shot& shot, const ExportOptions& options, const OutputStage& stage, const StagedFrames& frames,
+             std::string& error);
   /// After the stage is committed: submits the array and the movie job and prints their ids on
   /// standard output. Returns the exit status.
   int submit(std::string& error);

@@ -46,11 +46,11 @@ struct FramePlan {
 /// Stages every picture that is there already (an earlier submission's whose inputs are unchanged,
 /// one the frame store holds, a copy of one of those) and returns what is left to the jobs.
 FramePlan plan_frames(const std::string& dir, const FarmConf& conf, const ExportOptions& options,
-                      const OutputStage& stage) {
+                      const OutputStage& stage, const StagedFrames& staged) {
   const int frames = conf.frames;
   // The others may be in this machine's frame store, from a local run or an earlier farm run.
   const FrameCache store(default_frame_cache_dir(), stage.path("frames"));
-  const std::vector<std::uint64_t> keys = frame_store_keys(stage.path("frames"), frames, options);
+  const std::vector<std::uint64_t> keys = frame_store_keys(staged, options);
   // Frames an earlier submission finished are kept when everything they depend on is unchanged: the
   // same size and quality, and the same frame store key (their .pov text, the shared include).
   FarmConf earlier;
@@ -190,7 +190,7 @@ bool SlurmSubmission::prepare(const ExportOptions& options, const std::string& d
 }
 
 bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
-                            std::string& error) {
+                            const StagedFrames& frames, std::string& error) {
   FarmConf conf;
   conf.fps = options.fps;
   conf.width = options.width;
@@ -198,7 +198,7 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   conf.quality = options.quality;
   conf.duration = shot.movie.duration();  // the movie's, its replay included
   conf.frames = frames_ = frame_count(conf.duration, conf.fps);
-  const FramePlan plan = plan_frames(dir_, conf, options, stage);
+  const FramePlan plan = plan_frames(dir_, conf, options, stage, frames);
   missing_ = static_cast<int>(plan.missing.size());
   copies_ = plan.copies_to_make;
   chunk_ = options.chunk > 0 ? options.chunk : default_farm_chunk(conf.width, conf.height, conf.quality);
@@ -210,7 +210,7 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
     std::vector<FrameJob> jobs;
     for (int k : plan.missing)
       if (k >= first && k <= last) jobs.push_back({k, 0});
-    plan_partial_frames(shot, options, jobs);
+    plan_partial_frames(shot.scene, frames, options, jobs);
     for (const FrameJob& job : jobs)
       if (job.reference >= 0) partial[job.frame] = {job.reference, job.rects};
   }

@@ -1,11 +1,11 @@
 #include "frame_captions.h"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 #include "frame_cache.h"
 #include "frames.h"
+#include "scene_file.h"
 #include "shot.h"
 
 namespace bsim {
@@ -136,8 +136,12 @@ std::string captions_text(const std::vector<FrameCaption>& captions) {
 }
 
 std::map<int, std::string> read_caption_lines(const std::string& frames_dir) {
+  return caption_lines(read_text_file(frames_dir + "/" + kCaptionsName));
+}
+
+std::map<int, std::string> caption_lines(const std::string& text) {
   std::map<int, std::string> lines;
-  std::ifstream in(frames_dir + "/" + kCaptionsName, std::ios::binary);
+  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     const std::size_t tab = line.find('\t');
     if (line.empty() || line[0] == '#' || tab == std::string::npos || tab > 9) continue;
@@ -177,7 +181,10 @@ bool parse_caption(const std::string& line, FrameCaption& f) {
 }
 
 void add_caption_keys(const std::string& frames_dir, std::vector<std::uint64_t>& keys) {
-  const std::map<int, std::string> lines = read_caption_lines(frames_dir);
+  add_caption_keys(read_caption_lines(frames_dir), keys);
+}
+
+void add_caption_keys(const std::map<int, std::string>& lines, std::vector<std::uint64_t>& keys) {
   if (lines.empty()) return;
   const std::string drawing = lower_third_signature();
   for (const auto& [frame, line] : lines)

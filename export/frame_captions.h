@@ -49,11 +49,15 @@ std::string captions_text(const std::vector<FrameCaption>& captions);
 /// The caption line of each frame in `frames_dir`'s captions.txt (without its frame number); none when
 /// the file is missing.
 std::map<int, std::string> read_caption_lines(const std::string& frames_dir);
+/// The same from captions.txt's text.
+std::map<int, std::string> caption_lines(const std::string& text);
 
 /// A caption line (without its frame number) read back; false when it is not one.
 bool parse_caption(const std::string& line, FrameCaption& caption);
 
 /// Folds each captioned frame's caption line and the drawing's signature into its frame store key.
 void add_caption_keys(const std::string& frames_dir, std::vector<std::uint64_t>& keys);
+/// The same from the caption lines (caption_lines of the text written).
+void add_caption_keys(const std::map<int, std::string>& lines, std::vector<std::uint64_t>& keys);
 
 }  // namespace bsim

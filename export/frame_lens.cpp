@@ -1,8 +1,8 @@
 #include "frame_lens.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "frame_cache.h"
@@ -10,6 +10,7 @@
 #include "number_format.h"
 #include "pov_format.h"
 #include "pov_frame.h"
+#include "scene_file.h"
 #include "shot.h"
 
 namespace bsim {
@@ -52,13 +53,20 @@ bool word_is(std::istringstream& in, const char* expected) {
 }  // namespace
 
 std::vector<FrameLens> frame_lenses(const Shot& shot, int fps) {
-  std::vector<FrameLens> frames;
+  std::vector<CameraPose> poses;
   const int count = shot.movie.frame_count(fps);
+  for (int k = 0; k < count; ++k) poses.push_back(frame_content(shot, k, fps).camera_pose);
+  return frame_lenses(shot, fps, poses);
+}
+
+std::vector<FrameLens> frame_lenses(const Shot& shot, int fps, const std::vector<CameraPose>& poses) {
+  std::vector<FrameLens> frames;
+  const int count = std::min(shot.movie.frame_count(fps), static_cast<int>(poses.size()));
   for (int k = 0; k < count; ++k) {
     const MovieFrame shown = shot.movie.frame(k, fps);
     FrameLens f;
     f.frame = k;
-    f.pose = frame_content(shot, k, fps).camera_pose;
+    f.pose = poses[static_cast<std::size_t>(k)];
     f.lens = frame_lens(shot.camera_at(shown), shown.time, stretch_start(shot.movie, frame_time(k, fps)), shown.rate);
     for (int i = 0; i < shot.timeline.ball_count(); ++i)
       f.moving.balls.push_back(shot.timeline.state(i, shown.time).position);
@@ -95,8 +103,12 @@ std::string lens_text(const DepthScene& scene, const std::vector<FrameLens>& fra
 }
 
 LensFile read_lens_file(const std::string& frames_dir) {
+  return lens_file(read_text_file(frames_dir + "/" + kLensName));
+}
+
+LensFile lens_file(const std::string& text) {
   LensFile file;
-  std::ifstream in(frames_dir + "/" + kLensName, std::ios::binary);
+  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
     if (line.rfind("frame ", 0) == 0) {
@@ -139,7 +151,10 @@ bool parse_frame_lens(const std::string& line, FrameLens& f) {
 }
 
 void add_lens_keys(const std::string& frames_dir, std::vector<std::uint64_t>& keys) {
-  const LensFile file = read_lens_file(frames_dir);
+  add_lens_keys(read_lens_file(frames_dir), keys);
+}
+
+void add_lens_keys(const LensFile& file, std::vector<std::uint64_t>& keys) {
   if (file.frames.empty()) return;
   const std::uint64_t scene = fnv1a(file.scene);
   for (const auto& [frame, line] : file.frames)

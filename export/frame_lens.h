@@ -37,6 +37,9 @@ struct FrameLens {
 
 /// Each movie frame's lens and moving things (Shot::movie: a replay's frame from the replay's camera).
 std::vector<FrameLens> frame_lenses(const Shot& shot, int fps);
+/// The same with the camera poses POV-Ray renders each frame from (FrameContent::camera_pose), as
+/// the frames' contents already hold them.
+std::vector<FrameLens> frame_lenses(const Shot& shot, int fps, const std::vector<CameraPose>& poses);
 
 /// lens.txt's text for the shot's scene and `frames`.
 std::string lens_text(const DepthScene& scene, const std::vector<FrameLens>& frames);
@@ -48,11 +51,15 @@ struct LensFile {
   std::map<int, std::string> frames;
 };
 LensFile read_lens_file(const std::string& frames_dir);
+/// The same from lens.txt's text.
+LensFile lens_file(const std::string& text);
 
 /// A frame's line read back; false when it is not one.
 bool parse_frame_lens(const std::string& line, FrameLens& frame);
 
 /// Folds each frame's line and the fixed scene into its frame store key.
 void add_lens_keys(const std::string& frames_dir, std::vector<std::uint64_t>& keys);
+/// The same from lens.txt as read (lens_file of the text written).
+void add_lens_keys(const LensFile& file, std::vector<std::uint64_t>& keys);
 
 }  // namespace bsim

@@ -97,7 +97,8 @@ std::string replay_note(const bsim::Shot& shot) {
 /// .pov files and the sound track, then (unless --no-render) the rendered frames and the movie, and
 /// run.json. Interrupted when Ctrl-C came.
 bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& options, const bsim::RunPrograms& programs,
-                         const bsim::OutputStage& stage, bsim::RunSummary& summary, std::string& error) {
+                         const bsim::OutputStage& stage, bsim::StagedFrames& frames, bsim::RunSummary& summary,
+                         std::string& error) {
   using bsim::RunOutcome;
   const auto start = std::chrono::steady_clock::now();
   if (!write_staged(
@@ -108,12 +109,12 @@ bsim::RunOutcome produce(const bsim::Shot& shot, const bsim::ExportOptions& opti
           stage, "camera.csv", [&](std::ostream& o) { bsim::write_camera_csv(shot, options.fps, o); }, error))
     return RunOutcome::failed;
   if (options.events_only) return RunOutcome::done;
-  if (!bsim::write_frames_and_sound(shot, options, stage, summary, error)) return RunOutcome::failed;
+  if (!bsim::write_frames_and_sound(shot, options, stage, frames, summary, error)) return RunOutcome::failed;
   summary.writing = bsim::seconds_since(start);
   if (bsim::InterruptGuard::interrupted()) return RunOutcome::interrupted;
   summary.frames_total = shot.movie.frame_count(options.fps);
   if (!options.no_render) {
-    const RunOutcome rendered = bsim::render_movie(shot, options, programs, stage, summary, error);
+    const RunOutcome rendered = bsim::render_movie(shot, options, programs, stage, frames, summary, error);
     if (rendered != RunOutcome::done) return rendered;
     summary.povray_version = bsim::program_version(programs.povray, "--version", "POV-Ray");
     summary.ffmpeg_version = bsim::program_version(programs.ffmpeg, "-version", "ffmpeg version");
@@ -167,8 +168,9 @@ int run(const bsim::ExportOptions& options) {
     std::cerr << "billiards-export: error: " << error << "\n";
     return 1;
   }
-  bsim::RunOutcome outcome = produce(shot, staged, programs, stage, summary, error);
-  if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, error))
+  bsim::StagedFrames frames;  // what frames/ holds, each frame computed once
+  bsim::RunOutcome outcome = produce(shot, staged, programs, stage, frames, summary, error);
+  if (outcome == bsim::RunOutcome::done && on_farm && !farm.stage(shot, options, stage, frames, error))
     outcome = bsim::RunOutcome::failed;
   const bool outdated = changed_since(dir, stage, "events.json");
   // A farm submission's movie job makes the movie: an older one goes now, never to pass for the new one.

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <string_view>
 #include <thread>
 
 #include "changed_region.h"
@@ -41,16 +43,30 @@ constexpr const char* kSetUpCommand = "bash .ci/make-movie";
 constexpr long kSmallFramePixels = 320L * 180L;
 constexpr int kSmallFrameProcessesPerCore = 3;
 
-template <class Writer>
-bool write_file(const std::string& path, Writer&& writer, std::string& error) {
+bool write_text(const std::string& path, const std::string& text, std::string& error) {
   std::ofstream out(path, std::ios::binary);
-  writer(out);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
   out.flush();
   if (!out) {
     error = "cannot write " + path;
     return false;
   }
   return true;
+}
+
+/// soundtrack.wav, exactly as long as the movie; `summary` gets its measured loudness.
+bool write_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage, RunSummary& summary,
+                 std::string& error) {
+  // The movie's duration is a whole number of seconds, so of frames too.
+  const auto samples = static_cast<std::size_t>(std::llround(shot.movie.duration() * kSampleRate));
+  AudioBuffer audio;
+  const SoundOptions sound{.lead = options.audio_lead, .music_path = options.music_path, .level = options.level};
+  const SoundMovie movie{&shot.movie, shot.replay_camera ? &*shot.replay_camera : nullptr};
+  if (!mix_movie_soundtrack({shot.scene, shot.timeline, *shot.camera}, movie, sound, samples, audio, error))
+    return false;
+  summary.loudness_lufs = integrated_loudness(audio);
+  summary.true_peak_dbtp = to_db(true_peak(audio));
+  return write_wav(stage.path("soundtrack.wav"), audio, error);
 }
 
 int cores() {
@@ -101,22 +117,53 @@ FramePlan plan_frames(const std::vector<std::uint64_t>& keys, const FrameCache& 
   return plan;
 }
 
-/// frames/captions.txt for a game's movie with captions (frame_captions.h). The fonts are looked for
-/// only where the frames are rendered.
-bool write_captions(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, std::string& error) {
+/// frames/captions.txt's text for a game's movie with captions (frame_captions.h), empty for none. The
+/// fonts are looked for only where the frames are rendered.
+bool captions_text_for(const Shot& shot, const ExportOptions& options, std::string& text, std::string& error) {
+  text.clear();
   if (!options.captions || !shot.game) return true;
   if (!options.no_render && !lower_third_fonts(error)) return false;
-  const std::vector<FrameCaption> captions =
-      frame_captions(shot, movie_frame_moments(shot, options.fps), options.width, options.height);
-  return write_file(
-      frames_dir + "/" + kCaptionsName, [&](std::ostream& out) { out << captions_text(captions); }, error);
+  text = captions_text(frame_captions(shot, movie_frame_moments(shot, options.fps), options.width, options.height));
+  return true;
 }
 
-/// frames/lens.txt: each frame's lens and what it sees, for the develop stage (frame_lens.h).
-bool write_lens(const Shot& shot, const ExportOptions& options, const std::string& frames_dir, std::string& error) {
-  const std::string text = lens_text(depth_scene(shot.scene), frame_lenses(shot, options.fps));
-  return write_file(
-      frames_dir + "/" + kLensName, [&](std::ostream& out) { out << text; }, error);
+/// frames/lens.txt's text: each frame's lens and what it sees, for the develop stage (frame_lens.h),
+/// the camera poses from the frames' contents.
+std::string lens_text_for(const Shot& shot, const ExportOptions& options, const std::vector<FrameContent>& contents) {
+  std::vector<CameraPose> poses;
+  poses.reserve(contents.size());
+  for (const FrameContent& content : contents) poses.push_back(content.camera_pose);
+  return lens_text(depth_scene(shot.scene), frame_lenses(shot, options.fps, poses));
+}
+
+/// What every picture depends on besides its own .pov text, caption and lens: the shared include,
+/// the size, the quality (and POV-Ray's options for it) and how the picture is developed; "v3" names
+/// the store's key format.
+std::uint64_t common_key(const std::string& include, const ExportOptions& options) {
+  std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                         std::string(quality_name(options.quality)) + " " + develop_signature();
+  for (const std::string& flag : povray_quality_arguments(options.quality)) settings += " " + flag;
+  return fnv1a(settings, fnv1a(include));
+}
+
+/// The frames' partial renders, each job's content from `content_of(frame)` (alive until the end).
+template <class ContentOf>
+void plan_partial(const Scene& scene, const ExportOptions& options, std::vector<FrameJob>& jobs,
+                  ContentOf&& content_of) {
+  const RegionScene region = region_scene(scene);
+  std::map<std::string_view, std::pair<int, const FrameContent*>> last;  // camera -> the latest job's frame
+  for (FrameJob& job : jobs) {
+    const FrameContent& content = content_of(job.frame);
+    const auto before = last.find(content.camera);
+    if (before != last.end()) {
+      const auto rects = changed_region(*before->second.second, content, region, options.width, options.height);
+      if (rects) {
+        job.reference = before->second.first;
+        job.rects = *rects;
+      }
+    }
+    last.insert_or_assign(content.camera, std::pair<int, const FrameContent*>(job.frame, &content));
+  }
 }
 
 bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::string& error) {
@@ -135,31 +182,23 @@ bool copy_duplicates(const std::string& frames_dir, const FramePlan& plan, std::
 
 }  // namespace
 
+void plan_partial_frames(const Scene& scene, const StagedFrames& frames, const ExportOptions& options,
+                         std::vector<FrameJob>& jobs) {
+  plan_partial(scene, options, jobs,
+               [&](int frame) -> const FrameContent& { return frames.contents.at(static_cast<std::size_t>(frame)); });
+}
+
 void plan_partial_frames(const Shot& shot, const ExportOptions& options, std::vector<FrameJob>& jobs) {
-  const RegionScene scene = region_scene(shot.scene);
-  std::map<std::string, std::pair<int, FrameContent>> last;  // camera -> the latest job's frame and content
-  for (FrameJob& job : jobs) {
-    FrameContent content = frame_content(shot, job.frame, options.fps);
-    const auto before = last.find(content.camera);
-    if (before != last.end()) {
-      const auto region = changed_region(before->second.second, content, scene, options.width, options.height);
-      if (region) {
-        job.reference = before->second.first;
-        job.rects = *region;
-      }
-    }
-    const std::string camera = content.camera;
-    last.insert_or_assign(camera, std::pair<int, FrameContent>(job.frame, std::move(content)));
-  }
+  std::map<int, FrameContent> contents;
+  plan_partial(shot.scene, options, jobs, [&](int frame) -> const FrameContent& {
+    auto it = contents.find(frame);
+    if (it == contents.end()) it = contents.emplace(frame, frame_content(shot, frame, options.fps)).first;
+    return it->second;
+  });
 }
 
 std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int frames, const ExportOptions& options) {
-  // What every picture depends on besides its own .pov text: the size, the quality (and POV-Ray's
-  // options for it) and how the picture is developed; "v3" names the store's key format.
-  std::string settings = "v3 " + std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
-                         std::string(quality_name(options.quality)) + " " + develop_signature();
-  for (const std::string& flag : povray_quality_arguments(options.quality)) settings += " " + flag;
-  const std::uint64_t common = fnv1a(settings, fnv1a(read_text_file(frames_dir + "/" + std::string(kPovIncludeName))));
+  const std::uint64_t common = common_key(read_text_file(frames_dir + "/" + std::string(kPovIncludeName)), options);
   std::vector<std::uint64_t> keys;
   for (int k = 0; k < frames; ++k)
     keys.push_back(fnv1a(without_comment_lines(read_text_file(frames_dir + "/" + frame_name(k) + ".pov")), common));
@@ -168,38 +207,44 @@ std::vector<std::uint64_t> frame_store_keys(const std::string& frames_dir, int f
   return keys;
 }
 
+std::vector<std::uint64_t> frame_store_keys(const StagedFrames& frames, const ExportOptions& options) {
+  const std::uint64_t common = common_key(frames.include, options);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(frames.contents.size());
+  for (const FrameContent& content : frames.contents)
+    keys.push_back(fnv1a(without_comment_lines(pov_frame_text(content)), common));
+  add_caption_keys(caption_lines(frames.captions), keys);
+  add_lens_keys(lens_file(frames.lens), keys);
+  return keys;
+}
+
 bool write_frames_and_sound(const Shot& shot, const ExportOptions& options, const OutputStage& stage,
-                            RunSummary& summary, std::string& error) {
+                            StagedFrames& frames, RunSummary& summary, std::string& error) {
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(stage.path("frames/x")).parent_path(), ec);
   if (ec) {
     error = "cannot create " + stage.path("frames") + ": " + ec.message();
     return false;
   }
-  if (!write_file(
-          stage.path("frames/" + std::string(kPovIncludeName)),
-          [&](std::ostream& out) { write_pov_include(shot.scene, options.quality, out); }, error))
-    return false;
-  const int frames = shot.movie.frame_count(options.fps);
-  for (int k = 0; k < frames; ++k) {
-    if (!write_file(
-            stage.path("frames/" + frame_name(k) + ".pov"),
-            [&](std::ostream& out) { write_pov_frame(shot, k, options.fps, out); }, error))
+  std::ostringstream include;
+  write_pov_include(shot.scene, options.quality, include);
+  frames = {include.str(), {}, {}, {}};
+  if (!write_text(stage.path("frames/" + std::string(kPovIncludeName)), frames.include, error)) return false;
+  // Each frame's content once: its file now, and its key and partial render later from memory.
+  const int count = shot.movie.frame_count(options.fps);
+  frames.contents.reserve(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    frames.contents.push_back(frame_content(shot, k, options.fps));
+    if (!write_text(stage.path("frames/" + frame_name(k) + ".pov"), pov_frame_text(frames.contents.back()), error))
       return false;
   }
-  if (!write_captions(shot, options, stage.path("frames"), error)) return false;
-  if (!write_lens(shot, options, stage.path("frames"), error)) return false;
-
-  // Exactly as long as the movie; its duration is a whole number of seconds, so of frames too.
-  const auto samples = static_cast<std::size_t>(std::llround(shot.movie.duration() * kSampleRate));
-  AudioBuffer audio;
-  const SoundOptions sound{.lead = options.audio_lead, .music_path = options.music_path, .level = options.level};
-  const SoundMovie movie{&shot.movie, shot.replay_camera ? &*shot.replay_camera : nullptr};
-  if (!mix_movie_soundtrack({shot.scene, shot.timeline, *shot.camera}, movie, sound, samples, audio, error))
+  if (!captions_text_for(shot, options, frames.captions, error)) return false;
+  if (!frames.captions.empty() &&
+      !write_text(stage.path("frames/" + std::string(kCaptionsName)), frames.captions, error))
     return false;
-  summary.loudness_lufs = integrated_loudness(audio);
-  summary.true_peak_dbtp = to_db(true_peak(audio));
-  return write_wav(stage.path("soundtrack.wav"), audio, error);
+  frames.lens = lens_text_for(shot, options, frames.contents);
+  if (!write_text(stage.path("frames/" + std::string(kLensName)), frames.lens, error)) return false;
+  return write_sound(shot, options, stage, summary, error);
 }
 
 bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std::string& error) {
@@ -218,12 +263,12 @@ bool find_run_programs(const ExportOptions& options, RunPrograms& programs, std:
 }
 
 RunOutcome render_movie(const Shot& shot, const ExportOptions& options, const RunPrograms& programs,
-                        const OutputStage& stage, RunSummary& summary, std::string& error) {
+                        const OutputStage& stage, const StagedFrames& staged, RunSummary& summary, std::string& error) {
   const std::string frames_dir = stage.path("frames");
   const int frames = shot.movie.frame_count(options.fps);
   FrameCache cache(default_frame_cache_dir(), frames_dir);
-  FramePlan plan = plan_frames(frame_store_keys(frames_dir, frames, options), cache);
-  if (!options.whole_frames) plan_partial_frames(shot, options, plan.jobs);
+  FramePlan plan = plan_frames(frame_store_keys(staged, options), cache);
+  if (!options.whole_frames) plan_partial_frames(shot.scene, staged, options, plan.jobs);
   long traced = 0;
   for (const FrameJob& job : plan.jobs) {
     if (job.reference < 0) {

@@ -1,6 +1,7 @@
 #include "pov_frame.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -415,7 +416,14 @@ FramePart stick_part(const Shot& shot, const FrameBlur& blur, double t, double s
 
 }  // namespace
 
+namespace {
+std::atomic<long> g_contents_computed{0};
+}  // namespace
+
+long frame_contents_computed() { return g_contents_computed.load(std::memory_order_relaxed); }
+
 FrameContent frame_content(const Shot& shot, int frame, int fps) {
+  g_contents_computed.fetch_add(1, std::memory_order_relaxed);
   FrameContent content;
   // The movie's frame k: the simulation time it shows and the camera filming it (frames.h); a slowed
   // frame's shutter is open for as little of the simulation as the frame lasts of it.
@@ -445,13 +453,23 @@ FrameContent frame_content(const Shot& shot, int frame, int fps) {
   return content;
 }
 
-void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
-  const FrameContent content = frame_content(shot, frame, fps);
+std::string pov_frame_text(const FrameContent& content) {
+  std::size_t size = content.header.size() + content.camera.size() + 64;
+  for (const FramePart& part : content.parts) size += part.text.size();
+  std::string text;
+  text.reserve(size);
   // The lamp lights the balls and the stick from a light group of their own, as it does the table
   // (the include's LampLight says why).
-  out << content.header << content.camera << "light_group {\n";
-  for (const FramePart& part : content.parts) out << part.text;
-  out << "  LampLight()\n  global_lights on\n}\n";
+  text += content.header;
+  text += content.camera;
+  text += "light_group {\n";
+  for (const FramePart& part : content.parts) text += part.text;
+  text += "  LampLight()\n  global_lights on\n}\n";
+  return text;
+}
+
+void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out) {
+  out << pov_frame_text(frame_content(shot, frame, fps));
 }
 
 }  // namespace bsim

@@ -95,7 +95,15 @@ struct FrameContent {
 /// shows its time from the replay's camera): what write_pov_frame writes, with bounds.
 FrameContent frame_content(const Shot& shot, int frame, int fps);
 
-/// Writes movie frame `frame` of the shot (see frame_content). Pocketed balls lie in their pockets.
+/// How many frames' contents frame_content has computed in this process: the exporter computes
+/// each frame's once (movie_export.h), whatever it then writes, keys and plans from it.
+long frame_contents_computed();
+
+/// The frame's file: its header, the camera, then its parts in a light group of their own.
+std::string pov_frame_text(const FrameContent& content);
+
+/// Writes movie frame `frame` of the shot (pov_frame_text of its frame_content). Pocketed balls lie
+/// in their pockets.
 void write_pov_frame(const Shot& shot, int frame, int fps, std::ostream& out);
 
 }  // namespace bsim

@@ -1,6 +1,11 @@
 // --movie: every frame drawn with the GL renderer and piped raw to ffmpeg with the sound track, so a
-// camera script can be judged in motion in seconds instead of the minutes POV-Ray takes.
+// camera script can be judged in motion in seconds instead of the minutes POV-Ray takes. Drawing and
+// encoding overlap (animatic_frames.h).
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -9,14 +14,12 @@
 #include <string>
 #include <vector>
 
-#include <imgui.h>
-
+#include "animatic_frames.h"
 #include "atomic_file.h"
 #include "child_process.h"
 #include "commands.h"
 #include "frames.h"
 #include "headless_canvas.h"
-#include "overlays.h"
 #include "progress_reporter.h"
 #include "scene_file.h"
 #include "scene_renderer.h"
@@ -29,6 +32,10 @@ namespace {
 /// s; the exporter's default lead, so the animatic sounds as the movie will.
 constexpr double kAnimaticAudioLead = 0.005;
 
+/// Bytes the pipe to ffmpeg holds: a good part of a frame, so that a frame goes over in a few writes
+/// rather than in 64 KiB pieces, each waking ffmpeg (Linux caps it at /proc/sys/fs/pipe-max-size).
+constexpr int kPipeBytes = 1 << 20;
+
 /// ffmpeg reading raw RGBA frames on its standard input, its messages in a log file.
 class FfmpegPipe {
  public:
@@ -39,22 +46,28 @@ class FfmpegPipe {
       return false;
     }
     log_ = log;
-    int fd = -1;
-    pid_ = start_process(args, ".", log_.string(), error, &fd);
+    pid_ = start_process(args, ".", log_.string(), error, &fd_);
     if (pid_ < 0) return false;
-    out_ = fdopen(fd, "wb");
-    return out_ != nullptr;
+    fcntl(fd_, F_SETPIPE_SZ, kPipeBytes);  // best effort: a smaller pipe only costs more writes
+    return fd_ >= 0;
   }
 
-  bool write(const std::vector<std::uint8_t>& bytes) {
-    return out_ && std::fwrite(bytes.data(), 1, bytes.size(), out_) == bytes.size();
+  /// Writes one frame whole; false when ffmpeg is gone.
+  bool write(const std::uint8_t* bytes, std::size_t size) {
+    while (fd_ >= 0 && size > 0) {
+      const ssize_t n = ::write(fd_, bytes, size);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      bytes += n;
+      size -= static_cast<std::size_t>(n);
+    }
+    return fd_ >= 0;
   }
 
   /// Ctrl-C: closes the pipe, stops ffmpeg without waiting for it to finish the file and deletes
   /// its log (the process is about to die of the signal, so no destructor will).
   void stop() {
-    if (out_) std::fclose(out_);
-    out_ = nullptr;
+    close_pipe();
     if (pid_ >= 0) stop_process(pid_);
     pid_ = -1;
     std::error_code ec;
@@ -63,8 +76,7 @@ class FfmpegPipe {
 
   /// Closes the pipe and waits; true when ffmpeg succeeded, else `error` holds its last message.
   bool finish(std::string& error) {
-    if (out_) std::fclose(out_);
-    out_ = nullptr;
+    close_pipe();
     if (pid_ < 0) return false;
     const bool ok = wait_for(pid_);
     pid_ = -1;
@@ -80,7 +92,11 @@ class FfmpegPipe {
   }
 
  private:
-  FILE* out_ = nullptr;
+  void close_pipe() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+  int fd_ = -1;
   pid_t pid_ = -1;
   std::filesystem::path log_;
 };
@@ -108,31 +124,6 @@ std::vector<std::string> ffmpeg_arguments(const PreviewOptions& options, const s
           // GL rows come bottom-up; H.264 in 4:2:0 needs even sides, so an odd size gets one black line.
           "-vf", "vflip,pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "ultrafast", "-crf", "20",
           "-pix_fmt", "yuv420p", "-c:a", "aac", "-b:a", "160k", "-movflags", "+faststart", "-f", "mp4", partial};
-}
-
-/// Draws every frame into ffmpeg. False when a write failed or Ctrl-C came.
-bool draw_frames(const PreviewOptions& options, const Shot& shot, HeadlessCanvas& canvas, SceneRenderer& renderer,
-                 FfmpegPipe& ffmpeg, ProgressReporter& progress, int frames) {
-  const int width = options.width, height = options.height;
-  const bool overlays = options.overlays.any();
-  const OverlayPaths paths = overlays ? overlay_paths(shot) : OverlayPaths{};
-  for (int k = 0; k < frames; ++k) {
-    if (InterruptGuard::interrupted()) return false;
-    const MovieFrame shown = shot.movie.frame(k, options.fps);  // the movie's frame: a replay's too
-    const double t = shown.time;
-    const FrameState frame = scripted_frame(shot, shown);
-    renderer.draw(shot.scene, frame, width, height);
-    if (overlays) {
-      ImDrawList* list = canvas.begin_2d();
-      draw_overlays(*list,
-                    OverlayFrame{shot, t, frame.camera, double(width), double(height), canvas.fonts(), 0, 0, &paths},
-                    options.overlays);
-      canvas.end_2d();
-    }
-    if (!ffmpeg.write(canvas.pixels())) return false;
-    progress.advance();
-  }
-  return true;
 }
 
 }  // namespace
@@ -173,7 +164,10 @@ int run_animatic(const PreviewOptions& options, const Shot& shot) {
   FfmpegPipe ffmpeg;
   bool ok = ffmpeg.start(ffmpeg_arguments(options, wav, partial), temporary_file(".log"), error);
   ProgressReporter progress("billiards-preview", "animatic", frames, 0, progress_style(options.quiet));
-  ok = ok && draw_frames(options, shot, canvas, renderer, ffmpeg, progress, frames);
+  const FrameSink sink = [&ffmpeg](const std::uint8_t* pixels, std::size_t bytes) {
+    return ffmpeg.write(pixels, bytes);
+  };
+  ok = ok && draw_animatic_frames(options, shot, canvas, renderer, frames, sink, &progress);
   if (InterruptGuard::interrupted())
     ffmpeg.stop();
   else

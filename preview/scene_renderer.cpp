@@ -52,6 +52,7 @@ struct SceneRenderer::Impl {
   GLuint fbo = 0, color_rb = 0, depth_rb = 0;
   int fbo_width = 0, fbo_height = 0, samples = 0;
   int wanted_samples = 0, built_for = -1;
+  bool kept_offscreen = false;  ///< the last picture was left in `fbo`
 
   ~Impl() {
     release_target();
@@ -110,7 +111,8 @@ struct SceneRenderer::Impl {
   void draw_balls(const Scene& scene, const std::vector<BallState>& balls);
   void draw_cue(const CuePose& pose);
   void draw_shadows(const std::vector<BallState>& balls, double radius);
-  void finish_frame(int width, int height, int x, int y);
+  void finish_frame(int width, int height, int x, int y, bool resolve);
+  void draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y, bool resolve);
 };
 
 SceneRenderer::SceneRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -288,29 +290,45 @@ void SceneRenderer::Impl::draw_shadows(const std::vector<BallState>& balls, doub
 }
 
 // Leaves the GL state as the other drawing expects it and, when drawn offscreen, resolves the picture
-// into framebuffer 0 at (x, y).
-void SceneRenderer::Impl::finish_frame(int width, int height, int x, int y) {
+// into framebuffer 0 at (x, y), unless it is to stay offscreen (`resolve` false, read_picture()).
+void SceneRenderer::Impl::finish_frame(int width, int height, int x, int y, bool resolve) {
   glStencilMask(0xFF);
   glDisable(GL_SCISSOR_TEST);
   glUseProgram(0);
   glBindTexture(GL_TEXTURE_2D, 0);
-  if (fbo) {
+  if (fbo && resolve) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
+  if (fbo) glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  kept_offscreen = fbo && !resolve;
+}
+
+void SceneRenderer::Impl::draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y,
+                               bool resolve) {
+  begin_frame(width, height, x, y);
+  set_camera(frame.camera, static_cast<double>(width) / std::max(height, 1));
+  draw_table();
+  draw_balls(scene, frame.balls);
+  draw_cue(frame.cue);
+  draw_shadows(frame.balls, scene.physics.ball_radius);
+  finish_frame(width, height, x, y, resolve);
 }
 
 void SceneRenderer::draw(const Scene& scene, const FrameState& frame, int width, int height, int x, int y) {
-  Impl& r = *impl_;
-  r.begin_frame(width, height, x, y);
-  r.set_camera(frame.camera, static_cast<double>(width) / std::max(height, 1));
-  r.draw_table();
-  r.draw_balls(scene, frame.balls);
-  r.draw_cue(frame.cue);
-  r.draw_shadows(frame.balls, scene.physics.ball_radius);
-  r.finish_frame(width, height, x, y);
+  impl_->draw(scene, frame, width, height, x, y, true);
+}
+
+void SceneRenderer::draw_offscreen(const Scene& scene, const FrameState& frame, int width, int height) {
+  impl_->draw(scene, frame, width, height, 0, 0, false);
+}
+
+void SceneRenderer::read_picture(int width, int height, std::uint8_t* rgba) const {
+  const Impl& r = *impl_;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, r.kept_offscreen ? r.fbo : 0);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);  // rows of 4-byte pixels: no padding
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
 }  // namespace bsim

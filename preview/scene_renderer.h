@@ -2,6 +2,7 @@
 // Draws one frame of the shot with OpenGL: the table, the balls (coloured, striped, numbered, turned
 // by their orientation), the stick and soft contact shadows, seen from a ViewCamera. Shared by the
 // headless snapshots, the animatic and the window; needs a current GL 3.3 core context.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,13 @@ class SceneRenderer {
   void set_scene(const Scene& scene);
   /// Draws a width x height picture into framebuffer 0 with its lower-left corner at (x, y).
   void draw(const Scene& scene, const FrameState& frame, int width, int height, int x = 0, int y = 0);
+  /// Draws as draw() does at (0, 0), but leaves the picture where it was drawn (the offscreen buffer,
+  /// none copied into framebuffer 0), for read_picture().
+  void draw_offscreen(const Scene& scene, const FrameState& frame, int width, int height);
+  /// Reads the width x height picture last drawn into `rgba` (RGBA, bottom row first, as GL has it):
+  /// straight from the offscreen buffer after draw_offscreen(); after draw(), from framebuffer 0,
+  /// with what was drawn over it there (the overlays).
+  void read_picture(int width, int height, std::uint8_t* rgba) const;
 
  private:
   struct Impl;

@@ -23,9 +23,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -235,8 +235,9 @@ int main(int argc, char** argv) {
   std::string error;
   start = Clock::now();
   bsim::RunSummary written;
-  if (!stage.open(dir.string(), error) || !bsim::write_frames_and_sound(*loaded.shot, options, stage, written, error) ||
-      !stage.commit(error)) {
+  bsim::StagedFrames staged;
+  if (!stage.open(dir.string(), error) ||
+      !bsim::write_frames_and_sound(*loaded.shot, options, stage, staged, written, error) || !stage.commit(error)) {
     std::fprintf(stderr, "render_bench: %s\n", error.c_str());
     return 1;
   }

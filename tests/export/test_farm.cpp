@@ -4,14 +4,24 @@
 // tests/farm/one_node_slurm.sh.
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "export_options.h"
 #include "farm_files.h"
 #include "farm_slurm.h"
 #include "files.h"
+#include "movie_export.h"
+#include "output_stage.h"
+#include "pov_frame.h"
+#include "run_summary.h"
+#include "shot.h"
+#include "shots.h"
 #include "support.h"
 
 namespace fs = std::filesystem;
@@ -60,6 +70,27 @@ struct Farm {
 };
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// Sets an environment variable of this process for a scope.
+class EnvGuard {
+ public:
+  EnvGuard(const char* name, const std::string& value) : name_(name) {
+    if (const char* was = std::getenv(name)) was_ = was;
+    ::setenv(name, value.c_str(), 1);
+  }
+  ~EnvGuard() {
+    if (was_)
+      ::setenv(name_, was_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+  EnvGuard(const EnvGuard&) = delete;
+  EnvGuard& operator=(const EnvGuard&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> was_;
+};
 
 }  // namespace
 
@@ -241,6 +272,47 @@ TEST_SUITE("rendering on a Slurm cluster") {
     CHECK(has(movie.err, "running " + dir + "/farm/billiards-export"));
     CHECK(has(movie.err, "no movie: 10 of 10 frames are missing"));
     CHECK_FALSE(fs::exists(record));
+  }
+
+  TEST_CASE("a submission keys and plans the frames as written, computing none of them again") {
+    Farm farm;
+    // This process finds the stand-in sbatch, and no store serves a frame.
+    const char* path_now = std::getenv("PATH");
+    const EnvGuard path("PATH", (farm.dir.path / "bin").string() + ":" + (path_now ? path_now : "/usr/bin:/bin"));
+    const EnvGuard store("BSIM_CACHE_DIR", "off");
+    const std::unique_ptr<bsim::Shot> shot = bsim::test::load_scene(kScene, "shot");
+    bsim::ExportOptions options;
+    options.width = 32;
+    options.height = 18;
+    options.fps = 2;
+    options.quality = bsim::Quality::draft;
+    options.chunk = 3;
+    options.farm = bsim::FarmMode::slurm;
+    std::string error;
+    bsim::SlurmSubmission submission;
+    REQUIRE_MESSAGE(submission.prepare(options, farm.out.string(), error), error);
+    bsim::OutputStage stage;
+    REQUIRE_MESSAGE(stage.open(farm.out.string(), error), error);
+    bsim::ExportOptions staged = options;
+    staged.no_render = true;  // as billiards-export stages a submission
+    bsim::StagedFrames frames;
+    bsim::RunSummary summary;
+    REQUIRE_MESSAGE(bsim::write_frames_and_sound(*shot, staged, stage, frames, summary, error), error);
+    const long before = bsim::frame_contents_computed();
+    REQUIRE_MESSAGE(submission.stage(*shot, options, stage, frames, error), error);
+    CHECK(bsim::frame_contents_computed() == before);
+    // Each chunk's partial frames as planned from each frame computed anew.
+    CHECK(bsim::test::read_file(stage.path(bsim::farm::kChunks)) == "0-2\n3-5\n6-7\n8-9\n");
+    std::map<int, bsim::farm::PartialPlan> expected;
+    for (const auto& [first, last] : std::vector<std::pair<int, int>>{{0, 2}, {3, 5}, {6, 7}, {8, 9}}) {
+      std::vector<bsim::FrameJob> jobs;
+      for (int k = first; k <= last; ++k) jobs.push_back({k, 0});
+      bsim::plan_partial_frames(*shot, options, jobs);
+      for (const bsim::FrameJob& job : jobs)
+        if (job.reference >= 0) expected[job.frame] = {job.reference, job.rects};
+    }
+    CHECK_FALSE(expected.empty());
+    CHECK(bsim::test::read_file(stage.path(bsim::farm::kPartial)) == bsim::farm::partial_text(expected));
   }
 
   TEST_CASE("farm/partial.txt keeps each partial frame's reference and rectangles") {
