@@ -128,11 +128,17 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
     shot->scene.camera = shot->directed->shots;
   }
   shot->camera = CameraScript::build(shot->scene, shot->timeline, result.diagnostics);
-  if (!shot->camera || has_errors(result.diagnostics)) {
-    shot->camera.reset();
-  } else {
+  if (!shot->camera || has_errors(result.diagnostics)) shot->camera.reset();
+  plan_movie(*shot, replay);
+  if (shot->camera) {
     check_camera_clearance(shot->scene, shot->timeline, *shot->camera, result.diagnostics);
-    shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
+    // The stick keeps out of the movie's camera as it comes and goes, and out of the replay's too over
+    // the stretch the replay films again.
+    AlsoFilmed replayed;
+    if (shot->replay_camera)
+      for (const MovieSegment& segment : shot->movie.segments())
+        if (segment.replay) replayed = {&*shot->replay_camera, segment.start, segment.end};
+    shot->cue.emplace(shot->scene, shot->timeline, *shot->camera, replayed);
     // Each shot's stroke that no elevation clears: a warning at that shot's `stroke` line.
     for (const CueStroke& planned : shot->cue->strokes()) {
       const auto& stroke = shot->scene.cues[static_cast<std::size_t>(planned.shot)].stroke;
@@ -143,7 +149,6 @@ ShotResult load_shot(std::string_view text, std::string_view name, const ParseOp
                  " degrees passes through a ball or a cushion on its stroke; no pose clears (raise it)"});
     }
   }
-  plan_movie(*shot, replay);
   result.shot = std::move(shot);
   return result;
 }

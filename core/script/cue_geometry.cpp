@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 #include "camera_view.h"
 #include "cue_pose.h"
@@ -26,6 +28,67 @@ double lowest_z(const Vec3& centre, const Vec3& axis, double radius) {
 
 /// Points on the lower half of the stick's round, at each sample of its axis, tested against the wood.
 constexpr int kUnderPoints = 9;
+/// m ahead of the camera from which the stick's outline in the picture is measured (a stick nearer
+/// than that covers the picture anyway, and would project without bound).
+constexpr double kShareNear = 0.05;
+/// Points round each end of the stick whose projections outline it in the picture.
+constexpr int kOutlinePoints = 24;
+/// m between the points of the stick's axis tested against a line of sight.
+constexpr double kSightStep = 0.005;
+
+/// The convex hull of `points`, anticlockwise (Andrew's monotone chain).
+std::vector<PicturePoint> convex_hull(std::vector<PicturePoint> points) {
+  std::sort(points.begin(), points.end(),
+            [](const PicturePoint& a, const PicturePoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  const auto turn = [](const PicturePoint& o, const PicturePoint& a, const PicturePoint& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  if (points.size() < 3) return points;
+  std::vector<PicturePoint> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const PicturePoint& p : points) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+/// `polygon` clipped to the picture (-1..1 both ways; Sutherland and Hodgman's clipping).
+std::vector<PicturePoint> clip_to_picture(std::vector<PicturePoint> polygon) {
+  // Each edge of the picture as the coordinate it bounds (0: x, 1: y) and its side (+1: at most 1, -1: at least -1).
+  for (const auto& [axis, sign] : {std::pair{0, 1.0}, std::pair{0, -1.0}, std::pair{1, 1.0}, std::pair{1, -1.0}}) {
+    const auto inside = [&](const PicturePoint& p) { return sign * (axis == 0 ? p.x : p.y) <= 1.0; };
+    const auto cross = [&](const PicturePoint& a, const PicturePoint& b) {
+      const double va = axis == 0 ? a.x : a.y, vb = axis == 0 ? b.x : b.y;
+      const double f = (sign - va) / (vb - va);
+      return PicturePoint{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+    };
+    std::vector<PicturePoint> out;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const PicturePoint& a = polygon[i];
+      const PicturePoint& b = polygon[(i + 1) % polygon.size()];
+      if (inside(a)) out.push_back(a);
+      if (inside(a) != inside(b)) out.push_back(cross(a, b));
+    }
+    polygon = std::move(out);
+  }
+  return polygon;
+}
+
+double area(const std::vector<PicturePoint>& polygon) {
+  double twice = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const PicturePoint& a = polygon[i];
+    const PicturePoint& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * std::abs(twice);
+}
 
 /// What stands round the bed for the stick to clear, seen from above: the blocks behind the cushions'
 /// noses (cushion and wood), within the table's frame, less the pockets' openings.
@@ -112,6 +175,41 @@ bool stick_in_view(const CuePose& stick, const CameraPose& camera) {
   const double cone = view.cone_half_angle_deg() + kViewMarginDeg;
   for (double s = 0; s <= kCueLength + 1e-9; s += kViewStep) {
     if (view.in_cone(stick.tip + s * stick.axis, cone)) return true;
+  }
+  return false;
+}
+
+double stick_picture_share(const CuePose& stick, const CameraPose& camera) {
+  const CameraView view(camera);
+  // The stretch of the axis at least kShareNear ahead of the camera (its depth is linear along it).
+  const double d0 = view.depth(stick.tip), d1 = view.depth(stick.tip + kCueLength * stick.axis);
+  double s0 = 0, s1 = kCueLength;
+  if (d0 < kShareNear && d1 < kShareNear) return 0;
+  if (d0 < kShareNear) s0 = kCueLength * (kShareNear - d0) / (d1 - d0);
+  if (d1 < kShareNear) s1 = kCueLength * (kShareNear - d0) / (d1 - d0);
+  // The rod between them is a truncated cone: its outline is the hull of its two end circles.
+  const Vec3 u = stick.axis.unitOrthogonal(), v = stick.axis.cross(u);
+  std::vector<PicturePoint> points;
+  for (const double s : {s0, s1})
+    for (int k = 0; k < kOutlinePoints; ++k) {
+      const double a = 2 * std::numbers::pi * k / kOutlinePoints;
+      const Vec3 p = stick.tip + s * stick.axis + stick_radius(s) * (std::cos(a) * u + std::sin(a) * v);
+      if (const std::optional<PicturePoint> at = view.project(p)) points.push_back(*at);
+    }
+  return area(clip_to_picture(convex_hull(std::move(points)))) / 4.0;  // the picture is 2 by 2
+}
+
+bool stick_hides(const CuePose& stick, const CameraPose& camera, const Vec3& p, double radius) {
+  const Vec3 sight = p - camera.location;
+  const double reach = sight.norm();
+  if (!(reach > radius)) return false;
+  const Vec3 along = sight / reach;
+  for (double s = 0; s <= kCueLength + 1e-9; s += kSightStep) {
+    const Vec3 q = stick.tip + s * stick.axis;
+    const double ahead = (q - camera.location).dot(along);
+    if (ahead <= 0 || ahead >= reach - radius) continue;
+    // Half the ball's radius, seen from the camera, at the stick's distance.
+    if ((q - camera.location - ahead * along).norm() < stick_radius(s) + 0.5 * radius * ahead / reach) return true;
   }
   return false;
 }

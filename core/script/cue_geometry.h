@@ -28,4 +28,14 @@ double stick_ball_gap(const CuePose& stick, const Vec3& centre, double ball_radi
 /// Whether any part of the stick can appear in the camera's picture.
 bool stick_in_view(const CuePose& stick, const CameraPose& camera);
 
+/// The share (0 to 1) of the camera's picture (kCameraFovDeg, kPictureAspect) the stick covers: its
+/// outline (the tapered rod from tip to butt, the part nearer the camera than a few centimetres left
+/// out) projected and clipped to the picture.
+double stick_picture_share(const CuePose& stick, const CameraPose& camera);
+
+/// Whether the stick stands in front of `p` (the centre of a ball of `radius` m, 0 for a point) as the
+/// camera sees it: nearer than `p`, it passes within half the ball's radius of its centre in the
+/// picture (so it covers a good part of the ball, not just an edge).
+bool stick_hides(const CuePose& stick, const CameraPose& camera, const Vec3& p, double radius = 0);
+
 }  // namespace bsim

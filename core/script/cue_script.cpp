@@ -38,8 +38,13 @@ constexpr double kRetractTime = 1.2;
 constexpr double kMinRetractTime = 0.2;
 /// s before the next shot's start by which a stroke's stick is removed (when the shot lasts long enough).
 constexpr double kLeaveMargin = 0.1;
-/// rad the stick swings up about the contact point while out of play.
-constexpr double kLift = 60.0 * kDegToRad;
+/// rad the stick swings up about the contact point while out of play, tried in turn for its approach
+/// and for its retraction: the first whose sweep keeps within kSweepShare of the picture (else the one
+/// that covers least). 0: it slides in (or out) along its own line.
+constexpr double kLifts[] = {60.0 * kDegToRad, 30.0 * kDegToRad, 0.0};
+/// The most of the camera's picture (stick_picture_share) the stick may sweep across as it comes in
+/// and as it leaves.
+constexpr double kSweepShare = 0.05;
 /// m behind the contact point tried for the out-of-play position, nearest first, until out of view.
 constexpr double kAwayDistances[] = {1.2, 2.0, 3.0, 5.0, 8.0, 12.0};
 /// m kept between the stick and anything it passes.
@@ -86,7 +91,7 @@ CuePose path(const CueStroke& s, double t) {
   if (t < l.approach_end) {
     // Swung down and slid in from out of view; the swing ends before the slide so the tip arrives level.
     const double u = (std::max(t, s.start) - s.start) / (l.approach_end - s.start);
-    return place(s, lerp(s.approach_from, kAddressGap, smooth(u)), kLift * (1.0 - smooth(u / 0.7)));
+    return place(s, lerp(s.approach_from, kAddressGap, smooth(u)), s.approach_lift * (1.0 - smooth(u / 0.7)));
   }
   if (t < l.backswing_begin) {
     const double w = std::sin(std::numbers::pi * (t - l.approach_end) / l.stroke);
@@ -107,20 +112,40 @@ CuePose path(const CueStroke& s, double t) {
   }
   // Slid back first, then swung up, so the part past the contact point never dips toward the bed.
   const double u = std::min((t - l.retract_begin) / s.retract_time, 1.0);
-  return place(s, lerp(-s.follow, s.retract_to, smooth(u)), kLift * smooth((u - 0.3) / 0.7));
+  return place(s, lerp(-s.follow, s.retract_to, smooth(u)), s.retract_lift * smooth((u - 0.3) / 0.7));
 }
 
-/// Plans one shot's stroke around its strike.
+/// The cameras that film the stick: the movie's, and over a stretch of the timeline another one too
+/// (a game's replay films its winning shot again).
+class Views {
+ public:
+  Views(const CameraScript& camera, const AlsoFilmed& also) : camera_(camera), also_(also) {}
+  /// Whether any part of the stick can appear in either camera's picture at t.
+  bool see(const CuePose& stick, double t) const {
+    return stick_in_view(stick, camera_.pose(t)) || (films_again(t) && stick_in_view(stick, also_.camera->pose(t)));
+  }
+  /// The larger share of either camera's picture the stick covers at t.
+  double share(const CuePose& stick, double t) const {
+    const double main = stick_picture_share(stick, camera_.pose(t));
+    return films_again(t) ? std::max(main, stick_picture_share(stick, also_.camera->pose(t))) : main;
+  }
+
+ private:
+  bool films_again(double t) const { return also_.camera && t >= also_.begin && t <= also_.end; }
+  const CameraScript& camera_;
+  AlsoFilmed also_;
+};
+
+/// Plans one shot's stroke around its strike: its pose and timing (plan), then, against the camera
+/// that films it, where the stick comes in from and when it is removed (plan_retraction).
 class StrokePlanner {
  public:
-  StrokePlanner(const Scene& scene, const Timeline& timeline, const CameraScript& camera, CueStroke& s)
-      : scene_(scene),
-        timeline_(timeline),
-        camera_(camera),
-        cue_(scene.cues[static_cast<std::size_t>(s.shot)]),
-        s_(s) {}
+  StrokePlanner(const Scene& scene, const Timeline& timeline, CueStroke& s)
+      : scene_(scene), timeline_(timeline), cue_(scene.cues[static_cast<std::size_t>(s.shot)]), s_(s) {}
 
   void plan();
+  /// When the stick slides back and swings up, and when it is removed (once out of view of `views`).
+  void plan_retraction(const Views& views);
 
  private:
   /// The lowest elevation from `lowest_deg` (whole degrees above it) that clears, else the one that
@@ -135,12 +160,9 @@ class StrokePlanner {
   double stroke_clearance() const;
   /// Whether the tip stays off the struck ball as it leaves.
   bool follow_through_clear() const;
-  /// When the stick slides back and swings up, and when it is removed (once out of view).
-  void plan_retraction();
 
   const Scene& scene_;
   const Timeline& timeline_;
-  const CameraScript& camera_;
   const Cue& cue_;
   CueStroke& s_;
 };
@@ -164,29 +186,52 @@ void StrokePlanner::plan() {
     s_.follow_time = 2.0 * s_.follow / s_.tip_speed;
   }
   if (!follow_through_clear()) s_.follow = s_.follow_time = 0;
-  plan_retraction();
 }
 
-void StrokePlanner::plan_retraction() {
+void StrokePlanner::plan_retraction(const Views& views) {
   const double retract_begin = s_.cue_time + s_.follow_time;
   // Gone before the next shot's start, so that shot's stick can come in from where its player stands.
   s_.retract_time = kRetractTime;
   if (s_.next_start >= 0)
     s_.retract_time = std::clamp(s_.next_start - kLeaveMargin - retract_begin, kMinRetractTime, kRetractTime);
   const double retract_end = retract_begin + s_.retract_time;
+  const double approach_end = lead_times(s_).approach_end;
 
-  // Out of play: the nearest swung-up position the camera cannot see at that moment.
-  auto away = [&](double t) {
+  // Out of play: the nearest position swung up by `lift` that the camera cannot see at t.
+  const auto away = [&](double t, double lift) {
     for (double distance : kAwayDistances) {
-      if (!stick_in_view(place(s_, distance, kLift), camera_.pose(t))) return distance;
+      if (!views.see(place(s_, distance, lift), t)) return distance;
     }
     return kAwayDistances[std::size(kAwayDistances) - 1];
   };
-  s_.approach_from = away(s_.start);
-  s_.retract_to = away(retract_end);
+  // The most of the picture the stick covers from t0 until it is out of view or t1.
+  const auto sweep = [&](double t0, double t1, bool until_hidden) {
+    double most = 0;
+    for (double t = t0; t < t1; t += kHideStep) {
+      const CuePose pose = path(s_, t);
+      if (until_hidden && !views.see(pose, t)) break;
+      most = std::max(most, views.share(pose, t));
+    }
+    return most;
+  };
+  // Each way the first lift that sweeps little of the picture, else the one that sweeps least.
+  double approach_best = 2, retract_best = 2, approach_lift = kLifts[0], retract_lift = kLifts[0];
+  for (const double lift : kLifts) {
+    s_.approach_lift = s_.retract_lift = lift;
+    s_.approach_from = away(s_.start, lift);
+    s_.retract_to = away(retract_end, lift);
+    const double in = approach_best > kSweepShare ? sweep(s_.start, approach_end, false) : 2;
+    const double out = retract_best > kSweepShare ? sweep(retract_begin, retract_end, true) : 2;
+    if (in < approach_best) approach_best = in, approach_lift = lift;
+    if (out < retract_best) retract_best = out, retract_lift = lift;
+  }
+  s_.approach_lift = approach_lift;
+  s_.retract_lift = retract_lift;
+  s_.approach_from = away(s_.start, approach_lift);
+  s_.retract_to = away(retract_end, retract_lift);
   s_.hide_time = retract_end;
   for (double t = retract_begin; t < retract_end; t += kHideStep) {
-    if (!stick_in_view(path(s_, t), camera_.pose(t))) {
+    if (!views.see(path(s_, t), t)) {
       s_.hide_time = t;
       break;
     }
@@ -277,18 +322,41 @@ bool StrokePlanner::follow_through_clear() const {
 
 double CueStroke::elevation_deg() const { return elevation / kDegToRad; }
 
-CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera) : timeline_(&timeline) {
+std::optional<CueStroke> plan_stroke(const Scene& scene, const Timeline& timeline, int shot) {
+  const std::vector<ShotSpan>& shots = timeline.shots();
+  const auto k = static_cast<std::size_t>(shot);
+  if (shot < 0 || k >= shots.size() || k >= scene.cues.size()) return std::nullopt;
+  CueStroke s;
+  s.shot = shot;
+  s.target = scene.cues[k].target;
+  s.start = shots[k].start;
+  s.cue_time = shots[k].cue;
+  if (k + 1 < shots.size()) s.next_start = shots[k + 1].start;
+  if (!(s.cue_time > s.start) || s.target < 0 || s.target >= static_cast<int>(scene.balls.size())) return std::nullopt;
+  StrokePlanner(scene, timeline, s).plan();
+  return s;
+}
+
+AtBall at_ball(const CueStroke& stroke) {
+  const LeadTimes l = lead_times(stroke);
+  return {l.approach_end, l.retract_begin};
+}
+
+CuePose stroke_pose(const CueStroke& stroke, double t) {
+  const AtBall at = at_ball(stroke);
+  return path(stroke, std::clamp(t, at.begin, at.end));
+}
+
+CueScript::CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera, const AlsoFilmed& also)
+    : timeline_(&timeline) {
+  const Views views(camera, also);
   const std::vector<ShotSpan>& shots = timeline.shots();
   stroke_of_shot_.assign(shots.size(), -1);
   for (std::size_t k = 0; k < shots.size() && k < scene.cues.size(); ++k) {
-    CueStroke s;
-    s.shot = static_cast<int>(k);
-    s.target = scene.cues[k].target;
-    s.start = shots[k].start;
-    s.cue_time = shots[k].cue;
-    if (k + 1 < shots.size()) s.next_start = shots[k + 1].start;
-    if (!(s.cue_time > s.start) || s.target < 0 || s.target >= static_cast<int>(scene.balls.size())) continue;
-    StrokePlanner(scene, timeline, camera, s).plan();
+    std::optional<CueStroke> planned = plan_stroke(scene, timeline, static_cast<int>(k));
+    if (!planned) continue;
+    CueStroke& s = *planned;
+    StrokePlanner(scene, timeline, s).plan_retraction(views);
     stroke_of_shot_[k] = static_cast<int>(strokes_.size());
     strokes_.push_back(s);
     const LeadTimes l = lead_times(s);

@@ -1,6 +1,7 @@
 #pragma once
 // The scripted cue stick: for every shot of the scene, approach, two practice strokes, the strike and
 // retraction (the seed's four phases), the stick leaving after each stroke and coming back for the next.
+#include <optional>
 #include <vector>
 
 #include "camera_script.h"
@@ -38,16 +39,45 @@ struct CueStroke {
   double retract_time = 0;   ///< s of the retraction at most (shorter when the next shot starts sooner)
   double approach_from = 0;  ///< m behind the contact point at the start (swung up, out of view)
   double retract_to = 0;     ///< m behind the contact point at the end of retraction
-  double hide_time = 0;      ///< s, the stick is removed from here on
-  double amplitude = 0;      ///< m, reach of the practice strokes
-  bool clears = true;        ///< see CueScript::clears()
+  /// rad the stick is swung up about the contact point at the start, and at the end of retraction:
+  /// 60 degrees, or less when that swing would sweep across the camera's picture (0: it slides).
+  double approach_lift = 0, retract_lift = 0;
+  double hide_time = 0;  ///< s, the stick is removed from here on
+  double amplitude = 0;  ///< m, reach of the practice strokes
+  bool clears = true;    ///< see CueScript::clears()
   double elevation_deg() const;
+};
+
+/// Shot `shot`'s stroke as the stick plays it, all but what keeps the stick out of a camera's view
+/// (approach_from, retract_to, retract_time and hide_time are left unset): where it strikes, at what
+/// elevation (the stroke's, raised as far as the cushions and balls need), its timing. The same pose
+/// the CueScript of any camera plays; none when the stick does not play that shot.
+std::optional<CueStroke> plan_stroke(const Scene& scene, const Timeline& timeline, int shot);
+
+/// s, the stretch of a stroke when the stick is at the ball: from the end of its approach (the tip
+/// addressed) through the practice strokes and the strike to the end of the follow-through. Its pose
+/// then is the same whatever camera films it (the approach before and the retraction after keep out
+/// of the camera's view).
+struct AtBall {
+  double begin = 0, end = 0;
+};
+AtBall at_ball(const CueStroke& stroke);
+
+/// The stick of `stroke` at t within at_ball(stroke) (clamped to it): as CueScript::pose draws it.
+CuePose stroke_pose(const CueStroke& stroke, double t);
+
+/// A second camera that films a stretch of the timeline again (a game's replay of its winning shot).
+struct AlsoFilmed {
+  const CameraScript* camera = nullptr;  ///< none: only the movie's camera films the stick
+  double begin = 0, end = 0;             ///< s of the timeline it films
 };
 
 class CueScript {
  public:
-  /// `scene`, `timeline` and `camera` must outlive the script.
-  CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera);
+  /// `scene`, `timeline` and `camera` (and `also`'s camera) must outlive the script. The stick comes in
+  /// and leaves out of view of `camera`, and over `also`'s stretch out of view of its camera too; its
+  /// swing sweeps across neither picture.
+  CueScript(const Scene& scene, const Timeline& timeline, const CameraScript& camera, const AlsoFilmed& also = {});
 
   /// The stick at time t: the pose of the stroke of the shot under way (Timeline::shot_at), hidden
   /// between one stroke's removal and the next shot's start.

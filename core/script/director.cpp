@@ -38,6 +38,8 @@
 
 #include "camera_moment.h"
 #include "camera_view.h"
+#include "cue_geometry.h"
+#include "cue_script.h"
 #include "director_candidates.h"
 #include "director_judge.h"
 #include "table.h"
@@ -76,6 +78,9 @@ std::string ball_name(const Scene& scene, int ball) {
 /// it may stand for that (m from the table's middle).
 constexpr double kOpeningMargin = 0.05;
 constexpr double kOpeningFarthest = 5.5;
+
+/// m along the stick from its tip to the point that tells which way it runs in the picture.
+constexpr double kStrikeSeen = 0.1;
 
 /// The keys of a stroke's beats after the first (which is keyed at the stroke's begin).
 struct Plan {
@@ -199,6 +204,13 @@ class Director {
   bool place_opening(Draft& draft, std::size_t slot, const FilmedStroke& stroke) const;
   /// Shot `shot`'s stroke, over its stretch of the timeline.
   FilmedStroke stroke_of(int shot) const;
+  /// The pocket `stroke` is played at (FilmedStroke::pocket): `pot_pocket`, else from the cue ball's
+  /// `contacts` in its shot.
+  int played_pocket(const FilmedStroke& stroke, int pot_pocket, const std::vector<BallContact>& contacts) const;
+  /// Whether the stroke's view from `pose` shows what the stroke is about: the cue ball, its first object
+  /// ball and, when `with_pocket`, the pocket it is played at, neither of the last two behind the stick
+  /// at address, and the strike: the stick's tip, the stick coming in from below.
+  bool shows_stroke(const FilmedStroke& stroke, const CameraPose& pose, bool with_pocket) const;
   /// The keys of the stroke's beats.
   Plan plan_beats(const FilmedStroke& stroke) const;
   /// Beat 2's key: the contact that first sets `subject` going (or the strike, for the cue ball).
@@ -245,7 +257,26 @@ FilmedStroke Director::stroke_of(int shot) const {
   const std::vector<BallContact> cue_contacts = ball_contacts(timeline_, shot, stroke.cue_ball);
   stroke.first_object = cue_contacts.empty() ? -1 : cue_contacts.front().other(stroke.cue_ball);
   if (stroke.first_object >= 0) stroke.first_object_at = rests(stroke.first_object);
+  stroke.pocket = played_pocket(stroke, cue.aims() ? cue.pot_pocket : -1, cue_contacts);
+  if (stroke.pocket >= 0) stroke.pocket_at = scene_.pockets[static_cast<std::size_t>(stroke.pocket)].center;
   return stroke;
+}
+
+int Director::played_pocket(const FilmedStroke& stroke, int pot_pocket,
+                            const std::vector<BallContact>& contacts) const {
+  int pocket = pot_pocket;
+  // Else where the first object ball drops in this shot, unless a group collision sent it there.
+  const auto grouped = [&](int event) {
+    return std::any_of(timeline_.events().begin(), timeline_.events().end(),
+                       [&](const Event& e) { return e.index == event && e.grouped; });
+  };
+  if (pocket < 0 && !contacts.empty() && !grouped(contacts.front().event))
+    for (const PocketDrop& drop : timeline_.pocket_drops())
+      if (drop.ball == stroke.first_object && timeline_.shot_at(drop.time) == stroke.shot) {
+        pocket = drop.pocket;
+        break;
+      }
+  return pocket >= 0 && pocket < static_cast<int>(scene_.pockets.size()) ? pocket : -1;
 }
 
 Plan Director::plan_beats(const FilmedStroke& stroke) const {
@@ -330,6 +361,27 @@ void Director::film(const FilmedStroke& stroke, Draft& draft) const {
   if (closed) draft.erase(draft.times.size() - 1);
 }
 
+bool Director::shows_stroke(const FilmedStroke& stroke, const CameraPose& pose, bool with_pocket) const {
+  const CameraView view(pose);
+  const std::optional<CueStroke>& stick = judge(stroke).stroke();
+  const std::optional<CuePose> address =
+      stick ? std::optional<CuePose>(stroke_pose(*stick, at_ball(*stick).begin)) : std::nullopt;
+  // In the picture and not behind the stick.
+  const auto shown = [&](const Vec3& p, double margin) {
+    return view.contains(p, margin) && !(address && stick_hides(*address, pose, p, radius_));
+  };
+  if (!view.contains(stroke.cue_at, kPlanMargin)) return false;
+  if (stroke.first_object >= 0 && !shown(stroke.first_object_at, kPlanMargin)) return false;
+  // The strike is seen: the tip in the picture as the balls are, the stick coming into it from below
+  // as a shooter's view shows it (from under a raised stick it would come down over the balls).
+  if (address) {
+    const std::optional<PicturePoint> tip = view.project(address->tip);
+    const std::optional<PicturePoint> back = view.project(address->tip + kStrikeSeen * address->axis);
+    if (!view.contains(address->tip, kPlanMargin) || (back && back->y >= tip->y)) return false;
+  }
+  return !with_pocket || stroke.pocket < 0 || shown(stroke.pocket_at, 0);
+}
+
 void Director::place_stroke(Draft& draft, std::size_t slot, const FilmedStroke& stroke) const {
   std::vector<CameraShot>& shots = draft.camera.shots;
   // Filmed alone (with the descriptions before it) until the next key.
@@ -337,28 +389,31 @@ void Director::place_stroke(Draft& draft, std::size_t slot, const FilmedStroke& 
   const std::vector<LineOfAction> lines(draft.camera.lines.begin(),
                                         draft.camera.lines.begin() + static_cast<std::ptrdiff_t>(slot) + 1);
   std::vector<CameraShot> trial(shots.begin(), shots.begin() + static_cast<std::ptrdiff_t>(slot) + 1);
-  bool placed = false;
+  // The first place that keeps the rules (the stick's share of the picture among them) and shows the
+  // cue ball, its first object ball and the pocket it is played at; else the first that misses only
+  // the pocket; else the default camera.
+  std::optional<CameraShot> chosen, without_pocket;
   for (const CameraShot& option : stroke_places(stroke, radius_, layout_)) {
     trial[slot].mode = option.mode;
     trial[slot].location = option.location;
     trial[slot].target = option.target;
-    const Verdict v = judge(stroke).evaluate(trial, lines, until);
-    CameraPose pose{option.location, option.target, false};
-    const bool frames = stroke.first_object < 0 || CameraView(pose).contains(stroke.first_object_at, kPlanMargin);
-    if (v.ok && frames && CameraView(pose).contains(stroke.cue_at, kPlanMargin)) {
-      shots[slot].mode = option.mode;
-      shots[slot].location = option.location;
-      shots[slot].target = option.target;
-      placed = true;
+    const CameraPose pose{option.location, option.target, false};
+    if (!shows_stroke(stroke, pose, false) || !judge(stroke).evaluate(trial, lines, until).ok) continue;
+    if (shows_stroke(stroke, pose, true)) {
+      chosen = option;
       break;
     }
+    if (!without_pocket) without_pocket = option;
   }
-  if (!placed) {
-    const CameraShot fallback = CameraScript::default_shot(scene_);
-    shots[slot].mode = fallback.mode;
-    shots[slot].location = to_millimetre(fallback.location);
-    shots[slot].target = to_millimetre(fallback.target);
+  if (!chosen) chosen = without_pocket;
+  if (!chosen) {
+    chosen = CameraScript::default_shot(scene_);
+    chosen->location = to_millimetre(chosen->location);
+    chosen->target = to_millimetre(chosen->target);
   }
+  shots[slot].mode = chosen->mode;
+  shots[slot].location = chosen->location;
+  shots[slot].target = chosen->target;
   hold_after(shots, slot);
   std::string& comment = draft.camera.comments[slot];
   comment = "the approach and the stroke from behind and above " + ball_name(scene_, stroke.cue_ball);

@@ -19,6 +19,11 @@ inline constexpr double kCameraCarrySpeed = 2.5;
 /// m the director keeps its camera from every ball's surface (so from the centre: radius + this),
 /// more than the clearance warnings' room for the lens (kCameraBallClearance).
 inline constexpr double kDirectorBallRoom = 0.15;
+/// The most of the picture the stick may cover (stick_picture_share) while it is at the cue ball, from
+/// its address to its follow-through. A shooter's view down a level stick shows it in under 1 %; a
+/// camera low on the line of a stick raised over a cushion looks along it, its butt filling an eighth
+/// of the picture or more.
+inline constexpr double kDirectorStickShare = 0.05;
 /// s, the shortest span of a description (its key to the next one's, or to the end).
 inline constexpr double kMinDescriptionSeconds = 1.0;
 

@@ -35,14 +35,18 @@ std::vector<CameraShot> stroke_places(const FilmedStroke& stroke, double radius,
       stroke.first_object >= 0 ? std::clamp(0.45 * (stroke.first_object_at - c0).norm(), 0.2, 0.7) : 0.4;
   const Vec3 stroke_target = to_millimetre(Vec3(c0.x() + reach * aim.x(), c0.y() + reach * aim.y(), radius));
   std::vector<CameraShot> places;
-  for (double back : {0.8, 1.0, 1.25, 1.6, 2.0})
-    for (double up : {0.45, 0.6, 0.8, 1.0}) {
-      CameraShot s;
-      s.mode = CameraMode::hover;
-      s.location = to_millimetre(c0 - back * aim + Vec3(0, 0, up));
-      s.target = stroke_target;
-      if (clear_of_room(layout, s.location)) places.push_back(s);
-    }
+  // On the line of aim first; then a step to either side of it, over the shooter's shoulder, for a
+  // stick raised over a cushion that a camera on the line would look along (kDirectorStickShare).
+  const Vec3 right(aim.y(), -aim.x(), 0);
+  for (double side : {0.0, 0.3, -0.3})
+    for (double back : {0.8, 1.0, 1.25, 1.6, 2.0})
+      for (double up : {0.45, 0.6, 0.8, 1.0}) {
+        CameraShot s;
+        s.mode = CameraMode::hover;
+        s.location = to_millimetre(c0 - back * aim + side * right + Vec3(0, 0, up));
+        s.target = stroke_target;
+        if (clear_of_room(layout, s.location)) places.push_back(s);
+      }
   return places;
 }
 

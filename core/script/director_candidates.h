@@ -25,11 +25,15 @@ struct FilmedStroke {
   Vec3 aim{1, 0, 0};              ///< unit, horizontal: the line of aim
   int first_object = -1;          ///< the cue ball's first object ball, -1 when it meets none
   Vec3 first_object_at{0, 0, 0};  ///< m, where that ball rests before the stroke
+  /// The pocket the shot is played at (its `pot` line's, else the one its first object ball drops
+  /// into, not counting a break's group collision), -1 for none.
+  int pocket = -1;
+  Vec3 pocket_at{0, 0, 0};  ///< m, that pocket's centre
 };
 
 /// Beat 1, the approach and the stroke: hovers behind and above the cue ball, looking down the line of
-/// aim at a point between it and its first object ball; the nearest and lowest first, those clear of
-/// the room only.
+/// aim at a point between it and its first object ball; the nearest and lowest first, on the line and
+/// then 0.3 m to its right and to its left, those clear of the room only.
 std::vector<CameraShot> stroke_places(const FilmedStroke& stroke, double radius, const TableLayout& layout);
 
 /// Beat 2, the ball that matters (`subject`) on its run, about `middle`: `look`s from high places

@@ -5,6 +5,8 @@
 
 #include "camera_moment.h"
 #include "camera_view.h"
+#include "cue_geometry.h"
+#include "cue_script.h"
 #include "diagnostics.h"
 
 namespace bsim::directing {
@@ -22,6 +24,10 @@ constexpr double kPocketedTarget = 0.9;
 constexpr double kCueTarget = 0.72;
 /// Candidates evaluated at most for one description before the best so far is taken.
 constexpr int kMaxTries = 90;
+
+/// Samples of the grid between two looks at the stick's share of the picture (30 Hz: the practice
+/// strokes take about half a second each).
+constexpr std::size_t kStickEvery = 4;
 
 bool over(const TableRect& r, const Vec3& p) {
   return p.x() >= r.x0 && p.x() <= r.x1 && p.y() >= r.y0 && p.y() <= r.y1;
@@ -106,6 +112,9 @@ Judge::Judge(const Scene& scene, const Timeline& timeline, const ShotSamples& sa
     const bool pocketed = std::isfinite(samples.drop_time[k][static_cast<std::size_t>(b)]);
     if (pocketed || b == struck) watched_.push_back({b, pocketed ? kPocketedTarget : kCueTarget});
   }
+  // The stick at the cue ball as the stick script will play it (raised over a cushion or a ball as far
+  // as it must be), from its address to its follow-through.
+  stroke_ = plan_stroke(scene, timeline, shot);
   const auto watched = [&](int ball) {
     return ball == subject ||
            std::any_of(watched_.begin(), watched_.end(), [&](const Watched& w) { return w.ball == ball; });
@@ -127,6 +136,12 @@ bool Judge::clear(const Vec3& p, std::size_t sample) const {
   for (std::size_t b = 0; b < where.size(); ++b)
     if (shown[b] && (p - where[b]).norm() < radius_ + kDirectorBallRoom + 0.005) return false;
   return true;
+}
+
+bool Judge::stick_blocks(const CameraPose& pose, double t) const {
+  if (!stroke_) return false;
+  const AtBall at = at_ball(*stroke_);
+  return t >= at.begin && t <= at.end && stick_picture_share(stroke_pose(*stroke_, t), pose) > kDirectorStickShare;
 }
 
 std::optional<CameraPose> Judge::pose(const std::vector<CameraShot>& shots, double t) const {
@@ -163,6 +178,7 @@ Verdict Judge::evaluate(const std::vector<CameraShot>& shots, const std::vector<
   for (std::size_t i = first; i < times.size() && times[i] <= limit; ++i) {
     const CameraPose pose = script->pose(times[i]);
     if (!clear(pose.location, i)) return v;
+    if ((i - first) % kStickEvery == 0 && stick_blocks(pose, times[i])) return v;
     if (i > first) fastest = std::max(fastest, (pose.location - previous).norm() / (times[i] - times[i - 1]));
     previous = pose.location;
     for (std::size_t k = 0; k < watched_.size(); ++k) {

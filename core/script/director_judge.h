@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "camera_script.h"
+#include "cue_script.h"
 #include "director.h"
 #include "scene.h"
 #include "table.h"
@@ -59,7 +60,9 @@ inline constexpr double kMinBlendSeconds = 0.3;
 
 /// What a candidate script does over the shot (up to a time limit).
 struct Verdict {
-  bool ok = false;       ///< clear of everything, on the right side of every line of action
+  /// Clear of everything, on the right side of every line of action, the stick at the cue ball covering
+  /// no more than kDirectorStickShare of the picture.
+  bool ok = false;
   bool hurried = false;  ///< a blend within a shot shorter than kMinBlendSeconds (another timing may do)
   double max_speed = std::numeric_limits<double>::infinity();
   double shortfall = std::numeric_limits<double>::infinity();  ///< summed share below the targets
@@ -89,6 +92,9 @@ class Judge {
   /// Films `shots` (the real CameraScript) from the shot's start up to `limit` and judges it; `lines`
   /// are the descriptions' lines of action.
   Verdict evaluate(const std::vector<CameraShot>& shots, const std::vector<LineOfAction>& lines, double limit) const;
+
+  /// The shot's stroke as the stick will play it (CueScript); none when the stick plays none.
+  const std::optional<CueStroke>& stroke() const { return stroke_; }
 
   /// The camera of the script `shots` at t; nullopt when they do not make a script.
   std::optional<CameraPose> pose(const std::vector<CameraShot>& shots, double t) const;
@@ -120,6 +126,8 @@ class Judge {
   std::optional<CameraScript> film(const std::vector<CameraShot>& shots) const;
   /// clear_of_room(), and room around every ball on view at `sample`.
   bool clear(const Vec3& p, std::size_t sample) const;
+  /// Whether at t the stick, at the cue ball, covers more than kDirectorStickShare of `pose`'s picture.
+  bool stick_blocks(const CameraPose& pose, double t) const;
   std::optional<Choice> choose_with(std::vector<CameraShot> shots, const std::vector<LineOfAction>& lines,
                                     std::size_t slot, const std::vector<CameraShot>& candidates,
                                     const std::vector<Timing>& timings, double limit) const;
@@ -131,7 +139,8 @@ class Judge {
   double radius_ = 0;
   double from_ = 0;  ///< s, the shot's start: what comes before it is judged already
   std::vector<Watched> watched_;
-  std::vector<Knock> knocks_;  ///< every one wanted in the picture
+  std::vector<Knock> knocks_;        ///< every one wanted in the picture
+  std::optional<CueStroke> stroke_;  ///< the shot's stroke as the stick plays it; none when it plays none
 };
 
 }  // namespace bsim::directing

@@ -6,6 +6,9 @@
 
 #include "camera_clearance.h"
 #include "camera_view.h"
+#include "cue_geometry.h"
+#include "cue_script.h"
+#include "director.h"
 #include "table.h"
 
 namespace bsim {
@@ -25,6 +28,8 @@ constexpr PocketPlace kPocketPlaces[] = {{0.5, 0.2, 0},  {0.5, 0.2, 30},  {0.5, 
 constexpr double kAcrossDistance = 1.5, kAcrossHeight = 0.6;
 /// s before the winning ball drops that the camera stops turning after it and holds.
 constexpr double kHoldBefore = 0.05;
+/// s between the looks at the stick's share of a candidate's picture.
+constexpr double kStickStep = 1.0 / 30.0;
 
 struct Candidate {
   std::vector<CameraShot> shots;
@@ -146,15 +151,27 @@ double angle_between(const CameraPose& a, const CameraPose& b) {
   return std::acos(std::clamp(u.normalized().dot(v.normalized()), -1.0, 1.0)) / kDegToRad;
 }
 
-/// Whether the candidate makes a script clear of everything over the whole timeline and looks from
-/// elsewhere than `main` at `moment`.
+/// The most of `camera`'s picture the stick covers while at the ball (its address to its follow-through,
+/// the same whatever camera films it) within the replayed stretch [from, to].
+double stick_share(const CameraScript& camera, const std::optional<CueStroke>& stroke, double from, double to) {
+  double most = 0;
+  if (!stroke) return most;
+  const AtBall at = at_ball(*stroke);
+  for (double t = std::max(at.begin, from); t <= std::min(at.end, to); t += kStickStep)
+    most = std::max(most, stick_picture_share(stroke_pose(*stroke, t), camera.pose(t)));
+  return most;
+}
+
+/// Whether the candidate makes a script clear of everything over the whole timeline, looks from
+/// elsewhere than `main` at `moment`, and is not blocked by the stick in the replayed stretch.
 bool acceptable(const Scene& scene, const Timeline& timeline, const CameraScript& main, const Candidate& candidate,
-                double moment) {
+                double moment, const std::optional<CueStroke>& stroke, const ReplayPlan& span) {
   std::vector<Diagnostic> diagnostics;
   const std::optional<CameraScript> script = CameraScript::build(scene, candidate.shots, timeline, diagnostics);
   if (!script || !diagnostics.empty()) return false;
   check_camera_clearance(scene, timeline, *script, diagnostics);
   if (!diagnostics.empty()) return false;
+  if (stick_share(*script, stroke, span.start, span.end) > kDirectorStickShare) return false;
   return angle_between(script->pose(moment), main.pose(moment)) >= kReplayAngleDeg;
 }
 
@@ -181,8 +198,9 @@ ReplayPlan plan_replay(const Scene& scene, const Timeline& timeline, const Camer
   const std::optional<PocketDrop> drop = winning_drop(timeline, subject);
   const double moment = drop ? drop->time : timeline.shots()[static_cast<std::size_t>(subject.shot)].cue;
   if (cue) {
+    const std::optional<CueStroke> stroke = plan_stroke(scene, timeline, subject.shot);
     for (const Candidate& candidate : candidates(scene, timeline, subject, *cue)) {
-      if (!acceptable(scene, timeline, main, candidate, moment)) continue;
+      if (!acceptable(scene, timeline, main, candidate, moment, stroke, plan)) continue;
       plan.camera = candidate.shots;
       plan.what = candidate.what;
       return plan;

@@ -45,11 +45,13 @@ struct ReplayPlan {
 ReplayPlan replay_span(const Timeline& timeline, const ReplaySubject& subject);
 
 /// The replay of `subject`: its span and the second camera. The first candidate that is clear over
-/// the whole timeline (no clearance warning) and looks from at least kReplayAngleDeg away from
-/// `main`'s view wins: a camera low behind the pocket the winning ball drops into, looking back along
-/// its way (the strike in the distance, then the ball coming on and dropping), then the same higher
-/// or turned, then a camera across the line of the shot; the default wide camera when none is.
-/// Deterministic.
+/// the whole timeline (no clearance warning), looks from at least kReplayAngleDeg away from `main`'s
+/// view, and in which the stick at the ball covers no more than kDirectorStickShare of the picture
+/// wins: a camera low behind the pocket the winning ball drops into, looking back along its way (the
+/// strike in the distance, then the ball coming on and dropping), then the same higher or turned,
+/// then a camera across the line of the shot; the default wide camera when none is. Deterministic.
+/// (The stick comes and goes out of the replay's view as well: load_shot plans it against both
+/// cameras, CueScript's AlsoFilmed.)
 ReplayPlan plan_replay(const Scene& scene, const Timeline& timeline, const CameraScript& main,
                        const ReplaySubject& subject);
 

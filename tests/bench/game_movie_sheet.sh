@@ -2,7 +2,7 @@
 # README's contact sheet of a game's movie (scenes/game9.scn), captions and replay included: the movie
 # rendered small and at a few frames a second by billiards-export, then 20 of its frames spread evenly
 # over the game and 4 over the replay, tiled in movie order, each labelled with its movie time.
-# About ten minutes of one core.
+# A minute and a half on two cores.
 #   bash tests/bench/game_movie_sheet.sh [BUILD_BIN [OUTPUT_DIR]]
 #   bash tests/bench/game_movie_sheet.sh build/bin tests/bench
 set -euo pipefail

@@ -14,6 +14,7 @@
 #include "builtin_scene.h"
 #include "camera_clearance.h"
 #include "camera_key_text.h"
+#include "cue_geometry.h"
 #include "director.h"
 #include "files.h"
 #include "number_format.h"
@@ -91,6 +92,7 @@ std::unique_ptr<Shot> directed(const Scene& scene, DirectedCamera* script = null
   std::vector<Diagnostic> diagnostics;
   shot->camera = CameraScript::build(shot->scene, shot->timeline, diagnostics);
   REQUIRE(shot->camera);
+  shot->cue.emplace(shot->scene, shot->timeline, *shot->camera);
   check_camera_clearance(shot->scene, shot->timeline, *shot->camera, diagnostics);
   for (const Diagnostic& d : diagnostics) CHECK_MESSAGE(false, format_diagnostic(d, shot->scene.name));
   return shot;
@@ -237,6 +239,21 @@ void check_watched(const Shot& shot) {
   }
 }
 
+/// While the stick is at the cue ball (from its address to its follow-through), it covers no more than
+/// kDirectorStickShare of the picture, as drawn (CueScript::pose) and filmed (CameraScript::pose).
+void check_stick_share(const Shot& shot) {
+  REQUIRE(shot.cue);
+  for (const CueStroke& stroke : shot.cue->strokes()) {
+    const AtBall at = at_ball(stroke);
+    double most = 0;
+    for (double t = at.begin; t <= at.end; t += 1.0 / kPictureHz)
+      most = std::max(most, stick_picture_share(shot.cue->pose(t), shot.camera->pose(t)));
+    CAPTURE(stroke.shot);
+    // The director looks at 30 Hz: a little more may fall between its looks.
+    CHECK(most <= kDirectorStickShare + 0.005);
+  }
+}
+
 /// Every check of the director's script for one shot.
 void check_shot(const std::string& name, const Scene& scene) {
   CAPTURE(name);
@@ -244,6 +261,7 @@ void check_shot(const std::string& name, const Scene& scene) {
   const std::unique_ptr<Shot> shot = directed(scene, &script);
   check_descriptions(script, shot->timeline, *shot->camera);
   check_path(*shot);
+  check_stick_share(*shot);
   check_watched(*shot);
 }
 
