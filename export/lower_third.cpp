@@ -1,6 +1,7 @@
 #include "lower_third.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -31,14 +32,20 @@ namespace bsim {
 namespace {
 
 /// Bumped whenever the drawing changes what it makes of the same caption.
-constexpr const char* kLowerThirdVersion = "lower third 1";
+constexpr const char* kLowerThirdVersion = "lower third 2";
 
 /// The layout, in pixels of a 720-line picture (scaled with the height).
 constexpr double kReferenceHeight = 720.0;
 constexpr double kMarginX = 64, kMarginBottom = 40;  // inside the title-safe area
-constexpr double kPanelMinWidth = 400, kPad = 14;
+/// The panel's width: the least, about a quarter of a 16:9 picture (at 640x360, where everything is
+/// drawn larger, 37 %), so that a ball in the middle of the picture (a shooter's view puts the cue ball
+/// there, low) is clear of the panel in either corner.
+constexpr double kPanelMinWidth = 340, kPad = 14;
 constexpr double kNameRow = 34, kNameSize = 22, kSmallSize = 14, kAccentBar = 6;
 constexpr double kBallRow = 38, kDisc = 24, kDiscStep = 30;
+/// A rack of more than kFullRack balls (8-ball's 15) is drawn in smaller discs, closer together.
+constexpr int kFullRack = 10;
+constexpr double kSmallDisc = 18, kSmallDiscStep = 21;
 constexpr double kStrip = 30, kStripLine = 22, kCallSize = 18, kTagPad = 10, kGap = 5;
 constexpr int kMostCallLines = 2;
 
@@ -86,6 +93,11 @@ const Fonts& fonts() {
 }
 
 int round_px(double v) { return static_cast<int>(std::floor(v + 0.5)); }
+
+/// The rack's row: each disc's diameter and the step from one to the next, in layout pixels.
+std::pair<double, double> disc_layout(std::size_t rack_size) {
+  return rack_size > kFullRack ? std::pair{kSmallDisc, kSmallDiscStep} : std::pair{kDisc, kDiscStep};
+}
 
 /// Pixels of the picture to one of the layout's: the height over 720, and up to 1.4 times that for
 /// pictures of 360 lines or fewer, whose text would be too small to read at the same share.
@@ -207,9 +219,22 @@ void draw_disc(Canvas& canvas, double cx, double cy, double r, Paint paint) {
 
 Rgb rgb(SrgbColor c) { return {c.r, c.g, c.b}; }
 
+/// `text` cut short with an ellipsis, a whole character at a time, to at most `width` pixels.
+std::string fitted(const Face& face, double size, std::string text, double width) {
+  if (text_width(face, size, text) <= width) return text;
+  const std::string ellipsis = "\xE2\x80\xA6";
+  while (!text.empty() && text_width(face, size, text + ellipsis) > width) {
+    std::size_t end = text.size() - 1;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;  // a UTF-8 lead byte
+    text.erase(end);
+    while (text.ends_with(" ")) text.pop_back();
+  }
+  return text + ellipsis;
+}
+
 /// One ball of the rack's row: in its colours with its number when it is on the table, else a faint ring.
-void draw_ball(Canvas& canvas, const Fonts& f, double s, double cx, double cy, int number, bool up) {
-  const double r = 0.5 * kDisc * s, ring = std::max(1.0, 1.5 * s);
+void draw_ball(Canvas& canvas, const Fonts& f, double disc, double s, double cx, double cy, int number, bool up) {
+  const double r = 0.5 * disc * s, ring = std::max(1.0, 1.5 * s);
   if (!up) {
     draw_disc(canvas, cx, cy, r, [&](double dx, double dy, int& alpha) {
       alpha = dx * dx + dy * dy >= (r - ring) * (r - ring) ? 110 : 0;
@@ -247,26 +272,28 @@ void draw_panel(Canvas& canvas, const Fonts& f, const Caption& c, double s, doub
     }
     const Face& face = up ? f.bold : f.regular;
     const std::string name = p < static_cast<int>(c.players.size()) ? c.players[static_cast<std::size_t>(p)] : "";
-    draw_text(canvas, face, kNameSize * s, x0 + pad + kAccentBar * s, centred_baseline(face, kNameSize * s, middle),
-              name, up ? kWhite : kDim);
     const double w = text_width(f.bold, kSmallSize * s, corner[p]);
+    const double name_x = x0 + pad + kAccentBar * s;
+    draw_text(canvas, face, kNameSize * s, name_x, centred_baseline(face, kNameSize * s, middle),
+              fitted(face, kNameSize * s, name, x1 - pad - w - kTagPad * s - name_x), up ? kWhite : kDim);
     draw_text(canvas, f.bold, kSmallSize * s, x1 - pad - w, centred_baseline(f.bold, kSmallSize * s, middle), corner[p],
               kSmallText);
   }
   const double rule = top + 2 * kNameRow * s;
   canvas.fill(x0 + pad, rule, x1 - pad, rule + std::max(1.0, s), kSmallText, 80);
   const double cy = rule + 0.5 * kBallRow * s;
+  const auto [disc, step] = disc_layout(c.rack.size());
   for (std::size_t i = 0; i < c.rack.size(); ++i) {
     const int number = c.rack[i];
     const bool up = std::find(c.on_table.begin(), c.on_table.end(), number) != c.on_table.end();
-    draw_ball(canvas, f, s, x0 + pad + (static_cast<double>(i) + 0.5) * kDiscStep * s, cy, number, up);
+    draw_ball(canvas, f, disc, s, x0 + pad + (static_cast<double>(i) + 0.5) * step * s, cy, number, up);
   }
 }
 
-/// `text` in lines of at most `width` pixels, at most kMostCallLines (the last cut short with an
+/// `text` in lines of at most `width` pixels, at most `most` (the last cut short with an
 /// ellipsis when more is left). Lines break between the parts of a call (joined by " · ") where they
 /// can, else between words.
-std::vector<std::string> wrapped(const Face& face, double size, const std::string& text, double width) {
+std::vector<std::string> wrapped(const Face& face, double size, const std::string& text, double width, int most) {
   const std::string dot = " \xC2\xB7 ";
   std::vector<std::string> pieces;  // each part but the last keeps its dot, so a line can end in one
   for (std::size_t at = 0; at <= text.size();) {
@@ -284,7 +311,7 @@ std::vector<std::string> wrapped(const Face& face, double size, const std::strin
       lines.back() += piece;
       continue;
     }
-    if (!lines.back().empty() && fits(trimmed(piece)) && static_cast<int>(lines.size()) < kMostCallLines) {
+    if (!lines.back().empty() && fits(trimmed(piece)) && static_cast<int>(lines.size()) < most) {
       lines.push_back(piece);  // a part that fits a line of its own starts one
       continue;
     }
@@ -294,7 +321,7 @@ std::vector<std::string> wrapped(const Face& face, double size, const std::strin
       end = end == std::string::npos ? piece.size() : end + 1;
       const std::string word = piece.substr(at, end - at);
       if (!lines.back().empty() && !fits(trimmed(lines.back() + word))) {
-        if (static_cast<int>(lines.size()) == kMostCallLines) {
+        if (static_cast<int>(lines.size()) >= most) {
           lines.back() = trimmed(lines.back()) + "\xE2\x80\xA6";  // an ellipsis: more than the lines hold
           return lines;
         }
@@ -322,13 +349,15 @@ Rgb tag_color(CaptionCall::Kind kind) {
 }
 
 /// A call's strip with its bottom at `bottom`: its coloured tag and its words. Returns its top.
-double draw_call(Canvas& canvas, const Fonts& f, const CaptionCall& call, double s, double x0, double x1,
-                 double bottom) {
+double draw_call(Canvas& canvas, const Fonts& f, const CaptionCall& call, double s, double x0, double x1, double bottom,
+                 double ceiling) {
   const double size = kCallSize * s, pad = kTagPad * s;
   const double tag = text_width(f.bold, size, call.title) + 2 * pad;
-  const std::vector<std::string> lines = wrapped(f.regular, size, call.text, x1 - x0 - tag - 2 * pad);
+  if (bottom - kStrip * s < ceiling) return bottom;  // no room for even one line
+  const int room = 1 + static_cast<int>(std::floor((bottom - kStrip * s - ceiling) / (kStripLine * s)));
+  const std::vector<std::string> lines =
+      wrapped(f.regular, size, call.text, x1 - x0 - tag - 2 * pad, std::min(kMostCallLines, room));
   const double top = bottom - (kStrip + (static_cast<double>(lines.size()) - 1) * kStripLine) * s;
-  if (top < 0.5 * canvas.height()) return bottom;  // never in the upper half
   canvas.fill(x0, top, x1, bottom, kPanel, kPanelAlpha);
   const Rgb color = tag_color(call.kind);
   canvas.fill(x0, top, x0 + tag, bottom, color, 255);
@@ -345,7 +374,8 @@ double draw_call(Canvas& canvas, const Fonts& f, const CaptionCall& call, double
 
 CaptionBox lower_third_column(int rack_size, int width, int height, bool right) {
   const double s = layout_scale(height);
-  const double panel = s * std::max(kPanelMinWidth, 2 * kPad + rack_size * kDiscStep);
+  const double step = disc_layout(static_cast<std::size_t>(std::max(rack_size, 0))).second;
+  const double panel = s * std::max(kPanelMinWidth, 2 * kPad + rack_size * step);
   const double x0 = right ? width - s * kMarginX - panel : s * kMarginX;
   return {round_px(x0), height / 2, round_px(x0 + panel), height};
 }
@@ -376,8 +406,10 @@ bool draw_lower_third(std::vector<std::uint8_t>& srgb, int width, int height, co
   const double top = height - (kMarginBottom + 2 * kNameRow + kBallRow) * s;
   draw_panel(canvas, f, c, s, x0, x1, top);
   double bottom = top - kGap * s;
+  // Never in the upper half, and a replay's tag always above the calls (they are cut short for it).
+  const double ceiling = 0.5 * height + (c.replay ? (kStrip + kGap) * s : 0.0);
   for (auto call = c.calls.rbegin(); call != c.calls.rend(); ++call)
-    bottom = draw_call(canvas, f, *call, s, x0, x1, bottom) - kGap * s;
+    bottom = draw_call(canvas, f, *call, s, x0, x1, bottom, ceiling) - kGap * s;
   if (c.replay) {
     const double size = kCallSize * s, w = text_width(f.bold, size, "REPLAY") + 2 * kTagPad * s;
     const double left = frame.right ? x1 - w : x0, up = bottom - kStrip * s;

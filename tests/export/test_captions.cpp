@@ -99,6 +99,63 @@ TEST_SUITE("captions") {
     }
   }
 
+  TEST_CASE("the panel leaves the middle of the picture clear, and a long name is cut short inside it") {
+    std::string error;
+    REQUIRE_MESSAGE(lower_third_fonts(error), error);
+    for (const std::pair<int, int>& size : {std::pair{1280, 720}, std::pair{640, 360}}) {
+      const int width = size.first, height = size.second;
+      CAPTURE(width);
+      // A shooter's view puts the cue ball low in the middle: clear of the panel in either corner, for
+      // 9-ball's rack and 8-ball's.
+      for (const int rack : {9, 15}) {
+        CAPTURE(rack);
+        CHECK(lower_third_column(rack, width, height, false).x1 < 0.46 * width);
+        CHECK(lower_third_column(rack, width, height, true).x0 > 0.54 * width);
+      }
+      const HdrImage image = ramp(width, height);
+      const std::vector<std::uint8_t> plain = developed(image, nullptr);
+      FrameCaption caption = full_caption(false);
+      caption.caption.players = {"Bartholomew Montgomery-Featherstonehaugh", "Bo"};
+      caption.caption.at_table = 0;
+      const std::vector<std::uint8_t> captioned = developed(image, &caption);
+      const CaptionBox column = lower_third_column(15, width, height, false);
+      for (int y = height / 2; y < height; ++y)
+        for (int x = column.x1; x < width; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x) + c;
+            if (plain[i] != captioned[i]) FAIL_CHECK("the name runs out of the panel at " << x << ", " << y);
+          }
+    }
+  }
+
+  TEST_CASE("a replay's tag is always shown: the calls below it are cut short to leave it room") {
+    std::string error;
+    REQUIRE_MESSAGE(lower_third_fonts(error), error);
+    // The runs of the tags' red down the column's left edge: the FOUL tag's, and the REPLAY tag's above.
+    const auto red_runs = [](const std::vector<std::uint8_t>& picture, int width, int height, int x) {
+      int runs = 0;
+      bool in_run = false;
+      for (int y = height / 2; y < height; ++y) {
+        const std::uint8_t* p = picture.data() + 3 * (static_cast<std::size_t>(y) * width + x);
+        const bool red = p[0] == 204 && p[1] == 26 && p[2] == 34;
+        runs += red && !in_run;
+        in_run = red;
+      }
+      return runs;
+    };
+    for (const std::pair<int, int>& size : {std::pair{1280, 720}, std::pair{640, 360}, std::pair{320, 180}}) {
+      const int width = size.first, height = size.second;
+      CAPTURE(width);
+      const HdrImage image = ramp(width, height);
+      FrameCaption live = full_caption(false);
+      live.caption.replay = false;
+      const FrameCaption replay = full_caption(false);
+      const int x = lower_third_column(15, width, height, false).x0 + 2;
+      CHECK(red_runs(developed(image, &live), width, height, x) == 1);    // the foul
+      CHECK(red_runs(developed(image, &replay), width, height, x) == 2);  // the foul and the replay
+    }
+  }
+
   TEST_CASE("golden: a captioned frame from the develop stage") {
     const HdrImage image = ramp(640, 360);
     const FrameCaption caption = full_caption();
