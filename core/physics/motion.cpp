@@ -12,10 +12,7 @@ using motion_detail::slip_direction;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 const Vec3 kUp(0, 0, 1);
-
-
 
 Quat rotation(const Vec3& axis_angle) {
   const double angle = axis_angle.norm();
@@ -38,7 +35,6 @@ Vec3 spin_at(const BallState& s, const PhysicsParams& params, double dt) {
 }
 
 }  // namespace
-
 
 BallState after_transition(const BallState& s, const PhysicsParams& params) {
   BallState out = evolve(s, params, transition_time(s, params));

@@ -61,7 +61,9 @@ std::vector<PicturePoint> convex_hull(std::vector<PicturePoint> points) {
 /// `polygon` clipped to the picture (-1..1 both ways; Sutherland and Hodgman's clipping).
 std::vector<PicturePoint> clip_to_picture(std::vector<PicturePoint> polygon) {
   // Each edge of the picture as the coordinate it bounds (0: x, 1: y) and its side (+1: at most 1, -1: at least -1).
-  for (const auto& [axis, sign] : {std::pair{0, 1.0}, std::pair{0, -1.0}, std::pair{1, 1.0}, std::pair{1, -1.0}}) {
+  for (const auto& edge : {std::pair{0, 1.0}, std::pair{0, -1.0}, std::pair{1, 1.0}, std::pair{1, -1.0}}) {
+    const int axis = edge.first;  // lambdas capture variables, not structured bindings
+    const double sign = edge.second;
     const auto inside = [&](const PicturePoint& p) { return sign * (axis == 0 ? p.x : p.y) <= 1.0; };
     const auto cross = [&](const PicturePoint& a, const PicturePoint& b) {
       const double va = axis == 0 ? a.x : a.y, vb = axis == 0 ? b.x : b.y;
