@@ -47,7 +47,7 @@ void side_by_side(const char* name, const bsim::Scene& scene, const fastfiz_side
   const std::function<std::size_t()> ours = [&] { return bsim::simulate_events(scene).events.size(); };
   const std::function<std::size_t()> theirs = [&] { return fastfiz_side::shoot(ff); };
   std::vector<double> a, b;
-  for (int k = 0; k < 3; ++k) ours(), theirs();  // warm the caches
+  for (int k = 0; k < 3; ++k) ours(), theirs();   // warm the caches
   for (int block = 0; block < blocks; ++block) {  // ours, FastFiz's; FastFiz's, ours; ...
     const bool first = block % 2 == 0;
     time_block(first ? ours : theirs, first ? shots * ours_each : shots, first ? a : b);
