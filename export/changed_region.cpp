@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
 
 #include "pocket_fall.h"
+#include "pov_table.h"
 #include "scene.h"
 #include "table.h"
 
@@ -319,7 +321,84 @@ std::vector<RegionScene::Mirror> shade_faces(const TableLayout& layout) {
   return faces;
 }
 
+/// A sphere round the hull (round its box's middle).
+BoundSphere enclosing(const Hull& hull) {
+  Vec3 lo = hull.front().centre, hi = lo;
+  for (const BoundSphere& s : hull) lo = lo.cwiseMin(s.centre), hi = hi.cwiseMax(s.centre);
+  const Vec3 middle = 0.5 * (lo + hi);
+  double radius = 0;
+  for (const BoundSphere& s : hull) radius = std::max(radius, (s.centre - middle).norm() + s.radius);
+  return {middle, radius};
+}
+
+/// How many mirrors in a row POV-Ray follows a ray through: the include's max_trace_level less the ray
+/// from the eye (kMostReflections when it does not say).
+int reflections_traced() {
+  const std::string_view models = pov_models_text();
+  const std::string_view key = "max_trace_level";
+  const std::size_t at = models.find(key);
+  if (at == std::string_view::npos) return kMostReflections;
+  int level = 0;
+  for (std::size_t i = at + key.size(); i < models.size() && (models[i] == ' ' || std::isdigit(static_cast<unsigned char>(models[i]))); ++i)
+    if (models[i] != ' ') level = 10 * level + (models[i] - '0');
+  return level > 0 ? level - 1 : kMostReflections;
+}
+
+/// What the clear coat of each ball that stays as it was can show of the change: for every hull that
+/// changed (and, when rays are followed through two mirrors or more, for every other ball and for the
+/// lamp shade when a changed hull reaches up to it: a ray from a ball below the shade's rim turns up
+/// off its faces, so it meets only what lies above the rim), the patch of the ball where a ray from
+/// the eye can turn towards it. A ball reaching up to the shade counts whole.
+void add_mirror_patches(const FrameContent& reference, const FrameContent& frame, const RegionScene& scene,
+                        std::vector<Hull>& hulls) {
+  std::vector<BoundSphere> targets;
+  bool reaches_shade = false;
+  for (const Hull& hull : hulls) {
+    targets.push_back(enclosing(hull));
+    for (const BoundSphere& s : hull) reaches_shade = reaches_shade || s.centre.z() + s.radius >= scene.shade_min.z();
+  }
+  std::vector<BoundSphere> still;  // the balls that stay as they were
+  for (std::size_t i = 0; i < frame.parts.size(); ++i)
+    if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
+      for (const BoundCapsule& c : frame.parts[i].seen) still.push_back(enclosing({c.a, c.b}));
+  const std::size_t changed = targets.size();
+  if (scene.reflections >= 2) {
+    targets.insert(targets.end(), still.begin(), still.end());
+    if (reaches_shade) targets.push_back(enclosing(box_hull(scene.shade_min, scene.shade_max)));
+  }
+  const Vec3& eye = frame.camera_pose.location;
+  for (std::size_t b = 0; b < still.size(); ++b) {
+    const BoundSphere& ball = still[b];
+    if (ball.centre.z() + ball.radius >= scene.shade_min.z()) {
+      hulls.push_back({ball});
+      continue;
+    }
+    for (std::size_t t = 0; t < targets.size(); ++t)
+      if (t != changed + b) hulls.push_back({mirror_patch(ball, eye, targets[t])});
+  }
+}
+
 }  // namespace
+
+BoundSphere mirror_patch(const BoundSphere& ball, const Vec3& eye, const BoundSphere& target) {
+  const BoundSphere& whole = ball;
+  const Vec3 to_eye = eye - ball.centre, to_target = target.centre - ball.centre;
+  const double eye_distance = to_eye.norm(), target_distance = to_target.norm();
+  if (eye_distance <= ball.radius || target_distance <= ball.radius + target.radius) return whole;
+  // The ways from a point of the ball to the eye and to a point of the target, each within a cone
+  // round the way from the centre; as unit vectors, within these chords of the axes.
+  const double to_eye_cone = std::asin(ball.radius / eye_distance);
+  const double to_target_cone = std::asin((ball.radius + target.radius) / target_distance);
+  const double chords = 2 * std::sin(to_eye_cone / 2) + 2 * std::sin(to_target_cone / 2);
+  // The normal is along the sum of the two unit vectors, which lies within `chords` of the axes' sum.
+  const Vec3 axes = to_eye / eye_distance + to_target / target_distance;
+  const double sine = chords / axes.norm();  // of the cone's half-angle round the axes' sum
+  if (ball.radius * sine + kBoundSlack >= ball.radius) return whole;
+  const double cosine = std::sqrt(1 - sine * sine);
+  // The cap of the bound's sphere within that cone lies in this sphere; the ball's own surface lies
+  // within kBoundSlack inside the bound's (and its patch within kBoundSlack of the bound's cap).
+  return {ball.centre + ball.radius * cosine * axes.normalized(), ball.radius * sine + kBoundSlack};
+}
 
 RegionScene region_scene(const Scene& scene) {
   const TableLayout layout = table_layout(scene);
@@ -364,6 +443,7 @@ RegionScene region_scene(const Scene& scene) {
                 (layout.wood_outer.y1 + kRoom.margin) - r.light_y1}) -
       kWallDepth;
   r.lamp_lights_room = to_wall <= reach;
+  r.reflections = reflections_traced();
   return r;
 }
 
@@ -399,21 +479,25 @@ std::optional<std::vector<PixelRect>> changed_region(const FrameContent& referen
       return std::nullopt;
   }
   if (!changed) return std::vector<PixelRect>{};
-  // Mirrors: every ball that stays as it was may show the change in its clear coat.
+  // The lamp shade's lacquer may show what changed and any ball (what the balls show of it included).
+  std::vector<Hull> shade_shows = hulls;
   for (std::size_t i = 0; i < frame.parts.size(); ++i)
     if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
-      for (const BoundCapsule& c : frame.parts[i].seen) hulls.push_back({c.a, c.b});
+      for (const BoundCapsule& c : frame.parts[i].seen) shade_shows.push_back({c.a, c.b});
+  // Each ball that stays as it was may show it in its clear coat, in a patch of its own.
+  add_mirror_patches(reference, frame, scene, hulls);
 
   const PixelProjection projection(frame.camera_pose, width, height);
   std::vector<PixelRect> rects;
   for (const Hull& hull : hulls) {
     rects.push_back(projection.bound(hull));
   }
-  add_shade_mirror(frame.camera_pose.location, hulls, scene, projection, rects);
+  add_shade_mirror(frame.camera_pose.location, shade_shows, scene, projection, rects);
   rects = merge_regions(std::move(rects));
   long cost = 0;
   for (const PixelRect& r : rects) cost += r.area() + kRegionStartPixels;
-  if (static_cast<double>(cost) >= kWholeShare * width * height) return std::nullopt;
+  if (static_cast<double>(cost) >= kWholeShare * (static_cast<double>(width) * height + kRegionStartPixels))
+    return std::nullopt;
   return rects;
 }
 

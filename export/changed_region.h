@@ -19,8 +19,12 @@
 //   casts no further than the lamp's cone reaches (its cone is taken from the light's centre): so
 //   the stick's butt swinging down through the light's plane beside the lamp is bounded too. The
 //   other lights cast no shadow;
-// - reflections: a ball's clear coat mirrors what is round it, so every ball's own hull (all that
-//   its mirror image can show lies on its sphere); the lamp shade's lacquered outer faces are plane
+// - reflections: a ball's clear coat mirrors what is round it, but a sphere shows a point X only
+//   where its normal bisects the directions to the eye and to X: each ball that stays as it was adds
+//   the patch of its sphere where its normal lies between the way to the eye and the way to what
+//   changed (mirror_patch), for each hull of what changed, and, when POV-Ray follows a reflection of
+//   a reflection (max_trace_level), for every other ball (which may show the change) and for the
+//   lamp shade when what changed reaches up to it. The lamp shade's lacquered outer faces are plane
 //   mirrors, seen only from above its rim: what changed (and every ball) mirrored in each face the
 //   camera sees, within the shade's picture. Nothing else in the models reflects.
 // Each capsule of a bound is cut into pieces of at most kPieceLength, so that a long one (the stick
@@ -45,11 +49,12 @@ inline constexpr int kRegionGrid = 8;
 /// Pixels every projected bound is grown by before it is snapped to the grid: antialiasing samples a
 /// pixel's corners, and the files' numbers are rounded.
 inline constexpr int kRegionMarginPixels = 2;
-/// Pixels a separate partial render is reckoned to cost for its start-up (POV-Ray's parse and set-up,
-/// about 0.05 s of CPU, as 4096 pixels of the table in a final frame): two regions closer than that
-/// are rendered as one.
-inline constexpr long kRegionStartPixels = 4096;
-/// A frame whose region would cost more than this share of the whole picture is rendered whole.
+/// Pixels a separate partial render is reckoned to cost for its start-up (POV-Ray's start, parse and
+/// set-up: 0.05 s of CPU on a quiet machine, 0.1 to 0.2 s on a busy one, where the pixels of a final
+/// frame's table cost 5 to 15 us each): two regions closer than that are rendered as one.
+inline constexpr long kRegionStartPixels = 8192;
+/// A frame whose region would cost more than this share of the whole picture (its pixels and its own
+/// start) is rendered whole.
 inline constexpr double kWholeShare = 0.85;
 /// m, the longest piece of a bound's capsule projected on its own (the stick is cut into about 30).
 inline constexpr double kPieceLength = 0.05;
@@ -57,6 +62,10 @@ inline constexpr double kPieceLength = 0.05;
 inline constexpr int kMostPieces = 64;
 /// m out from the walls that what hangs on them (the cue rack, the pictures, the sconces) may reach.
 inline constexpr double kWallDepth = 0.3;
+
+/// Mirrors in a row a ray may meet when the include does not say (POV-Ray's default max_trace_level, 5,
+/// less the ray from the eye).
+inline constexpr int kMostReflections = 4;
 
 /// Columns x0 to x1 - 1 and rows y0 to y1 - 1 of the picture (from its top-left corner).
 struct PixelRect {
@@ -91,6 +100,9 @@ struct RegionScene {
   /// Whether the lamp lights anything beyond the table's frame below the cloth (the walls within its
   /// cone): then a shadow that leaves the frame is followed down to the room's floor.
   bool lamp_lights_room = true;
+  /// How many mirrors in a row a ray may meet (POV-Ray's max_trace_level, less the ray from the eye):
+  /// from 2, a ball may show another ball's (or the shade's) image of a change.
+  int reflections = kMostReflections;
 };
 
 RegionScene region_scene(const Scene& scene);
@@ -101,6 +113,15 @@ RegionScene region_scene(const Scene& scene);
 /// behind the camera or above the lamp's light, or the rectangles would cost nearly the whole picture.
 std::optional<std::vector<PixelRect>> changed_region(const FrameContent& reference, const FrameContent& frame,
                                                      const RegionScene& scene, int width, int height);
+
+/// The part of mirroring ball `ball` (a ball's bound: its sphere grown by kBoundSlack) in which a ray
+/// from `eye` can be reflected towards a point of `target`: by the law of reflection the normal there
+/// is the bisector of the ways to the eye and to that point, each within a cone round the way from
+/// the ball's centre (half-angles asin(r / distance to the eye), asin((r + target's radius) / its
+/// distance)), so the normal lies within a cone round the bisector of the two axes; the sphere round
+/// that cap of the ball. The whole ball when the cones allow any normal (`target` behind the ball,
+/// nearly in line with the eye, or touching it).
+BoundSphere mirror_patch(const BoundSphere& ball, const Vec3& eye, const BoundSphere& target);
 
 /// Merges rectangles while one rectangle round two costs less than the two (a rectangle costing its
 /// pixels and kRegionStartPixels), and drops any that another holds.

@@ -334,10 +334,6 @@ std::string frame_name(int frame) {
 
 namespace {
 
-/// m, added to every bound's radius: the files' numbers are rounded to a micrometre, and the models'
-/// parts reach a hair past their nominal ends (the stick's tip 0.5 mm behind its face).
-constexpr double kBoundSlack = 0.002;
-
 /// The stick at `cue`, from `front` to `back` m along its axis from the tip (its butt kCueLength
 /// further), as a capsule that holds it.
 BoundCapsule stick_bound(const CuePose& cue, double front, double back) {

@@ -60,6 +60,10 @@ struct StickTravel {
 /// speed (within 3 %) joined into one.
 std::vector<StickTravel> stick_travel(const std::vector<double>& along);
 
+/// m, added to every bound's radius: the files' numbers are rounded to a micrometre, and the models'
+/// parts reach a hair past their nominal ends (the stick's tip 0.5 mm behind its face).
+inline constexpr double kBoundSlack = 0.002;
+
 /// A sphere (m) in a bound: a convex set holds what it bounds when it holds every sphere of the bound.
 struct BoundSphere {
   Vec3 centre{0, 0, 0};

@@ -11,7 +11,11 @@
 // --size says otherwise), every frame rendered with --jobs 2 twice, side by side: tracing every pixel
 // (--whole-frames) and tracing only what changed (changed_region.h). It prints POV-Ray's CPU seconds
 // (the children's user and system time) and the wall time of each, the share of the pixels traced,
-// and checks that the two made the same pictures.
+// and checks that the two made the same pictures. --plan prints only the plan's line (the frames
+// traced in part, the share of the pixels traced and the POV-Ray runs) and renders nothing.
+// --alone [--every K]: each frame (or every K-th, a quicker estimate) traced whole and, when it is
+// traced in part, each of its rectangles, one POV-Ray at a time, so the two ways see the same load on
+// a shared machine; each rectangle is checked against the whole frame's pixels (linear light).
 // --scene FILE: any of the above on that scene instead of the built-in break (e.g. --reuse --scene
 // scenes/runout.scn --fps 5: a run of shots, a minute of movie).
 #include <sys/resource.h>
@@ -31,6 +35,7 @@
 
 #include "builtin_scene.h"
 #include "child_process.h"
+#include "develop.h"
 #include "export_options.h"
 #include "ffmpeg_assemble.h"
 #include "frame_cache.h"
@@ -132,9 +137,72 @@ std::map<std::string, std::string> pictures(const std::string& frames_dir) {
   return read;
 }
 
+/// s of POV-Ray's CPU for one run of it on `job` (`part` -1: the whole frame, else that rectangle),
+/// alone; its linear picture in `picture`.
+double trace_alone(const std::string& frames_dir, const bsim::RenderSettings& settings, const bsim::FrameJob& job,
+                   int part, bsim::HdrImage& picture) {
+  std::string error;
+  const std::vector<std::string> args = bsim::povray_arguments(settings, job, part);
+  const double cpu = children_cpu();
+  const pid_t pid = bsim::start_process(args, frames_dir, frames_dir + "/.sample.log", error);
+  const std::string hdr = frames_dir + "/" + args[5].substr(2);  // +O...
+  if (pid < 0 || !bsim::wait_for(pid) || !bsim::read_hdr(hdr, picture, error)) {
+    std::fprintf(stderr, "render_bench: frame %d, part %d: POV-Ray failed %s\n", job.frame, part, error.c_str());
+    std::exit(1);
+  }
+  fs::remove(hdr);
+  return children_cpu() - cpu;
+}
+
+/// --alone [--every K]: every K-th frame POV-Ray renders, traced whole and, when it is traced in part,
+/// each of its rectangles, one POV-Ray at a time: the CPU of each way for those frames, and each
+/// rectangle's pixels against the whole frame's (linear light, before developing).
+int sampled_reuse(const std::vector<bsim::FrameJob>& reusing, int every, const std::string& frames_dir,
+                  const bsim::RenderSettings& settings) {
+  double whole_cpu = 0, reuse_cpu = 0, partial_whole_cpu = 0, partial_cpu = 0;
+  int sampled = 0, partial = 0, runs = 0;
+  long differ = 0;
+  for (std::size_t k = 0; k < reusing.size(); k += static_cast<std::size_t>(every)) {
+    const bsim::FrameJob& job = reusing[k];
+    bsim::HdrImage whole, part_picture;
+    const double cpu = trace_alone(frames_dir, settings, {job.frame, job.key, -1, {}}, -1, whole);
+    ++sampled;
+    whole_cpu += cpu;
+    if (job.reference < 0) {
+      reuse_cpu += cpu;
+      ++runs;
+      continue;
+    }
+    ++partial;
+    partial_whole_cpu += cpu;
+    for (std::size_t part = 0; part < job.rects.size(); ++part, ++runs) {
+      const double part_cpu = trace_alone(frames_dir, settings, job, static_cast<int>(part), part_picture);
+      reuse_cpu += part_cpu, partial_cpu += part_cpu;
+      const bsim::PixelRect& r = job.rects[part];
+      std::fprintf(stderr, "frame %d rectangle %zu: %ld pixels, %.3f s (whole %.3f s)\n", job.frame, part, r.area(),
+                   part_cpu, cpu);
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const std::size_t i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(whole.width) +
+                                       static_cast<std::size_t>(x)) +
+                                  static_cast<std::size_t>(c);
+            differ += whole.rgb[i] != part_picture.rgb[i];
+          }
+    }
+  }
+  std::printf("%d frames (every %d), %d of them traced in part, in %d POV-Ray runs in all, one POV-Ray at a time:\n",
+              sampled, every, partial, runs);
+  std::printf("  POV-Ray CPU: whole %.1f s, reusing %.1f s: %.0f%%; the partial frames alone %.1f s against %.1f s: %.0f%%\n",
+              whole_cpu, reuse_cpu, 100 * reuse_cpu / whole_cpu, partial_cpu, partial_whole_cpu,
+              100 * partial_cpu / partial_whole_cpu);
+  std::printf("  %ld values of the rectangles differ from the whole frames'\n", differ);
+  return differ == 0 ? 0 : 1;
+}
+
 /// --reuse: the movie's frames rendered whole and reusing what did not change, side by side.
 int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, const std::string& frames_dir,
-                const std::string& povray, const std::string& name) {
+                const std::string& povray, const std::string& name, bool plan_only, int alone_every) {
   const int frames = bsim::frame_count(shot.timeline.duration(), options.fps);
   // Frames alike are rendered once, as in a run.
   const std::vector<std::uint64_t> keys = bsim::frame_store_keys(frames_dir, frames, options);
@@ -146,19 +214,29 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   bsim::plan_partial_frames(shot, options, reusing);
   long traced = 0, pixels = static_cast<long>(options.width) * options.height;
   int partial = 0;
+  std::size_t runs = 0;
   for (const bsim::FrameJob& job : reusing) {
     partial += job.reference >= 0;
     if (job.reference < 0) traced += pixels;
     for (const bsim::PixelRect& r : job.rects) traced += r.area();
+    runs += job.reference < 0 ? 1 : job.rects.size();
+    if (plan_only) {
+      std::fprintf(stderr, "frame %d", job.frame);
+      if (job.reference < 0) std::fprintf(stderr, " whole");
+      for (const bsim::PixelRect& r : job.rects) std::fprintf(stderr, " %d,%d,%d,%d", r.x0, r.y0, r.x1, r.y1);
+      std::fprintf(stderr, "\n");
+    }
   }
   std::printf(
       "%s, final %dx%d at %d fps, %d frames, %zu rendered (the rest alike); reusing: %d traced in part, "
-      "%.1f%% of the rendered frames' pixels traced\n",
+      "%.1f%% of the rendered frames' pixels traced, %zu POV-Ray runs\n",
       name.c_str(), options.width, options.height, options.fps, frames, whole.size(), partial,
-      100.0 * static_cast<double>(traced) / static_cast<double>(pixels * static_cast<long>(whole.size())));
+      100.0 * static_cast<double>(traced) / static_cast<double>(pixels * static_cast<long>(whole.size())), runs);
   std::fflush(stdout);
+  if (plan_only) return 0;
   bsim::RenderSettings settings{povray, options.width, options.height, options.quality, 2, ""};
   settings.quiet = true;
+  if (alone_every > 0) return sampled_reuse(reusing, alone_every, frames_dir, settings);
   double cpu = children_cpu();
   const RenderTiming all = render(frames_dir, whole, settings);
   const double all_cpu = children_cpu() - cpu;
@@ -178,14 +256,17 @@ int reuse_bench(const bsim::Shot& shot, const bsim::ExportOptions& options, cons
   return differ == 0 ? 0 : 1;
 }
 
-/// The command line: --every K, --fps N, --reuse, --size WxH, --scene FILE.
-bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse, std::string& scene) {
+/// The command line: --every K, --fps N, --reuse, --plan, --alone, --size WxH, --scene FILE.
+bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool& reuse, bool& plan, bool& alone,
+                                        std::string& scene) {
   bsim::ExportOptions options;
   options.quality = bsim::Quality::draft;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (flag == "--reuse") {
+    if (flag == "--reuse" || flag == "--plan" || flag == "--alone") {
       reuse = true;
+      plan = plan || flag == "--plan";
+      alone = alone || flag == "--alone";
       options.quality = bsim::Quality::final;
       if (options.width == 1280) options.width = 640, options.height = 360;
     } else if (flag == "--size" && i + 1 < argc &&
@@ -205,9 +286,9 @@ bsim::ExportOptions parse_bench_options(int argc, char** argv, int& every, bool&
 
 int main(int argc, char** argv) {
   int every = 1;
-  bool reuse = false;
+  bool reuse = false, plan = false, alone = false;
   std::string scene_file;
-  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse, scene_file);
+  const bsim::ExportOptions options = parse_bench_options(argc, argv, every, reuse, plan, alone, scene_file);
   std::string text(bsim::builtin_scene_text()), name = "default break";
   if (!scene_file.empty()) {
     std::ifstream in(scene_file);
@@ -244,7 +325,8 @@ int main(int argc, char** argv) {
   const double write_time = seconds_since(start);
 
   if (reuse) {
-    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray, name);
+    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray, name, plan,
+                                   alone ? every : 0);
     fs::remove_all(dir);
     return status;
   }

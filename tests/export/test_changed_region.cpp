@@ -4,6 +4,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "builtin_scene.h"
 #include "camera_view.h"
@@ -201,6 +203,88 @@ TEST_SUITE("changed region") {
     CHECK_FALSE(changed_region(b2, a2, room, kWidth, kHeight));
   }
 
+  TEST_CASE("a ball's clear coat shows a sphere only within its mirror patch, grazing angles included") {
+    // Points all over a ball's surface, seen from the eye: wherever the view reflected there meets the
+    // target, the point lies in the patch. Targets all round the ball (beside it, behind it as seen
+    // from the eye, where it shows at the rim at grazing angles, above it, near and far, small and
+    // large).
+    constexpr double kR = 0.028575;
+    const BoundSphere ball{Vec3(0, 0, kR), kR + kBoundSlack};
+    const Vec3 eye(0.05, -0.55, 0.09);
+    constexpr int kPoints = 40000;
+    int targets = 0, partial = 0;
+    for (double azimuth = 0; azimuth < 360; azimuth += 15) {
+      for (const double distance : {0.065, 0.1, 0.3, 1.0}) {
+        for (const double radius : {0.005, 0.03, 0.1}) {
+          if (distance <= ball.radius + radius) continue;
+          const double a = azimuth * std::numbers::pi / 180;
+          const BoundSphere target{ball.centre + distance * Vec3(std::sin(a), std::cos(a), 0.2), radius};
+          const BoundSphere patch = mirror_patch(ball, eye, target);
+          CHECK(patch.radius <= ball.radius + 1e-12);
+          partial += patch.radius < 0.5 * kR;
+          int shown = 0;
+          for (int k = 0; k < kPoints; ++k) {  // a Fibonacci lattice over the sphere
+            const double z = 1 - (2 * k + 1.0) / kPoints, ring = std::sqrt(1 - z * z);
+            const double turn = k * std::numbers::pi * (3 - std::sqrt(5.0));
+            const Vec3 n(ring * std::cos(turn), ring * std::sin(turn), z);
+            const Vec3 p = ball.centre + kR * n;
+            const Vec3 view = (p - eye).normalized();
+            if (view.dot(n) >= 0) continue;  // not seen from the eye
+            const Vec3 r = view - 2 * view.dot(n) * n;
+            const Vec3 to = target.centre - p;
+            const double along = to.dot(r);
+            if (along <= 0 || (to - along * r).norm() > target.radius) continue;  // the reflection misses it
+            ++shown;
+            CAPTURE(azimuth);
+            CAPTURE(distance);
+            CAPTURE(radius);
+            CHECK((p - patch.centre).norm() <= patch.radius);
+          }
+          targets += shown > 0;
+        }
+      }
+    }
+    CHECK(targets > 200);  // most targets show on the ball
+    CHECK(partial > 100);  // and for many of them the patch is far smaller than the ball
+  }
+
+  TEST_CASE("a ball that stays still is traced only where it can mirror the ball that moved") {
+    // Seen close, a still ball beside one rolling away from it: the still ball's side towards the
+    // rolling ball is traced, its far side is not.
+    const RegionScene room = standard_room();
+    constexpr double kR = 0.028575;
+    const CameraPose pose{Vec3(0, -0.45, 0.12), Vec3(0, 0, kR), false};
+    const BoundSphere still{Vec3(0, 0, kR), kR + kBoundSlack};
+    const BoundSphere from{Vec3(0.25, 0.1, kR), kR + kBoundSlack}, to{Vec3(0.35, 0.1, kR), kR + kBoundSlack};
+    FrameContent before;
+    before.camera = "camera";
+    before.camera_pose = pose;
+    before.parts.push_back({"rolling", {{from, from}}, {{from, from}}, true});
+    before.parts.push_back({"still", {{still, still}}, {{still, still}}, true});
+    FrameContent after = before;
+    after.parts[0] = {"rolled", {{to, to}}, {{to, to}}, true};
+    const auto rects = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(rects);
+    const auto near_side = pixel_of(pose, still.centre + 0.8 * kR * Vec3(1, -0.3, 0.2).normalized());
+    const auto far_side = pixel_of(pose, still.centre + 0.9 * kR * Vec3(-1, -0.3, 0.2).normalized());
+    REQUIRE(near_side);
+    REQUIRE(far_side);
+    CHECK(in_some(*rects, *near_side));
+    CHECK_FALSE(in_some(*rects, *far_side));
+    // With more than one reflection traced, a ball touching the still one could show the change
+    // anywhere it meets the still one's view of it: then the still ball counts whole.
+    const BoundSphere touching{Vec3(-2 * kR, 0, kR), kR + kBoundSlack};
+    before.parts.push_back({"touching", {{touching, touching}}, {{touching, touching}}, true});
+    after.parts.push_back(before.parts.back());
+    const auto with_touching = changed_region(before, after, room, kWidth, kHeight);
+    REQUIRE(with_touching);
+    CHECK(in_some(*with_touching, *far_side));
+  }
+
+  TEST_CASE("the include's trace level is the one the region reckons with") {
+    CHECK(standard_room().reflections == 5);  // settings.inc: max_trace_level 6
+  }
+
   TEST_CASE("the standard room lies outside the lamp's cone: a shadow leaving the table falls on nothing lit") {
     CHECK_FALSE(standard_room().lamp_lights_room);
   }
@@ -217,7 +301,7 @@ TEST_SUITE("changed region") {
   }
 
   TEST_CASE("regions: overlapping rectangles become ones that do not overlap, covering the same pixels") {
-    const std::vector<PixelRect> in = {{0, 0, 64, 64}, {40, 40, 200, 104}, {400, 0, 408, 8}};
+    const std::vector<PixelRect> in = {{0, 0, 64, 64}, {40, 40, 400, 104}, {600, 0, 608, 8}};
     const std::vector<PixelRect> out = merge_regions(in);
     for (std::size_t i = 0; i < out.size(); ++i)
       for (std::size_t j = i + 1; j < out.size(); ++j) CHECK_FALSE(overlap(out[i], out[j]));
@@ -225,7 +309,7 @@ TEST_SUITE("changed region") {
       for (int y = r.y0; y < r.y1; y += 4)
         for (int x = r.x0; x < r.x1; x += 4) CHECK(in_some(out, {x, y}));
     // Traced less than the box round the first two, and not joined to the far one.
-    CHECK(total_area(out) < 200 * 104);
-    CHECK(std::any_of(out.begin(), out.end(), [](const PixelRect& r) { return r == PixelRect{400, 0, 408, 8}; }));
+    CHECK(total_area(out) < 400 * 104);
+    CHECK(std::any_of(out.begin(), out.end(), [](const PixelRect& r) { return r == PixelRect{600, 0, 608, 8}; }));
   }
 }
