@@ -339,7 +339,8 @@ int reflections_traced() {
   const std::size_t at = models.find(key);
   if (at == std::string_view::npos) return kMostReflections;
   int level = 0;
-  for (std::size_t i = at + key.size(); i < models.size() && (models[i] == ' ' || std::isdigit(static_cast<unsigned char>(models[i]))); ++i)
+  for (std::size_t i = at + key.size();
+       i < models.size() && (models[i] == ' ' || std::isdigit(static_cast<unsigned char>(models[i]))); ++i)
     if (models[i] != ' ') level = 10 * level + (models[i] - '0');
   return level > 0 ? level - 1 : kMostReflections;
 }

@@ -193,9 +193,10 @@ int sampled_reuse(const std::vector<bsim::FrameJob>& reusing, int every, const s
   }
   std::printf("%d frames (every %d), %d of them traced in part, in %d POV-Ray runs in all, one POV-Ray at a time:\n",
               sampled, every, partial, runs);
-  std::printf("  POV-Ray CPU: whole %.1f s, reusing %.1f s: %.0f%%; the partial frames alone %.1f s against %.1f s: %.0f%%\n",
-              whole_cpu, reuse_cpu, 100 * reuse_cpu / whole_cpu, partial_cpu, partial_whole_cpu,
-              100 * partial_cpu / partial_whole_cpu);
+  std::printf(
+      "  POV-Ray CPU: whole %.1f s, reusing %.1f s: %.0f%%; the partial frames alone %.1f s against %.1f s: %.0f%%\n",
+      whole_cpu, reuse_cpu, 100 * reuse_cpu / whole_cpu, partial_cpu, partial_whole_cpu,
+      100 * partial_cpu / partial_whole_cpu);
   std::printf("  %ld values of the rectangles differ from the whole frames'\n", differ);
   return differ == 0 ? 0 : 1;
 }
@@ -325,8 +326,8 @@ int main(int argc, char** argv) {
   const double write_time = seconds_since(start);
 
   if (reuse) {
-    const int status = reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray, name, plan,
-                                   alone ? every : 0);
+    const int status =
+        reuse_bench(*loaded.shot, options, (dir / "frames").string(), povray, name, plan, alone ? every : 0);
     fs::remove_all(dir);
     return status;
   }

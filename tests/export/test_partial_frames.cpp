@@ -195,9 +195,8 @@ int mirror_differences_in_patch(int frame, int width, int height) {
       ++differ;
       CAPTURE(x);
       CAPTURE(y);
-      CHECK(std::any_of(patches.begin(), patches.end(), [&](const BoundSphere& patch) {
-        return (p - patch.centre).norm() <= patch.radius + pixel;
-      }));
+      CHECK(std::any_of(patches.begin(), patches.end(),
+                        [&](const BoundSphere& patch) { return (p - patch.centre).norm() <= patch.radius + pixel; }));
     }
   return differ;
 }
