@@ -350,7 +350,7 @@ int reflections_traced() {
 /// lamp shade when a changed hull reaches up to it: a ray from a ball below the shade's rim turns up
 /// off its faces, so it meets only what lies above the rim), the patch of the ball where a ray from
 /// the eye can turn towards it. A ball reaching up to the shade counts whole.
-void add_mirror_patches(const FrameContent& reference, const FrameContent& frame, const RegionScene& scene,
+void add_mirror_patches(const std::vector<BoundCapsule>& still_parts, const Vec3& eye, const RegionScene& scene,
                         std::vector<Hull>& hulls) {
   std::vector<BoundSphere> targets;
   bool reaches_shade = false;
@@ -359,15 +359,12 @@ void add_mirror_patches(const FrameContent& reference, const FrameContent& frame
     for (const BoundSphere& s : hull) reaches_shade = reaches_shade || s.centre.z() + s.radius >= scene.shade_min.z();
   }
   std::vector<BoundSphere> still;  // the balls that stay as they were
-  for (std::size_t i = 0; i < frame.parts.size(); ++i)
-    if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
-      for (const BoundCapsule& c : frame.parts[i].seen) still.push_back(enclosing({c.a, c.b}));
+  for (const BoundCapsule& c : still_parts) still.push_back(enclosing({c.a, c.b}));
   const std::size_t changed = targets.size();
   if (scene.reflections >= 2) {
     targets.insert(targets.end(), still.begin(), still.end());
     if (reaches_shade) targets.push_back(enclosing(box_hull(scene.shade_min, scene.shade_max)));
   }
-  const Vec3& eye = frame.camera_pose.location;
   for (std::size_t b = 0; b < still.size(); ++b) {
     const BoundSphere& ball = still[b];
     if (ball.centre.z() + ball.radius >= scene.shade_min.z()) {
@@ -480,13 +477,16 @@ std::optional<std::vector<PixelRect>> changed_region(const FrameContent& referen
       return std::nullopt;
   }
   if (!changed) return std::vector<PixelRect>{};
-  // The lamp shade's lacquer may show what changed and any ball (what the balls show of it included).
-  std::vector<Hull> shade_shows = hulls;
+  // The balls that stay as they were: mirrors of the change.
+  std::vector<BoundCapsule> still;
   for (std::size_t i = 0; i < frame.parts.size(); ++i)
     if (frame.parts[i].mirrors && reference.parts[i].text == frame.parts[i].text)
-      for (const BoundCapsule& c : frame.parts[i].seen) shade_shows.push_back({c.a, c.b});
+      still.insert(still.end(), frame.parts[i].seen.begin(), frame.parts[i].seen.end());
+  // The lamp shade's lacquer may show what changed and any ball (what the balls show of it included).
+  std::vector<Hull> shade_shows = hulls;
+  for (const BoundCapsule& c : still) shade_shows.push_back({c.a, c.b});
   // Each ball that stays as it was may show it in its clear coat, in a patch of its own.
-  add_mirror_patches(reference, frame, scene, hulls);
+  add_mirror_patches(still, frame.camera_pose.location, scene, hulls);
 
   const PixelProjection projection(frame.camera_pose, width, height);
   std::vector<PixelRect> rects;
