@@ -13,7 +13,7 @@ namespace bsim {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// Pixels, a tile's side.
 constexpr int kTile = 16;
@@ -23,7 +23,7 @@ constexpr double kPiece = 0.25;
 
 /// The ray's interval [t0, t1] inside a convex thing (empty when t0 > t1).
 struct Interval {
-  double t0 = -kInf, t1 = kInf;
+  double t0 = -kInfinity, t1 = kInfinity;
   bool empty() const { return t0 > t1; }
   /// Clips to the half-space n . p <= c along eye + t d, given den = n . d and num = c - n . eye.
   void clip(double den, double num) {
@@ -32,7 +32,7 @@ struct Interval {
     else if (den < 0)
       t0 = std::max(t0, num / den);
     else if (num < 0)
-      t0 = kInf;
+      t0 = kInfinity;
   }
 };
 
@@ -72,13 +72,13 @@ struct ColumnCast {
       return in.t1;
     }
     const double a = d.x() * d.x() + d.y() * d.y(), b = ox * d.x() + oy * d.y(), c = ox * ox + oy * oy - r2;
-    if (a < 1e-18) return kInf;
+    if (a < 1e-18) return kInfinity;
     const double disc2 = b * b - a * c;
-    return disc2 < 0 ? -kInf : (-b + std::sqrt(disc2)) / a;
+    return disc2 < 0 ? -kInfinity : (-b + std::sqrt(disc2)) / a;
   }
 };
 
-/// A thing the rays may meet: where a ray from the eye along unit d first meets it (kInf: nowhere, or
+/// A thing the rays may meet: where a ray from the eye along unit d first meets it (kInfinity: nowhere, or
 /// not nearer than `nearest`).
 class Caster {
  public:
@@ -107,12 +107,12 @@ class RoomCaster : public Caster {
  public:
   RoomCaster(const DepthScene& scene, const Vec3& eye) : low_(scene.room_low - eye), high_(scene.room_high - eye) {}
   double hit(const Vec3& d, double) const override {
-    double t = kInf;
+    double t = kInfinity;
     for (int i = 0; i < 3; ++i) {
       if (d[i] > 0) t = std::min(t, high_[i] / d[i]);
       if (d[i] < 0) t = std::min(t, low_[i] / d[i]);
     }
-    return t > 0 ? t : kInf;
+    return t > 0 ? t : kInfinity;
   }
 
  private:
@@ -131,9 +131,9 @@ class SolidCaster : public Caster {
     Interval in;
     for (const auto& [n, num] : planes_) {
       in.clip(n.dot(d), num);
-      if (in.empty() || in.t0 >= nearest) return kInf;  // missed, or behind a nearer thing
+      if (in.empty() || in.t0 >= nearest) return kInfinity;  // missed, or behind a nearer thing
     }
-    if (in.t0 <= 0) return kInf;  // the eye inside it, or it behind the eye
+    if (in.t0 <= 0) return kInfinity;  // the eye inside it, or it behind the eye
     double t = in.t0;
     for (bool moved = !holes_.empty(); moved && t <= in.t1;) {
       moved = false;
@@ -149,7 +149,7 @@ class SolidCaster : public Caster {
         }
       }
     }
-    return t <= in.t1 ? t : kInf;
+    return t <= in.t1 ? t : kInfinity;
   }
 
  private:
@@ -171,14 +171,14 @@ class CupCaster : public Caster {
                  c = ox * ox + oy * oy - c_.radius * c_.radius;
     const double disc = b * b - a * c;
     Interval in;  // an upright ray stays in the column, or out of it, all the way
-    if (a < 1e-18 ? c > 0 : disc < 0) return kInf;
+    if (a < 1e-18 ? c > 0 : disc < 0) return kInfinity;
     if (a >= 1e-18) {
       const double root = std::sqrt(disc);
       in = {(-b - root) / a, (-b + root) / a};
     }
     in.clip(d.z(), c_.z1 - eye_.z());
     in.clip(-d.z(), eye_.z() - c_.z0);
-    return !in.empty() && in.t1 > std::max(in.t0, 0.0) && in.t1 < nearest ? in.t1 : kInf;
+    return !in.empty() && in.t1 > std::max(in.t0, 0.0) && in.t1 < nearest ? in.t1 : kInfinity;
   }
 
  private:
@@ -193,9 +193,9 @@ class BallCaster : public Caster {
   }
   double hit(const Vec3& d, double) const override {
     const double b = oc_.dot(d), disc = b * b - (oc_.dot(oc_) - r2_);
-    if (disc < 0) return kInf;
+    if (disc < 0) return kInfinity;
     const double t = -b - std::sqrt(disc);
-    return t > 0 ? t : kInf;
+    return t > 0 ? t : kInfinity;
   }
 
  private:
@@ -218,7 +218,7 @@ class StickCaster : public Caster {
   double hit(const Vec3& d, double) const override {
     const double da = d.dot(axis_), wa = w_.dot(axis_), r0 = kCueTipRadius, length = kCueLength;
     const double slope = (kCueButtRadius - kCueTipRadius) / kCueLength;
-    double best = kInf;
+    double best = kInfinity;
     // The side: |w + t d|^2 - s^2 = (r0 + slope s)^2, s = wa + t da the place along the axis.
     const double k = 1 + slope * slope;
     const double a = 1 - k * da * da, b = w_.dot(d) - k * wa * da - r0 * slope * da;
@@ -252,7 +252,7 @@ struct Rect {
 /// The pixels a box can cover in the picture, a pixel wider all round: all of it when part of the box
 /// is not in front of the eye.
 Rect box_rect(const Vec3& low, const Vec3& high, const CameraView& view, int width, int height) {
-  double x0 = kInf, y0 = kInf, x1 = -kInf, y1 = -kInf;
+  double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 p(corner & 1 ? high.x() : low.x(), corner & 2 ? high.y() : low.y(), corner & 4 ? high.z() : low.z());
     const std::optional<PicturePoint> at = view.depth(p) > 1e-3 ? view.project(p) : std::nullopt;
@@ -276,7 +276,7 @@ std::vector<std::unique_ptr<Caster>> casters(const DepthScene& scene, const Dept
                                              const std::vector<ColumnCast>& columns) {
   std::vector<std::pair<double, std::unique_ptr<Caster>>> near;
   const auto add = [&](std::unique_ptr<Caster> caster) {
-    double distance = kInf;
+    double distance = kInfinity;
     for (const auto& [low, high] : caster->boxes) distance = std::min(distance, box_distance(eye, low, high));
     near.emplace_back(distance, std::move(caster));
   };
@@ -317,7 +317,7 @@ DepthPicture cast_depth(const DepthScene& scene, const DepthMoving& moving, cons
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const Vec3 d = view.ray(picture_point(x + 0.5, y + 0.5, width, height));
-      double nearest = kInf;
+      double nearest = kInfinity;
       for (const Caster* c : tiles[static_cast<std::size_t>(y / kTile) * tiles_x + x / kTile])
         nearest = std::min(nearest, c->hit(d, nearest));
       out.depth[static_cast<std::size_t>(y) * width + x] = static_cast<float>(nearest * d.dot(view.forward()));

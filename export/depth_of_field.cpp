@@ -13,7 +13,7 @@ namespace {
 constexpr float kLayer = 1.0f;
 
 /// One tap of the spiral: its offset in pixels and its distance from the centre.
-struct Tap {
+struct BlurTap {
   int dx = 0, dy = 0;
   float distance = 0;  ///< of the offset
   float nominal = 0;   ///< the spiral's radius at the tap, growing with its index
@@ -22,9 +22,9 @@ struct Tap {
 /// The golden-angle spiral (Vogel 1979) out to `radius`: tap k at sqrt(k kTapArea / pi), turned by
 /// k golden angles, rounded to a pixel. The turns come from repeated multiplication by the golden
 /// angle's cosine and sine, so no trigonometric function is called.
-std::vector<Tap> spiral(double radius) {
+std::vector<BlurTap> spiral(double radius) {
   constexpr double kCos = -0.73736887807831963, kSin = 0.67549029426152374;  // of pi (3 - sqrt 5)
-  std::vector<Tap> taps;
+  std::vector<BlurTap> taps;
   double c = 1, s = 0;
   for (int k = 1;; ++k) {
     const double t = c * kCos - s * kSin;
@@ -78,7 +78,7 @@ struct Sum {
 /// Pixel (x, y) gathered from the first `count` taps (their offsets in the picture's rows `offsets`,
 /// good where no tap leaves the picture: `interior`), into `out`.
 template <bool interior>
-void gather_pixel(const Source& src, const std::vector<Tap>& taps, const std::vector<std::ptrdiff_t>& offsets,
+void gather_pixel(const Source& src, const std::vector<BlurTap>& taps, const std::vector<std::ptrdiff_t>& offsets,
                   std::size_t count, int x, int y, float* out) {
   const std::size_t centre = static_cast<std::size_t>(y) * src.width + x;
   const float* c = src.rgb + 3 * centre;
@@ -89,7 +89,7 @@ void gather_pixel(const Source& src, const std::vector<Tap>& taps, const std::ve
   // its own circle (a blurred foreground) reaches over taps behind it, their light: c + shift / fill.
   float shift[3] = {0, 0, 0}, fill = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    const Tap& tap = taps[k];
+    const BlurTap& tap = taps[k];
     const std::size_t q = interior ? static_cast<std::size_t>(static_cast<std::ptrdiff_t>(centre) + offsets[k])
                                    : static_cast<std::size_t>(std::clamp(y + tap.dy, 0, src.height - 1)) * src.width +
                                          static_cast<std::size_t>(std::clamp(x + tap.dx, 0, src.width - 1));
@@ -174,9 +174,9 @@ void gather_blur(HdrImage& image, const DepthPicture& depth, const std::vector<f
   const int tile = std::max(kBlurTile, static_cast<int>(std::ceil(largest)));
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
   const std::vector<float> reach_radius = tile_reach(radii, width, height, tile, tiles_x, tiles_y);
-  const std::vector<Tap> taps = spiral(largest + 0.5);
+  const std::vector<BlurTap> taps = spiral(largest + 0.5);
   std::vector<std::ptrdiff_t> offsets;
-  for (const Tap& t : taps) offsets.push_back(static_cast<std::ptrdiff_t>(t.dy) * width + t.dx);
+  for (const BlurTap& t : taps) offsets.push_back(static_cast<std::ptrdiff_t>(t.dy) * width + t.dx);
   std::vector<float> spreads(radii.size());
   for (std::size_t i = 0; i < radii.size(); ++i) spreads[i] = spread(radii[i]);
   const std::vector<float> unblurred = image.rgb;
@@ -186,7 +186,7 @@ void gather_blur(HdrImage& image, const DepthPicture& depth, const std::vector<f
       const float r = reach_radius[static_cast<std::size_t>(ty) * tiles_x + tx];
       if (r < sharp_radius()) continue;  // nothing here reaches a tap: the pixels stay as they are
       // The taps out to the tile's reach; whether they all stay in the picture from every pixel of it.
-      const auto end = std::find_if(taps.begin(), taps.end(), [&](const Tap& t) { return t.nominal > r + 0.5f; });
+      const auto end = std::find_if(taps.begin(), taps.end(), [&](const BlurTap& t) { return t.nominal > r + 0.5f; });
       const auto count = static_cast<std::size_t>(end - taps.begin());
       const int x0 = tx * tile, y0 = ty * tile, x1 = std::min(width, x0 + tile), y1 = std::min(height, y0 + tile);
       const int margin = static_cast<int>(std::ceil(r)) + 2;

@@ -11,6 +11,7 @@
 #include "pocket_fall.h"
 #include "scene.h"
 #include "table.h"
+#include "text_words.h"
 
 namespace bsim {
 
@@ -251,23 +252,11 @@ void put(std::string& out, const Vec3& v) {
   for (int i = 0; i < 3; ++i) put(out, v[i]);
 }
 
-/// Reads the next number of a line; false at its end or at anything else.
-bool take(std::istringstream& in, double& value) {
-  std::string word;
-  if (!(in >> word)) return false;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  return ec == std::errc() && end == word.data() + word.size() && std::isfinite(value);
-}
-bool take(std::istringstream& in, Vec3& v) { return take(in, v.x()) && take(in, v.y()) && take(in, v.z()); }
 bool take_count(std::istringstream& in, std::size_t& n, std::size_t most) {
   double value = 0;
   if (!take(in, value) || value < 0 || value > static_cast<double>(most) || value != std::floor(value)) return false;
   n = static_cast<std::size_t>(value);
   return true;
-}
-bool word_is(std::istringstream& in, const char* expected) {
-  std::string word;
-  return in >> word && word == expected;
 }
 
 bool parse_column(std::istringstream& in, DepthColumn& c) {

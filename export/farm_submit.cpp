@@ -37,7 +37,7 @@ constexpr double kFinalPixelSeconds = 9.0e-6;
 
 /// What the jobs of a submission must do: the frames that are the same as an earlier one, and the
 /// frames still to render.
-struct FramePlan {
+struct SubmissionPlan {
   FrameCopies copies;
   std::vector<int> missing;
   int copies_to_make = 0;  ///< copies whose picture the tasks make (their frame is still to render)
@@ -45,8 +45,8 @@ struct FramePlan {
 
 /// Stages every picture that is there already (an earlier submission's whose inputs are unchanged,
 /// one the frame store holds, a copy of one of those) and returns what is left to the jobs.
-FramePlan plan_frames(const std::string& dir, const FarmConf& conf, const ExportOptions& options,
-                      const OutputStage& stage, const StagedFrames& staged) {
+SubmissionPlan plan_submission(const std::string& dir, const FarmConf& conf, const ExportOptions& options,
+                               const OutputStage& stage, const StagedFrames& staged) {
   const int frames = conf.frames;
   // The others may be in this machine's frame store, from a local run or an earlier farm run.
   const FrameCache store(default_frame_cache_dir(), stage.path("frames"));
@@ -61,7 +61,7 @@ FramePlan plan_frames(const std::string& dir, const FarmConf& conf, const Export
     earlier_keys = frame_store_keys(dir + "/frames", std::min(earlier.frames, frames), options);
   // A frame whose inputs are an earlier frame's is that frame's picture: rendered once, then copied
   // by the task that renders it (and by the movie job, whatever happened to the task).
-  FramePlan plan;
+  SubmissionPlan plan;
   std::map<std::uint64_t, int> first;
   for (int k = 0; k < frames; ++k) {
     const auto found = first.emplace(keys[static_cast<std::size_t>(k)], k);
@@ -198,7 +198,7 @@ bool SlurmSubmission::stage(const Shot& shot, const ExportOptions& options, cons
   conf.quality = options.quality;
   conf.duration = shot.movie.duration();  // the movie's, its replay included
   conf.frames = frames_ = frame_count(conf.duration, conf.fps);
-  const FramePlan plan = plan_frames(dir_, conf, options, stage, frames);
+  const SubmissionPlan plan = plan_submission(dir_, conf, options, stage, frames);
   missing_ = static_cast<int>(plan.missing.size());
   copies_ = plan.copies_to_make;
   chunk_ = options.chunk > 0 ? options.chunk : default_farm_chunk(conf.width, conf.height, conf.quality);

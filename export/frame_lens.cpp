@@ -12,12 +12,13 @@
 #include "pov_frame.h"
 #include "scene_file.h"
 #include "shot.h"
+#include "text_words.h"
 
 namespace bsim {
 
 namespace {
 
-constexpr const char* kHeader =
+constexpr const char* kLensHeader =
     "# billiards-export: each frame's lens and what it sees, for the develop stage's depth of field\n"
     "# (README, \"The lens\"): the fixed scene, then one line a frame\n";
 
@@ -36,18 +37,6 @@ double stretch_start(const MovieTimeline& movie, double movie_time) {
 /// POV-Ray traces.
 void put_pov(std::string& out, const Vec3& v) {
   for (int i = 0; i < 3; ++i) out += " " + pov_number(v[i]);
-}
-
-bool take(std::istringstream& in, double& value) {
-  std::string word;
-  if (!(in >> word)) return false;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  return ec == std::errc() && end == word.data() + word.size() && std::isfinite(value);
-}
-bool take(std::istringstream& in, Vec3& v) { return take(in, v.x()) && take(in, v.y()) && take(in, v.z()); }
-bool word_is(std::istringstream& in, const char* expected) {
-  std::string word;
-  return in >> word && word == expected;
 }
 
 }  // namespace
@@ -78,7 +67,7 @@ std::vector<FrameLens> frame_lenses(const Shot& shot, int fps, const std::vector
 }
 
 std::string lens_text(const DepthScene& scene, const std::vector<FrameLens>& frames) {
-  std::string text = kHeader + depth_scene_text(scene) + "\n";
+  std::string text = kLensHeader + depth_scene_text(scene) + "\n";
   for (const FrameLens& f : frames) {
     text += "frame " + std::to_string(f.frame) + " camera";
     put_pov(text, f.pose.location);

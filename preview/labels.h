@@ -26,6 +26,8 @@ std::string camera_key_label(const std::string& key, const std::vector<int>& pai
 std::string cue_phase_label(CuePhase phase);
 
 /// Colours as 0xAABBGGRR (ImGui's packing), chosen to be told apart on a dark ground.
+inline constexpr unsigned kLabelText = 0xFFECE8E6;  ///< text: IM_COL32(230, 232, 236, 255)
+inline constexpr unsigned kLabelDim = 0xFFA89C96;   ///< dimmed text: IM_COL32(150, 156, 168, 255)
 unsigned event_color(EventType type);
 unsigned pocket_color();
 unsigned camera_mode_color(CameraMode mode);

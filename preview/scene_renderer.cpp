@@ -10,16 +10,18 @@
 
 namespace bsim {
 
-namespace {
-
-constexpr int kNumberCell = 128;  // px per digit cell: sharp even in close-ups
-constexpr float kShadowAlpha = 0.6f;
-
-struct Program {
+/// A linked shader program and where its uniforms are (a type of its own, not in the unnamed namespace,
+/// as SceneRenderer::Impl holds it).
+struct SceneProgram {
   GLuint id = 0;
   GLint model = -1, normal_matrix = -1, view_projection = -1, color = -1, number = -1, striped = -1, alpha = -1,
         eye = -1, numbers = -1;
 };
+
+namespace {
+
+constexpr int kNumberCell = 128;  // px per digit cell: sharp even in close-ups
+constexpr float kShadowAlpha = 0.6f;
 
 Eigen::Matrix3f to_matrix3(const Eigen::Matrix4f& m) { return m.block<3, 3>(0, 0); }
 
@@ -44,8 +46,8 @@ FrameState scripted_frame(const Shot& shot, const MovieFrame& shown) {
 }
 
 struct SceneRenderer::Impl {
-  Program programs[kMaterialCount];
-  Program* current = nullptr;
+  SceneProgram programs[kMaterialCount];
+  SceneProgram* current = nullptr;
   GpuMesh cloth, tops, body, pockets, bed_holes, top_holes, sphere, cue, shadow;
   GLuint numbers = 0;
   // Multisampled target, resized on demand.
@@ -57,7 +59,7 @@ struct SceneRenderer::Impl {
   ~Impl() {
     release_target();
     if (numbers) glDeleteTextures(1, &numbers);
-    for (Program& p : programs)
+    for (SceneProgram& p : programs)
       if (p.id) glDeleteProgram(p.id);
   }
 
@@ -121,7 +123,7 @@ SceneRenderer::~SceneRenderer() = default;
 bool SceneRenderer::init(std::string& error) {
   Impl& r = *impl_;
   for (int m = 0; m < kMaterialCount; ++m) {
-    Program& p = r.programs[m];
+    SceneProgram& p = r.programs[m];
     p.id = build_scene_program(static_cast<Material>(m), error);
     if (!p.id) return false;
     const auto loc = [&](const char* name) { return glGetUniformLocation(p.id, name); };
@@ -193,7 +195,7 @@ void SceneRenderer::Impl::begin_frame(int width, int height, int x, int y) {
 // Gives every program the camera, and binds the number atlas they sample.
 void SceneRenderer::Impl::set_camera(const ViewCamera& camera, double aspect) {
   const Eigen::Matrix4f view_projection = projection_matrix(camera, aspect) * view_matrix(camera);
-  for (const Program& p : programs) {
+  for (const SceneProgram& p : programs) {
     glUseProgram(p.id);
     glUniformMatrix4fv(p.view_projection, 1, GL_FALSE, view_projection.data());
     glUniform3f(p.eye, float(camera.eye.x()), float(camera.eye.y()), float(camera.eye.z()));

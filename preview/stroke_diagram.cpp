@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "labels.h"
+
 namespace bsim {
 
 namespace {
@@ -14,8 +16,6 @@ constexpr ImU32 kEdge = IM_COL32(120, 124, 134, 255);  // its outline
 constexpr ImU32 kCross = IM_COL32(0, 0, 0, 40);        // the centre lines
 constexpr ImU32 kLimit = IM_COL32(200, 60, 50, 110);   // the miscue limit, faint
 constexpr ImU32 kTip = IM_COL32(30, 90, 220, 255);     // the tip's chalk blue
-constexpr ImU32 kText = IM_COL32(230, 232, 236, 255);
-constexpr ImU32 kDim = IM_COL32(150, 156, 168, 255);
 
 float ball_radius(const UiFonts& fonts) { return std::round(fonts.regular_size * 1.7f); }
 
@@ -67,8 +67,8 @@ void draw_stroke_diagram(ImDrawList& list, const Stroke& stroke, const UiFonts& 
   const float top = c.y - line;
   const float w1 = fonts.small->CalcTextSizeA(fonts.small_size, FLT_MAX, 0, speed).x;
   const float w2 = fonts.small->CalcTextSizeA(fonts.small_size, FLT_MAX, 0, elevation).x;
-  list.AddText(fonts.small, fonts.small_size, ImVec2(right - w1, top), kText, speed);
-  list.AddText(fonts.small, fonts.small_size, ImVec2(right - w2, top + line), kDim, elevation);
+  list.AddText(fonts.small, fonts.small_size, ImVec2(right - w1, top), kLabelText, speed);
+  list.AddText(fonts.small, fonts.small_size, ImVec2(right - w2, top + line), kLabelDim, elevation);
 }
 
 }  // namespace bsim

@@ -31,7 +31,7 @@ Vec3 wood_color() { return srgb(96, 42, 18); }
 Vec3 apron_color() { return srgb(70, 30, 14); }
 Vec3 liner_color() { return srgb(22, 18, 16); }
 Vec3 hole_color() { return srgb(6, 6, 6); }
-Vec3 pocket_color() { return srgb(17, 10, 6); }  // the near-black pocket leather, as POV-Ray's
+Vec3 leather_color() { return srgb(17, 10, 6); }  // the near-black pocket leather, as POV-Ray's
 Vec3 sight_color() { return srgb(236, 228, 206); }
 
 using Bounds = TableRect;
@@ -279,7 +279,7 @@ void add_pocket(MeshData& mesh, const PocketMouth& m, const Bounds& wood_inner, 
       const double high = throat && !inside_wood(mid) ? top : 0;
       if (high <= low) continue;
       mesh.add_quad(p + Vec3(0, 0, low), q + Vec3(0, 0, low), q + Vec3(0, 0, high), p + Vec3(0, 0, high),
-                    pocket_color());
+                    leather_color());
     }
   };
   walls(throat_outline(m, 0, 0), true);
@@ -289,8 +289,8 @@ void add_pocket(MeshData& mesh, const PocketMouth& m, const Bounds& wood_inner, 
     if (!inside_wood((inner[k] + inner[k + 1]) / 2))
       mesh.add_quad(inner[k], inner[k + 1], outer[k + 1], outer[k], liner_color());
   walls(circle_outline(m.centre, m.drop_radius, 0), false);
-  mesh.add_polygon(throat_outline(m, 0, kCupFloor), pocket_color());
-  mesh.add_polygon(circle_outline(m.centre, m.drop_radius, kCupFloor), pocket_color());
+  mesh.add_polygon(throat_outline(m, 0, kCupFloor), leather_color());
+  mesh.add_polygon(circle_outline(m.centre, m.drop_radius, kCupFloor), leather_color());
 }
 
 /// Angles round `centre` from `from` through `sweep` (radians) in steps of at most a kHoleSegments-th of
@@ -343,7 +343,7 @@ void add_cut_pocket(MeshData& mesh, const PocketMouth& m, const Bounds& wood_inn
     const double u = rear[k], v = rear[k + 1];
     const bool wood = !inside_wood(at((u + v) / 2, r, 0));
     const double high = wood ? top : 0;
-    mesh.add_quad(at(u, r, kCupFloor), at(v, r, kCupFloor), at(v, r, high), at(u, r, high), pocket_color());
+    mesh.add_quad(at(u, r, kCupFloor), at(v, r, kCupFloor), at(v, r, high), at(u, r, high), leather_color());
     if (wood) mesh.add_quad(at(u, r, top), at(v, r, top), at(v, r + liner, top), at(u, r + liner, top), liner_color());
   }
   // Round the front, under the shelf: the rounded lip, then the wall.
@@ -358,9 +358,9 @@ void add_cut_pocket(MeshData& mesh, const PocketMouth& m, const Bounds& wood_inn
       const double zp = -lip + lip * std::cos(p), zq = -lip + lip * std::cos(q);
       mesh.add_quad(at(u, rp, zp), at(v, rp, zp), at(v, rq, zq), at(u, rq, zq), cloth);
     }
-    mesh.add_quad(at(u, r, kCupFloor), at(v, r, kCupFloor), at(v, r, -lip), at(u, r, -lip), pocket_color());
+    mesh.add_quad(at(u, r, kCupFloor), at(v, r, kCupFloor), at(v, r, -lip), at(u, r, -lip), leather_color());
   }
-  mesh.add_polygon(circle_outline(m.centre, r, kCupFloor), pocket_color());
+  mesh.add_polygon(circle_outline(m.centre, r, kCupFloor), leather_color());
 }
 
 // A cut pocket in the table model: the bed cut at its hole (grown by the slate's rounded lip), so the

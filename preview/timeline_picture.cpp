@@ -21,8 +21,6 @@ namespace {
 
 constexpr ImU32 kBackground = IM_COL32(22, 24, 28, 255);
 constexpr ImU32 kRowBackground = IM_COL32(32, 35, 42, 255);
-constexpr ImU32 kText = IM_COL32(230, 232, 236, 255);
-constexpr ImU32 kDim = IM_COL32(150, 156, 168, 255);
 constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 20);
 constexpr ImU32 kWindowFill = IM_COL32(255, 255, 255, 16);
 constexpr ImU32 kWindowHatch = IM_COL32(255, 255, 255, 70);
@@ -230,7 +228,7 @@ struct LegendKey {
 };
 
 void row_name(ImDrawList& list, const UiFonts& fonts, float x, float top, float bottom, const char* name) {
-  list.AddText(fonts.small, fonts.small_size, ImVec2(x, (top + bottom - fonts.small_size) / 2), kDim, name);
+  list.AddText(fonts.small, fonts.small_size, ImVec2(x, (top + bottom - fonts.small_size) / 2), kLabelDim, name);
 }
 
 // A bar with its label clipped to it.
@@ -358,7 +356,7 @@ class TimelinePainter {
     // Cut short of the diagram (or the edge) with an ellipsis.
     const std::string title =
         elided(fonts_.bold, fonts_.bold_size, data_.title, title_right - rows_.pad - (layout_.x + rows_.pad));
-    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kText, title.c_str());
+    list_.AddText(fonts_.bold, fonts_.bold_size, ImVec2(layout_.x + rows_.pad, y), kLabelText, title.c_str());
     if (script_failed_) draw_failure_note(bottom + rows_.pad);
     return header_bottom();
   }
@@ -431,9 +429,9 @@ class TimelinePainter {
       if (s.turn)
         draw_turn_name(static_cast<int>(k), s, at_name, room);
       else
-        section_text(static_cast<int>(k), fonts_.bold, fonts_.bold_size, at_name, kText,
+        section_text(static_cast<int>(k), fonts_.bold, fonts_.bold_size, at_name, kLabelText,
                      elided(fonts_.bold, fonts_.bold_size, s.label, room));
-      section_text(static_cast<int>(k), fonts_.small, fonts_.small_size, at_detail, kDim,
+      section_text(static_cast<int>(k), fonts_.small, fonts_.small_size, at_detail, kLabelDim,
                    elided_lines(fonts_.small, fonts_.small_size, s.detail, room));
       if (s.turn)
         draw_turn_call(static_cast<int>(k), *s.turn, ImVec2(at_detail.x, at_detail.y + 2 * fonts_.small_size + 2),
@@ -466,7 +464,7 @@ class TimelinePainter {
     const float label = text_size(fonts_.bold, fonts_.bold_size, s.label + "  ").x;
     for (const std::string& who : {turn.name, turn.initials}) {
       if (label + text_size(fonts_.bold, fonts_.bold_size, who).x > room) continue;
-      list_.AddText(fonts_.bold, fonts_.bold_size, where, kText, s.label.c_str());
+      list_.AddText(fonts_.bold, fonts_.bold_size, where, kLabelText, s.label.c_str());
       section_text(k, fonts_.bold, fonts_.bold_size, ImVec2(where.x + label, where.y), color, who);
       return;
     }
@@ -488,11 +486,11 @@ class TimelinePainter {
                              : turn.plan.empty() ? from_hand
                                                  : from_hand + " \xC2\xB7 " + turn.plan;
     if (!plan.empty()) {
-      section_text(k, fonts_.small, fonts_.small_size, where, kText,
+      section_text(k, fonts_.small, fonts_.small_size, where, kLabelText,
                    fitted({plan, turn.plan.empty() ? plan : turn.plan}));
       where.y += fonts_.small_size + 1;
     }
-    const ImU32 color = turn.tone == GameTone::plain ? kDim : game_tone_color(turn.tone);
+    const ImU32 color = turn.tone == GameTone::plain ? kLabelDim : game_tone_color(turn.tone);
     section_text(k, fonts_.small, fonts_.small_size, where, color,
                  fitted({turn.call, turn.short_call, turn.short_call.substr(0, turn.short_call.find(';'))}));
   }
@@ -510,17 +508,17 @@ class TimelinePainter {
     const float small = fonts_.small_size;
     const double step =
         tick_step(across_.axis.pixels_per_second, text_size(fonts_.small, small, "00.0 s").x + 4 * rows_.pad);
-    list_.AddLine(ImVec2(across_.x0, rows_.axis_top + 1), ImVec2(across_.x1, rows_.axis_top + 1), kDim, 1.f);
+    list_.AddLine(ImVec2(across_.x0, rows_.axis_top + 1), ImVec2(across_.x1, rows_.axis_top + 1), kLabelDim, 1.f);
     const double last = data_.replay ? data_.duration : across_.duration;  // the replay's box has no ticks
     for (int k = 0;; ++k) {
       const double t = k * step;
       if (t > last + 1e-9) break;
       const float x = at(t);
       list_.AddLine(ImVec2(x, rows_.events_top), ImVec2(x, rows_.cue_bottom), kGrid, 1.f);
-      list_.AddLine(ImVec2(x, rows_.axis_top + 1), ImVec2(x, rows_.axis_top + 5), kDim, 1.f);
+      list_.AddLine(ImVec2(x, rows_.axis_top + 1), ImVec2(x, rows_.axis_top + 5), kLabelDim, 1.f);
       const std::string label = seconds_text(t, step);
       const float w = text_size(fonts_.small, small, label).x;
-      list_.AddText(fonts_.small, small, ImVec2(std::min(x - w / 2, right_ - w - 2), rows_.axis_top + 5), kDim,
+      list_.AddText(fonts_.small, small, ImVec2(std::min(x - w / 2, right_ - w - 2), rows_.axis_top + 5), kLabelDim,
                     label.c_str());
     }
   }
@@ -602,8 +600,8 @@ class TimelinePainter {
   void draw_no_stick_note() {
     if (!script_failed_ || !data_.cue.empty()) return;
     const float small = fonts_.small_size;
-    list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, (rows_.cue_top + rows_.cue_bottom - small) / 2), kDim,
-                  "no stick: it is placed from the camera script");
+    list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, (rows_.cue_top + rows_.cue_bottom - small) / 2),
+                  kLabelDim, "no stick: it is placed from the camera script");
   }
 
   // The stretches the movie cuts out: darkened over every row, edged, "cut" above them where it fits.
@@ -615,7 +613,7 @@ class TimelinePainter {
       list_.AddLine(ImVec2(a, top), ImVec2(a, low), kCutEdge, 1.f);
       list_.AddLine(ImVec2(b, top), ImVec2(b, low), kCutEdge, 1.f);
       if (text_size(fonts_.small, small, "cut").x + 2 < b - a)
-        list_.AddText(fonts_.small, small, ImVec2(a + 2, low - small - 2), kDim, "cut");
+        list_.AddText(fonts_.small, small, ImVec2(a + 2, low - small - 2), kLabelDim, "cut");
     }
   }
 
@@ -632,7 +630,7 @@ class TimelinePainter {
     float y = top + 3;
     for (const std::string& text : {r.label, r.detail, r.camera}) {
       if (room < small || y + small > low - 2) break;
-      list_.AddText(fonts_.small, small, ImVec2(a + 3, y), text == r.label ? kText : kDim,
+      list_.AddText(fonts_.small, small, ImVec2(a + 3, y), text == r.label ? kLabelText : kLabelDim,
                     elided(fonts_.small, small, text, room).c_str());
       y += small + 2;
     }
@@ -680,7 +678,7 @@ class TimelinePainter {
   void draw_pocket_drops() {
     const float small = fonts_.small_size;
     const float text_y = (rows_.drops_top + rows_.drops_bottom - small) / 2;
-    if (data_.drops.empty()) list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, text_y), kDim, "none");
+    if (data_.drops.empty()) list_.AddText(fonts_.small, small, ImVec2(across_.x0 + 4, text_y), kLabelDim, "none");
     LabelLevels drop_levels(1);
     for (const TimelineDrop& d : data_.drops) {
       const float x = at(d.time), mid = (rows_.drops_top + rows_.drops_bottom) / 2;
@@ -740,7 +738,7 @@ class TimelinePainter {
         list_.AddRectFilled(ImVec2(x, y + 2), ImVec2(x + small, y + small - 2), with_alpha(k.color, 200), 2.f);
       else
         list_.AddRectFilled(ImVec2(x + small / 2 - 1.5f, y + 1), ImVec2(x + small / 2 + 1.5f, y + small - 1), k.color);
-      list_.AddText(fonts_.small, small, ImVec2(x + small + 4, y), kDim, k.name);
+      list_.AddText(fonts_.small, small, ImVec2(x + small + 4, y), kLabelDim, k.name);
       note({TimelineDrawn::Kind::legend_key, k.name, x, y, x + small + 4 + w, y + small});
       x += small + 4 + w + rows_.pad * 1.5f;
     }
@@ -759,7 +757,7 @@ class TimelinePainter {
       const float cy = y + static_cast<float>(k % l.lines) * l.line;
       if (k == l.capacity - 1 && l.count > l.capacity) {
         const std::string more = "\xE2\x80\xA6 and " + std::to_string(l.count - l.capacity + 1) + " more";
-        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kDim, more.c_str());
+        list_.AddText(fonts_.small, small, ImVec2(cx, cy), kLabelDim, more.c_str());
         note({TimelineDrawn::Kind::list_more, more, cx, cy, cx + l.column, cy + small});
         break;
       }
@@ -963,7 +961,7 @@ class TimelinePainter {
       const float r = small * 0.3f, x = cx + numbers_w - r - 1, y = cy + small / 2;
       list_.AddQuadFilled(ImVec2(x, y - r), ImVec2(x + r, y), ImVec2(x, y + r), ImVec2(x - r, y), pocket_color());
     }
-    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w + 4, cy), entry.event ? kText : pocket_color(),
+    list_.AddText(fonts_.small, small, ImVec2(cx + numbers_w + 4, cy), entry.event ? kLabelText : pocket_color(),
                   entry.text.c_str());
   }
 

@@ -18,7 +18,7 @@ struct Edit {
   std::string with;
 };
 
-bool same_place(const SourceLoc& a, const SourceLoc& b) { return a.line == b.line && a.column == b.column; }
+bool same_line_column(const SourceLoc& a, const SourceLoc& b) { return a.line == b.line && a.column == b.column; }
 
 std::string numbers(const Vec3& v) {
   return format_number(v.x()) + " " + format_number(v.y()) + " " + format_number(v.z());
@@ -39,7 +39,7 @@ std::string scene_text_resolved(std::string_view text, const Scene& played) {
   // ball and spin lines then carry what the heading gave the struck ball).
   const auto aimed_cue = [&](const Token& token) -> const Cue* {
     for (const Cue& c : played.cues)
-      if (c.aims() && same_place(token.loc, c.loc)) return &c;
+      if (c.aims() && same_line_column(token.loc, c.loc)) return &c;
     return nullptr;
   };
   const Cue& first = played.cue();
@@ -53,7 +53,7 @@ std::string scene_text_resolved(std::string_view text, const Scene& played) {
       edits.push_back(span(k + 2, k + 4, format_number(cue->heading_deg)));  // pot B P
     else if (!first_resolves_balls)
       continue;  // a stroke strikes the ball at the heading: its ball and spin lines stay as written
-    else if (t == "ball" && same_place(tokens[k].loc, struck.loc) && k + 7 < tokens.size())
+    else if (t == "ball" && same_line_column(tokens[k].loc, struck.loc) && k + 7 < tokens.size())
       edits.push_back(span(k + 5, k + 7, numbers(struck.velocity)));  // after the number and the position
     else if (t == "spin" && k + 4 < tokens.size() && tokens[k + 1].text == std::to_string(first.target))
       edits.push_back(span(k + 2, k + 4, numbers(struck.spin)));

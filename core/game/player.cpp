@@ -56,8 +56,7 @@ namespace bsim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kToRad = kPi / 180;
+constexpr double kToRad = std::numbers::pi / 180;
 
 constexpr double kMaxCutDegrees = 75;     ///< cuts thinner are not tried
 constexpr int kMaxCandidates = 10;        ///< (ball, pocket) candidates aimed, best geometric chance first
@@ -452,12 +451,12 @@ std::optional<double> Planner::aim_stroke(const Candidate& cand, double want, do
   double a = start;
   out = play(cand.lie, a, stroke, cand.ball);
   if (!out.watch_hit) return std::nullopt;
-  double ea = std::remainder(out.watch_dir - want, 2 * kPi);
+  double ea = std::remainder(out.watch_dir - want, 2 * std::numbers::pi);
   if (std::abs(ea) < 2e-3) return a;
   double b = a + 0.05;
   Outcome ob = play(cand.lie, b, stroke, cand.ball);
   for (int k = 0; k < 4 && ob.watch_hit; ++k) {
-    const double eb = std::remainder(ob.watch_dir - want, 2 * kPi);
+    const double eb = std::remainder(ob.watch_dir - want, 2 * std::numbers::pi);
     if (std::abs(eb) < 2e-3) {
       out = ob;
       return b;

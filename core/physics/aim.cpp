@@ -15,10 +15,8 @@ namespace bsim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Angle `a` brought into (-pi, pi].
-double wrap(double a) { return std::remainder(a, 2 * kPi); }
+double wrap(double a) { return std::remainder(a, 2 * std::numbers::pi); }
 
 double angle_of(const Vec3& v) { return std::atan2(v.y(), v.x()); }
 
@@ -124,7 +122,8 @@ Window pocket_window(const Vec3& ball, const PocketMouth& mouth, const std::vect
   w.distance = to_centre.norm();
   w.toward = angle_of(to_centre);
   const double r = mouth.drop_radius;
-  if (w.distance <= r) return {-kPi / 2, kPi / 2, w.toward, w.distance};  // over the pocket already
+  if (w.distance <= r)
+    return {-std::numbers::pi / 2, std::numbers::pi / 2, w.toward, w.distance};  // over the pocket already
   const double half = std::asin(r / w.distance);
   int run = 0, best_run = 0, best_end = -1;
   for (int k = 0; k <= kSamples; ++k) {
@@ -176,10 +175,10 @@ class Solver {
     result_.ghost = target_at - unit_at(want_) * (2 * R_);
     if (!window_.open())
       return fail("the pocket's jaws close it to " + ball_name(written_, target_) + " from where it lies");
-    const double cut = std::abs(wrap(want_ - angle_of(result_.ghost - struck_at))) * 180 / kPi;
+    const double cut = std::abs(wrap(want_ - angle_of(result_.ghost - struck_at))) * 180 / std::numbers::pi;
     if (cut > kMaxCutDeg || (result_.ghost - struck_at).norm() < 1e-9)
       return fail("the cut is thinner than " + fmt_deg(kMaxCutDeg) + " (it would need " + fmt_deg(cut) + ")");
-    const double ghost_heading = angle_of(result_.ghost - struck_at) * 180 / kPi;
+    const double ghost_heading = angle_of(result_.ghost - struck_at) * 180 / std::numbers::pi;
     const Probe best = secant(ghost_heading);
     std::optional<Probe> seed = best.pots ? best : scan(best);
     if (seed) {
@@ -347,7 +346,7 @@ class Solver {
     }
     if (grazed_ && std::abs(best.error) > 1e-3)
       return "the cut is too thin: even grazing it, " + struck_name() + " sends it " +
-             fmt_deg(std::abs(best.error) * 180 / kPi) + " off the line to the pocket";
+             fmt_deg(std::abs(best.error) * 180 / std::numbers::pi) + " off the line to the pocket";
     const Vec3 rest = flat(best.target_rest);
     const Vec3 from = flat(written_.ball(target_).position);
     const double travelled = (rest - from).dot(unit_at(want_));

@@ -1,5 +1,6 @@
 #pragma once
 // The kinematic state of one ball at one instant.
+#include <string>
 #include <string_view>
 
 #include "vec.h"
@@ -24,5 +25,11 @@ struct BallState {
            orientation.coeffs() == o.orientation.coeffs() && motion == o.motion;
   }
 };
+
+/// Whether a ball in this state is on the bed (not falling into a pocket nor in one).
+inline bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
+
+/// "(x, y)" of a point on the bed to the millimetre, for messages.
+std::string plan_text(const Vec3& p);
 
 }  // namespace bsim

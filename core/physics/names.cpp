@@ -1,3 +1,5 @@
+#include <cstdio>
+
 #include "ball_state.h"
 #include "event.h"
 
@@ -25,6 +27,12 @@ std::string_view to_string(EventType type) {
     case EventType::end: return "end";
   }
   return "?";
+}
+
+std::string plan_text(const Vec3& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x(), p.y());
+  return text;
 }
 
 }  // namespace bsim

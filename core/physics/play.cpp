@@ -18,12 +18,6 @@ namespace {
 /// m, the step along the long axis between places tried for a ball put back.
 constexpr double kRespotStep = 0.001;
 
-std::string xy(const Vec3& p) {
-  char text[48];
-  std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x(), p.y());
-  return text;
-}
-
 /// The first ball on the bed but `self` that a ball centred at p would overlap, or -1.
 int touching(const std::vector<Ball>& balls, const Vec3& p, int self, double radius) {
   for (std::size_t j = 0; j < balls.size(); ++j) {
@@ -64,7 +58,7 @@ std::string where_balls_were(const Scene& shot, const Cue& cue, int k) {
       in += (in.empty() ? "" : ", ") + painted(ball);
     } else if (i == cue.target || i == cue.pot_ball || off_line(ball.position, struck, target) < reach ||
                off_line(ball.position, target, pocket) < reach) {
-      near += "\n    " + ball_name(shot, i) + " at " + xy(ball.position);
+      near += "\n    " + ball_name(shot, i) + " at " + plan_text(ball.position);
     } else {
       ++elsewhere;
     }
@@ -96,9 +90,9 @@ std::optional<PlayFailure> place_balls(const Scene& scene, int k, Scene& shot, s
     const int j = touching(shot.balls, at, p.ball, radius);
     if (j < 0) continue;
     return PlayFailure{k, p.loc,
-                       "shot " + std::to_string(k + 1) + " places " + ball_name(scene, p.ball) + " at " + xy(at) +
-                           " on " + ball_name(scene, j) + ", which stands at " + xy(shot.ball(j).position) +
-                           "; place it at least " + format_number(2 * radius) +
+                       "shot " + std::to_string(k + 1) + " places " + ball_name(scene, p.ball) + " at " +
+                           plan_text(at) + " on " + ball_name(scene, j) + ", which stands at " +
+                           plan_text(shot.ball(j).position) + "; place it at least " + format_number(2 * radius) +
                            " m (a ball's diameter) away, or place that ball too"};
   }
   return std::nullopt;

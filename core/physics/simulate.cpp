@@ -53,8 +53,6 @@ std::uint64_t order_of(int rank, int a, int b, int end) {
          (static_cast<std::uint64_t>(b) << 21) | static_cast<std::uint64_t>(end);
 }
 
-bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
-
 /// One jaw of a cut pocket (table.h, PocketMouth): its facing, a straight cushion from the rounding into
 /// the pocket, and its rounded jaw point, a round one; both answered by the cushion model.
 struct Jaw {

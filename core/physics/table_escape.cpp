@@ -26,12 +26,6 @@ struct Box {
   double lo[2] = {0, 0}, hi[2] = {0, 0};
 };
 
-std::string xy(const Vec3& p) {
-  char text[64];
-  std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x(), p.y());
-  return text;
-}
-
 std::string number(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", v == 0.0 ? 0.0 : v);
@@ -58,8 +52,6 @@ bool on_a_shelf(const std::vector<PocketMouth>& mouths, const Vec3& p) {
   return std::any_of(mouths.begin(), mouths.end(),
                      [&](const PocketMouth& m) { return m.in_throat(p, kEscapeTolerance); });
 }
-
-bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
 
 }  // namespace
 
@@ -101,8 +93,8 @@ std::string escape_message(const Scene& scene, const TableEscape& escape, double
   const int painted = scene.ball(escape.ball).number;
   const std::string name = (painted == 0 ? "the cue ball" : "the " + std::to_string(painted)) + " (ball index " +
                            std::to_string(escape.ball) + ")";
-  std::string message = name + " left the table at " + number(escape.time + offset) + " s, at " + xy(escape.where) +
-                        ", without dropping into a pocket";
+  std::string message = name + " left the table at " + number(escape.time + offset) + " s, at " +
+                        plan_text(escape.where) + ", without dropping into a pocket";
   if (box)
     message += ": its centre is beyond the cushions (x from " + number(box->lo[0]) + " to " + number(box->hi[0]) +
                ", y from " + number(box->lo[1]) + " to " + number(box->hi[1]) + ")";

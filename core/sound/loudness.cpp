@@ -9,7 +9,6 @@ namespace bsim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kBlock = 0.4;              ///< s, gating block (BS.1770-4, 2.1)
 constexpr double kBlockStep = 0.1;          ///< s, 75% overlap
 constexpr double kAbsoluteGate = -70.0;     ///< LUFS
@@ -61,7 +60,7 @@ std::array<std::array<double, 2 * kHalfTaps>, kOversample> interpolator() {
     for (int j = 0; j < 2 * kHalfTaps; ++j) {
       // Tap j weighs input sample n + j - kHalfTaps + 1 for the point n + p/4.
       const double x = static_cast<double>(p) / kOversample - (j - kHalfTaps + 1);
-      const double sinc = x == 0 ? 1.0 : std::sin(kPi * x) / (kPi * x);
+      const double sinc = x == 0 ? 1.0 : std::sin(std::numbers::pi * x) / (std::numbers::pi * x);
       const double r = x / kHalfTaps;
       const double window = std::abs(r) < 1 ? bessel_i0(kBeta * std::sqrt(1 - r * r)) / bessel_i0(kBeta) : 0.0;
       taps[static_cast<std::size_t>(p)][static_cast<std::size_t>(j)] = sinc * window;
@@ -80,7 +79,7 @@ std::array<Biquad, 2> k_weighting(int sample_rate) {
   std::array<Biquad, 2> stages;
   {
     const double f0 = 1681.974450955533, gain_db = 3.999843853973347, q = 0.7071752369554196;
-    const double k = std::tan(kPi * f0 / sample_rate);
+    const double k = std::tan(std::numbers::pi * f0 / sample_rate);
     const double vh = std::pow(10.0, gain_db / 20), vb = std::pow(vh, 0.4996667741545416);
     const double a0 = 1 + k / q + k * k;
     stages[0].b = {(vh + vb * k / q + k * k) / a0, 2 * (k * k - vh) / a0, (vh - vb * k / q + k * k) / a0};
@@ -88,7 +87,7 @@ std::array<Biquad, 2> k_weighting(int sample_rate) {
   }
   {
     const double f0 = 38.13547087602444, q = 0.5003270373238773;
-    const double k = std::tan(kPi * f0 / sample_rate);
+    const double k = std::tan(std::numbers::pi * f0 / sample_rate);
     const double a0 = 1 + k / q + k * k;
     stages[1].b = {1, -2, 1};
     stages[1].a = {2 * (k * k - 1) / a0, (1 - k / q + k * k) / a0};

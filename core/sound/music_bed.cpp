@@ -17,7 +17,7 @@ constexpr double kFadeOut = 2.0;         ///< s
 constexpr double kHalfPi = 1.5707963267948966;
 
 /// Linear-interpolation resampling; enough for a bed kept well under the effects.
-std::vector<float> resample(const std::vector<float>& in, int from_rate, int to_rate) {
+std::vector<float> convert_rate(const std::vector<float>& in, int from_rate, int to_rate) {
   if (from_rate == to_rate || in.empty()) return in;
   const double step = static_cast<double>(from_rate) / to_rate;
   const auto n = static_cast<std::size_t>(std::floor((static_cast<double>(in.size()) - 1) / step)) + 1;
@@ -106,8 +106,8 @@ bool load_music_bed(const std::string& path, std::size_t sample_count, AudioBuff
     error = path + ": the music file holds no sound";
     return false;
   }
-  out.left = resample(left, info.samplerate, out.sample_rate);
-  out.right = resample(right, info.samplerate, out.sample_rate);
+  out.left = convert_rate(left, info.samplerate, out.sample_rate);
+  out.right = convert_rate(right, info.samplerate, out.sample_rate);
   fit_music(out, sample_count);
   return true;
 }

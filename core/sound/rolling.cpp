@@ -14,8 +14,6 @@ namespace bsim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 constexpr double kRollLevel = 0.0015;     ///< RMS of the rumble at 1 m/s
 constexpr double kRollExponent = 1.2;     ///< the rumble's amplitude grows as speed^1.2
 constexpr double kSlipLevel = 0.0005;     ///< RMS of the slip hiss at 1 m/s of slip
@@ -29,7 +27,7 @@ constexpr double kTurnUnevenness = 0.25;  ///< depth of the once-a-turn modulati
 class Svf {
  public:
   void tune(double cutoff, double q, int sample_rate) {
-    const double g = std::tan(kPi * std::min(cutoff, 0.45 * sample_rate) / sample_rate);
+    const double g = std::tan(std::numbers::pi * std::min(cutoff, 0.45 * sample_rate) / sample_rate);
     k_ = 1 / q;
     a1_ = 1 / (1 + g * (g + k_));
     a2_ = g * a1_;
@@ -83,7 +81,9 @@ void render_rumble(const std::vector<RumblePoint>& points, double start, double 
     // noise bandwidth, a unit-peak band-pass pi/2 fc/Q. They glide with the loudness, as a step in
     // them every millisecond would be a buzz.
     auto rumble_norm = [&](double roll) { return 1 / std::sqrt(1.0 / 3 * 2.22 * rumble_cutoff(roll, muffle) / rate); };
-    auto hiss_norm = [&](double slip) { return 1 / std::sqrt(1.0 / 3 * kPi * hiss_centre(slip) / kHissQ / rate); };
+    auto hiss_norm = [&](double slip) {
+      return 1 / std::sqrt(1.0 / 3 * std::numbers::pi * hiss_centre(slip) / kHissQ / rate);
+    };
     const double roll0 = rumble_level(p.roll) * rumble_norm(p.roll), roll1 = rumble_level(q.roll) * rumble_norm(q.roll);
     const double slip0 = (1 - muffle) * slip_level(p.slip) * hiss_norm(p.slip);
     const double slip1 = (1 - muffle) * slip_level(q.slip) * hiss_norm(q.slip);
@@ -102,7 +102,7 @@ void render_rumble(const std::vector<RumblePoint>& points, double start, double 
     const double cutoff = rumble_cutoff(roll, muffle), centre = hiss_centre(slip);
     rumble.tune(cutoff, 0.7071, rate);
     hiss.tune(centre, kHissQ, rate);
-    const double turn_rate = roll / (2 * kPi * ball_radius) / rate;  // turns per sample
+    const double turn_rate = roll / (2 * std::numbers::pi * ball_radius) / rate;  // turns per sample
     for (long long i = std::max(first, 0LL); i < last && i < length; ++i) {
       const double f = static_cast<double>(i - first) / static_cast<double>(last - first);
       const double noise = random.signed_unit();
@@ -111,7 +111,7 @@ void render_rumble(const std::vector<RumblePoint>& points, double start, double 
       hiss.process(noise);
       turn += turn_rate;
       turn -= std::floor(turn);
-      const double uneven = 1 + kTurnUnevenness * std::sin(2 * kPi * turn);
+      const double uneven = 1 + kTurnUnevenness * std::sin(2 * std::numbers::pi * turn);
       const double s = (roll0 + f * (roll1 - roll0)) * uneven * 0.75 * (low + 0.9 * bed.band()) +
                        (slip0 + f * (slip1 - slip0)) * hiss.band();
       const auto at = static_cast<std::size_t>(i);

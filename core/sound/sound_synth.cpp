@@ -13,8 +13,6 @@ namespace bsim {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// A damped mode: frequency (Hz), decay time constant (s), weight relative to the loudest mode.
 struct Mode {
   double frequency;
@@ -25,7 +23,7 @@ struct Mode {
 /// A raised-sine force pulse (the smooth Hertz profile) of duration tau at time t.
 double force_pulse(double t, double tau) {
   if (t < 0 || t > tau) return 0;
-  const double s = std::sin(kPi * t / tau);
+  const double s = std::sin(std::numbers::pi * t / tau);
   return s * s;
 }
 
@@ -46,7 +44,7 @@ std::vector<double> sampled_pulse(double tau, int sample_rate) {
 /// Drives a two-pole resonator (one damped mode) with `input`, adding weight * its unit-peak response.
 void add_mode(const std::vector<double>& input, const Mode& mode, int sample_rate, std::vector<double>& out) {
   const double r = std::exp(-1.0 / (mode.decay * sample_rate));
-  const double theta = 2 * kPi * mode.frequency / sample_rate;
+  const double theta = 2 * std::numbers::pi * mode.frequency / sample_rate;
   const double a1 = 2 * r * std::cos(theta), a2 = r * r;
   std::vector<double> y(out.size(), 0.0);
   double y1 = 0, y2 = 0, peak = 0;
@@ -65,7 +63,7 @@ void add_mode(const std::vector<double>& input, const Mode& mode, int sample_rat
 /// Low-passed noise under an exponential envelope: the rough part of a soft impact.
 void add_noise(SoundRandom& random, double decay, double cutoff_hz, double weight, int sample_rate,
                std::vector<double>& out) {
-  const double alpha = 1.0 - std::exp(-2 * kPi * cutoff_hz / sample_rate);
+  const double alpha = 1.0 - std::exp(-2 * std::numbers::pi * cutoff_hz / sample_rate);
   double state = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     state += alpha * (random.signed_unit() - state);
@@ -77,8 +75,8 @@ void add_noise(SoundRandom& random, double decay, double cutoff_hz, double weigh
 /// low-passes) under an exponential envelope: a rough ring with no single pitch.
 void add_band_noise(SoundRandom& random, double decay, double low_hz, double high_hz, double weight, int sample_rate,
                     std::vector<double>& out) {
-  const double keep = std::exp(-2 * kPi * low_hz / sample_rate);
-  const double alpha = 1.0 - std::exp(-2 * kPi * high_hz / sample_rate);
+  const double keep = std::exp(-2 * std::numbers::pi * low_hz / sample_rate);
+  const double alpha = 1.0 - std::exp(-2 * std::numbers::pi * high_hz / sample_rate);
   double in1 = 0, hp1 = 0, in2 = 0, hp2 = 0;
   double lp[4] = {0, 0, 0, 0};
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -110,7 +108,7 @@ std::vector<double> ball_click(double speed, SoundRandom& random, const PhysicsP
     for (int k = 0; k < kSub; ++k) {
       const double t = (static_cast<double>(i) + (k + 0.5) / kSub) / sample_rate;
       if (t > tau) continue;
-      sum += 0.3 * force_pulse(t, tau) + 0.7 * std::sin(2 * kPi * t / tau);
+      sum += 0.3 * force_pulse(t, tau) + 0.7 * std::sin(2 * std::numbers::pi * t / tau);
     }
     out[i] = sum / kSub;
   }
@@ -302,7 +300,8 @@ std::vector<float> synth_impact(SoundKind kind, double speed, std::uint64_t seed
   // Fade the tail over its last 5 ms so cutting the buffer makes no click of its own.
   const std::size_t fade = std::min(wave.size(), static_cast<std::size_t>(0.005 * sample_rate));
   for (std::size_t i = 0; i < fade; ++i)
-    wave[wave.size() - 1 - i] *= 0.5 - 0.5 * std::cos(kPi * static_cast<double>(i) / static_cast<double>(fade));
+    wave[wave.size() - 1 - i] *=
+        0.5 - 0.5 * std::cos(std::numbers::pi * static_cast<double>(i) / static_cast<double>(fade));
   double peak = 0;
   for (double s : wave) peak = std::max(peak, std::abs(s));
   const double scale = peak > 0 ? impact_gain(kind, speed) / peak : 0.0;

@@ -297,7 +297,7 @@ TEST_SUITE("simulate") {
         double energy = 0;
         for (int i = 0; i < timeline.ball_count(); ++i) {
           const BallState s = checks::detail::state_at(timeline, i, e.time);
-          if (checks::detail::on_bed(s)) energy += kinetic_energy(s, timeline.physics());
+          if (on_bed(s)) energy += kinetic_energy(s, timeline.physics());
         }
         CHECK(energy <= previous * (1 + 1e-12) + 1e-15);
         previous = energy;

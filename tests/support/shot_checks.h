@@ -37,8 +37,6 @@ inline bool finite(const BallState& s) {
   return s.position.allFinite() && s.velocity.allFinite() && s.spin.allFinite() && s.orientation.coeffs().allFinite();
 }
 
-inline bool on_bed(const BallState& s) { return s.motion != Motion::falling && s.motion != Motion::pocketed; }
-
 /// The ball's state at t from its segments, without orientation (cheap).
 inline BallState state_at(const Timeline& timeline, int ball, double t) {
   const auto& list = timeline.segments(ball);
