@@ -1,7 +1,6 @@
 #include "frame_lens.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 

@@ -10,40 +10,39 @@
 set -euo pipefail
 trees=("$@")
 [ ${#trees[@]} -gt 0 ] || trees=("$(cd "$(dirname "$0")/../.." && pwd)")
+[ -x /usr/bin/time ] || { echo "build_time: needs GNU time (apt-get install time)" >&2; exit 1; }
 jobs=$(nproc)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/timed" <<'LAUNCH'
 #!/usr/bin/env bash
-# Runs one compilation and appends "CPU-seconds source" to $BSIM_BUILD_LOG.
+# Runs one compilation and appends "user-seconds system-seconds source" to $BSIM_BUILD_LOG.
 source_file=""
 prev=""
 for arg in "$@"; do
   [ "$prev" = "-c" ] && source_file=$arg
   prev=$arg
 done
-start=$(date +%s.%N)
 /usr/bin/time -f "%U %S" -o "$BSIM_BUILD_LOG.$$" "$@"
 status=$?
 read -r user sys < "$BSIM_BUILD_LOG.$$"
 rm -f "$BSIM_BUILD_LOG.$$"
-end=$(date +%s.%N)
-echo "$user $sys $start $end ${source_file:-link}" >> "$BSIM_BUILD_LOG"
+echo "$user $sys $source_file" >> "$BSIM_BUILD_LOG"
 exit $status
 LAUNCH
 chmod +x "$work/timed"
 printf '%-40s %-15s %8s %10s %6s\n' tree generator wall_s cpu_s units
 i=0
+resolved=()
 for spec in "${trees[@]}"; do
   i=$((i + 1))
-  tree=${spec%@*}
-  tree=$(cd "$tree" && pwd)
+  tree=$(cd "${spec%@*}" && pwd)
+  resolved+=("$tree")
   generator=${spec#*@}
   if [ "$generator" = "$spec" ]; then
     generator="Unix Makefiles"
     grep -q generator_for "$tree/.ci/make-movie" 2>/dev/null && generator=Ninja
   fi
-  trees[$((i - 1))]=$tree
   dir=$work/build$i
   export BSIM_BUILD_LOG=$work/log$i
   : > "$BSIM_BUILD_LOG"
@@ -54,14 +53,14 @@ for spec in "${trees[@]}"; do
   end=$(date +%s.%N)
   wall=$(awk -v a="$start" -v b="$end" 'BEGIN {print b - a}')
   cpu=$(awk '{s += $1 + $2} END {printf "%.1f", s}' "$BSIM_BUILD_LOG")
-  units=$(grep -vc ' link$' "$BSIM_BUILD_LOG" || true)
+  units=$(wc -l < "$BSIM_BUILD_LOG")
   printf '%-40s %-15s %8.1f %10s %6s\n' "$(basename "$tree")" "$generator" "$wall" "$cpu" "$units"
 done
 i=0
-for tree in "${trees[@]}"; do
+for tree in "${resolved[@]}"; do
   i=$((i + 1))
   echo
   echo "heaviest translation units of $(basename "$tree") (CPU s):"
-  awk '{printf "%7.1f  %s\n", $1 + $2, $5}' "$work/log$i" | sed "s|$work/build$i/||; s|$tree/||" |
+  awk '{printf "%7.1f  %s\n", $1 + $2, $3}' "$work/log$i" | sed "s|$work/build$i/||; s|$tree/||" |
     sort -rn | head -12
 done
